@@ -1,0 +1,1 @@
+"""The interpolation core: pure functions over numpy arrays (no skia, no files)."""

@@ -1,0 +1,73 @@
+"""Polygon measures, vectorised over any leading axes.
+
+A polygon is ``(..., N, 2)`` float64, closed implicitly; results drop the last two axes.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = [
+    "centroid", "edges", "edge_lengths", "perimeter", "signed_area", "area",
+    "best_fit_rotation", "rotate", "cross",
+]
+
+Array = NDArray[np.float64]
+
+
+def cross(a: Array, b: Array) -> Array:
+    """2-D cross product ``a.x*b.y - a.y*b.x`` over the last axis."""
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def centroid(points: Array) -> Array:
+    """Center of mass of unit-mass vertices (the vertex mean, SPEC §1): ``(..., 2)``."""
+    return points.mean(axis=-2)
+
+
+def edges(points: Array) -> Array:
+    """Edge vectors ``V[i+1] - V[i]``: ``(..., N, 2)``."""
+    return np.roll(points, -1, axis=-2) - points
+
+
+def edge_lengths(points: Array) -> Array:
+    """Edge lengths ``|V[i+1] - V[i]|``: ``(..., N)``."""
+    return np.linalg.norm(edges(points), axis=-1)
+
+
+def perimeter(points: Array) -> Array:
+    """Sum of edge lengths: ``(...)``."""
+    return edge_lengths(points).sum(axis=-1)
+
+
+def signed_area(points: Array) -> Array:
+    """Shoelace area, positive for counter-clockwise winding: ``(...)``."""
+    return 0.5 * cross(points, np.roll(points, -1, axis=-2)).sum(axis=-1)
+
+
+def area(points: Array) -> Array:
+    return np.abs(signed_area(points))
+
+
+def best_fit_rotation(a: Array, b: Array) -> Array:
+    """Angle φ ∈ (−π, π] that best turns ``a - centroid(a)`` onto ``b - centroid(b)`` (2-D Kabsch).
+
+    ``a`` and ``b`` are ``(..., N, 2)`` with corresponding vertices. φ is 0 when
+    the fit is undefined (all vertices at the center).
+    """
+    u = a - centroid(a)[..., None, :]
+    v = b - centroid(b)[..., None, :]
+    s = cross(u, v).sum(axis=-1)
+    c = (u * v).sum(axis=-1)
+    phi = np.arctan2(s, c)
+    # atan2 returns −π for (−0, negative): keep the half-open interval (−π, π].
+    return np.where(phi <= -np.pi, np.pi, phi)
+
+
+def rotate(vectors: Array, angle: Array | float) -> Array:
+    """Turn ``(..., 2)`` vectors counter-clockwise by ``angle`` (broadcast over leading axes)."""
+    angle = np.asarray(angle, dtype=np.float64)
+    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
+    x, y = vectors[..., 0:1], vectors[..., 1:2]
+    return np.concatenate([c * x - s * y, s * x + c * y], axis=-1)

@@ -59,7 +59,7 @@ def best_fit_rotation(a: Array, b: Array) -> Array:
     u = a - centroid(a)[..., None, :]
     v = b - centroid(b)[..., None, :]
     s = cross(u, v).sum(axis=-1)
-    c = (u * v).sum(axis=-1)
+    c = (u * v).sum(axis=(-2, -1))
     phi = np.arctan2(s, c)
     # atan2 returns −π for (−0, negative): keep the half-open interval (−π, π].
     return np.where(phi <= -np.pi, np.pi, phi)

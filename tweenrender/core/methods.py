@@ -1,0 +1,47 @@
+"""One entry point for every interpolation method."""
+
+from __future__ import annotations
+
+from typing import Callable, Sequence
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import paths
+from .joints import jointed
+from .qcurves import auto
+
+__all__ = ["interpolate"]
+
+Array = NDArray[np.float64]
+Joints = Sequence[tuple[int, int]]
+
+
+def _linear(k0: Array, k1: Array, t: ArrayLike, joints: Joints) -> Array:
+    return paths.linear(k0, k1, t)
+
+
+def _nonlinear(k0: Array, k1: Array, t: ArrayLike, joints: Joints) -> Array:
+    return paths.nonlinear(k0, k1, t)
+
+
+def _rigid(k0: Array, k1: Array, t: ArrayLike, joints: Joints) -> Array:
+    return paths.rigid(k0, k1, t)
+
+
+_METHODS: dict[str, Callable[[Array, Array, ArrayLike, Joints], Array]] = {
+    "linear": _linear,
+    "nonlinear": _nonlinear,
+    "rigid": _rigid,
+    "jointed": jointed,  # without joints: the nonlinear paths of the whole shape
+    "auto": auto,
+}
+
+
+def interpolate(k0: Array, k1: Array, t: ArrayLike, method: str, joints: Joints = ()) -> Array:
+    """Inbetweens of corresponding keys ``(N, 2)`` at ``t (T,)`` by ``method``: ``(T, N, 2)``."""
+    try:
+        fn = _METHODS[method]
+    except KeyError:
+        raise ValueError(f"unknown method {method!r}; expected one of {', '.join(_METHODS)}") from None
+    return fn(k0, k1, t, joints)

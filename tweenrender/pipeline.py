@@ -1,0 +1,151 @@
+"""scene → polygons → pixels → sink, one frame at a time.
+
+Every frame is a pure function of (scene, methods, frame index), so any range of
+frames can be rendered on its own.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable, Sequence
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .core.timeline import Track, build_track, frame_count
+from .errors import RenderError, UsageError
+from .model import Points, Scene
+
+__all__ = ["RenderJob", "Frames", "render", "total_frames", "parse_frames", "scene_view"]
+
+Box = tuple[float, float, float, float]
+Progress = Callable[[int, int], None]
+
+
+def total_frames(scene: Scene, fps: float | None = None) -> int:
+    """Frames of the whole scene at ``fps`` (default the scene's): the last key's frame included."""
+    return frame_count(scene.duration, fps or scene.fps)
+
+
+def parse_frames(text: str, total: int) -> range:
+    """``A:B`` (B exclusive, either side optional, like a Python slice) → a non-empty range."""
+    start_text, colon, stop_text = text.partition(":")
+    try:
+        start = int(start_text) if start_text.strip() else 0
+        stop = int(stop_text) if stop_text.strip() else total
+        if not colon:
+            stop = start + 1
+    except ValueError:
+        raise UsageError(f"--frames: expected A:B with whole numbers, found {text!r}") from None
+    picked = range(total)[start:stop]
+    if not picked:
+        raise UsageError(f"--frames {text}: no frames selected; the scene has frames 0 to {total - 1}")
+    return picked
+
+
+def tracks_of(scene: Scene) -> tuple[Track, ...]:
+    return tuple(build_track(shape, scene.matching) for shape in scene.shapes)
+
+
+def scene_view(scene: Scene, tracks: Sequence[Track], methods: Sequence[str | None]) -> Box:
+    """The scene's ``view``, or a box that fits every key and sampled inbetween of ``methods``."""
+    from .render.view import fit_box
+
+    if scene.view is not None:
+        return scene.view
+    outlines: list[Points] = [key.points for shape in scene.shapes for key in shape.keys]
+    samples = np.linspace(0.0, 1.0, 17)
+    for track, shape in zip(tracks, scene.shapes):
+        for segment in track.segments:
+            times = segment.start + samples * (segment.end - segment.start)
+            for method in methods:
+                outlines.extend(track.at(times, method or scene.method_of(shape)))
+    return fit_box(outlines)
+
+
+@dataclass(frozen=True)
+class RenderJob:
+    """What to draw: one panel per entry of ``methods`` (``None``: each shape's own method)."""
+
+    scene: Scene
+    methods: tuple[str | None, ...] = (None,)
+    labels: bool = False
+    size: tuple[int, int] | None = None  # per panel; default the scene's
+    fps: float | None = None
+    frames: range | None = None  # default every frame
+
+    @property
+    def panel_size(self) -> tuple[int, int]:
+        return self.size or self.scene.size
+
+    @property
+    def frame_size(self) -> tuple[int, int]:
+        width, height = self.panel_size
+        return width * len(self.methods), height
+
+    @property
+    def rate(self) -> float:
+        return self.fps or self.scene.fps
+
+    @property
+    def frame_range(self) -> range:
+        return self.frames if self.frames is not None else range(total_frames(self.scene, self.rate))
+
+
+@dataclass
+class Frames:
+    """Draws the frames of a job; built lazily so it can be shipped to a worker process."""
+
+    job: RenderJob
+    _tracks: tuple[Track, ...] | None = field(default=None, init=False, repr=False)
+    _composer: object | None = field(default=None, init=False, repr=False)
+
+    @property
+    def tracks(self) -> tuple[Track, ...]:
+        if self._tracks is None:
+            self._tracks = tracks_of(self.job.scene)
+        return self._tracks
+
+    def polygons(self, method: str | None, time: float) -> list[Points]:
+        """Every shape's polygon at ``time`` seconds under ``method`` (``None``: the shape's own)."""
+        scene = self.job.scene
+        return [track.at(np.array([time]), method or scene.method_of(shape))[0]
+                for track, shape in zip(self.tracks, scene.shapes)]
+
+    def __call__(self, index: int) -> NDArray[np.uint8]:
+        """Frame ``index`` as straight RGBA ``(height, width, 4)`` (a buffer reused by the next call)."""
+        from .render.compose import Composer
+
+        job = self.job
+        if self._composer is None:
+            labels = [m if job.labels else None for m in job.methods]
+            width, height = job.panel_size
+            view = scene_view(job.scene, self.tracks, job.methods)
+            self._composer = Composer(job.scene, labels, width, height, view)
+        time = index / job.rate
+        panels = [self.polygons(method, time) for method in job.methods]
+        return self._composer.draw(panels, time)  # type: ignore[attr-defined]
+
+
+def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = None) -> Path:
+    """Render ``job`` into ``target`` as ``fmt``; the target changes only if everything succeeded."""
+    from .encode import open_sink
+
+    frames = Frames(job)
+    indices = job.frame_range
+    width, height = job.frame_size
+    sink = open_sink(fmt, target, width, height, job.rate, len(indices))
+    try:
+        for done, index in enumerate(indices, start=1):
+            try:
+                picture = frames(index)
+            except (ValueError, FloatingPointError, RuntimeError) as error:
+                raise RenderError(f"frame {index}: {error}") from error
+            sink.write(picture)
+            if progress is not None:
+                progress(done, len(indices))
+        return sink.close()
+    except BaseException:
+        sink.abort()
+        raise

@@ -1,0 +1,1 @@
+"""Rasterising with skia: world → pixel mapping, fills, strokes, labels, panels."""

@@ -1,0 +1,50 @@
+"""World ↔ pixel mapping: y up in the world, y down on the canvas, aspect kept."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["Viewport", "fit_box"]
+
+Box = tuple[float, float, float, float]
+
+
+def fit_box(polygons: Iterable[NDArray[np.float64]], margin: float = 0.08) -> Box:
+    """The bounding box of every polygon ``(N, 2)``, grown by ``margin`` of its larger side."""
+    stacked = np.concatenate([np.asarray(p, dtype=np.float64).reshape(-1, 2) for p in polygons])
+    stacked = stacked[np.all(np.isfinite(stacked), axis=1)]
+    if len(stacked) == 0:
+        return (-1.0, -1.0, 1.0, 1.0)
+    (x0, y0), (x1, y1) = stacked.min(axis=0), stacked.max(axis=0)
+    side = max(x1 - x0, y1 - y0)
+    pad = margin * side if side > 0 else 1.0
+    return (float(x0 - pad), float(y0 - pad), float(x1 + pad), float(y1 + pad))
+
+
+@dataclass(frozen=True, slots=True)
+class Viewport:
+    """Maps the world box ``view`` into a ``width × height`` pixel canvas, centred, aspect kept."""
+
+    view: Box
+    width: int
+    height: int
+
+    @property
+    def scale(self) -> float:
+        """Pixels per world unit."""
+        x0, y0, x1, y1 = self.view
+        return min(self.width / (x1 - x0), self.height / (y1 - y0))
+
+    def to_pixels(self, points: NDArray[np.float64]) -> NDArray[np.float64]:
+        """World ``(..., 2)`` → pixel ``(..., 2)`` (origin top-left, y down)."""
+        x0, y0, x1, y1 = self.view
+        s = self.scale
+        ox = 0.5 * (self.width - s * (x1 - x0))
+        oy = 0.5 * (self.height - s * (y1 - y0))
+        px = (points[..., 0] - x0) * s + ox
+        py = self.height - ((points[..., 1] - y0) * s + oy)
+        return np.stack([px, py], axis=-1)

@@ -1,0 +1,339 @@
+"""Read a scene file (TOML or JSON) into the frozen model, refusing anything malformed.
+
+Every error names the file, the key path (and, for TOML, its line), what was
+expected and what was found.
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import math
+import tomllib
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from ..errors import SceneError
+from ..model import (ALIGNS, COSTS, EASES, METHODS, Color, Key, Matching, Scene, Shape,
+                     frozen_points)
+from .locate import line_of
+
+__all__ = ["load_scene", "parse_scene", "LIMITS"]
+
+LIMITS = {
+    "canvas": 16384,       # pixels a side
+    "fps": (1, 240),
+    "coordinate": 1e9,     # |x|, |y| in world units
+    "file_bytes": 64 << 20,
+    "vertices": 200_000,   # per key
+}
+
+_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "correspondence", "shape")
+_SHAPE = ("name", "fill", "stroke", "stroke_width", "method", "joints", "key")
+_KEY = ("time", "points", "ease")
+_SVG = ("svg", "id", "tolerance")
+_MATCHING = ("cost", "align", "ks", "cs", "es", "kb", "eb", "mb", "pb")
+
+
+def load_scene(path: str | Path) -> Scene:
+    """Read and validate the scene at ``path`` (``.json`` is JSON, anything else TOML)."""
+    path = Path(path)
+    try:
+        size = path.stat().st_size
+        if path.is_dir():
+            raise SceneError(path, None, "is a folder, expected a scene file (.toml or .json)")
+        if size > LIMITS["file_bytes"]:
+            raise SceneError(path, None, f"file is {size} bytes, larger than the {LIMITS['file_bytes']} a scene may be")
+        raw = path.read_bytes()
+    except FileNotFoundError:
+        raise SceneError(path, None, "no such file") from None
+    except PermissionError:
+        raise SceneError(path, None, "cannot be read (permission denied)") from None
+    except OSError as error:
+        raise SceneError(path, None, f"cannot be read ({error.strerror or error})") from None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as error:
+        raise SceneError(path, f"byte {error.start}", "is not UTF-8 text") from None
+    return parse_scene(text, path, "json" if path.suffix.lower() == ".json" else "toml")
+
+
+def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
+    """Validate scene ``text`` (``fmt`` ``"toml"`` or ``"json"``); ``path`` names it in errors."""
+    path = Path(path)
+    if fmt == "json":
+        try:
+            data = json.loads(text)
+        except json.JSONDecodeError as error:
+            raise SceneError(path, f"line {error.lineno}", f"not valid JSON: {error.msg}") from None
+        except RecursionError:
+            raise SceneError(path, None, "not valid JSON: nested too deeply") from None
+    else:
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as error:
+            message = str(error)
+            where = None
+            if "(at line " in message:
+                message, _, rest = message.rpartition(" (at line ")
+                where = "line " + rest.split(",")[0].rstrip(")")
+            elif "(at end of document)" in message:
+                message, where = message.replace(" (at end of document)", ""), "end of file"
+            raise SceneError(path, where, f"not valid TOML: {message}") from None
+        except RecursionError:
+            raise SceneError(path, None, "not valid TOML: nested too deeply") from None
+    return _Reader(path, text if fmt == "toml" else None).scene(data)
+
+
+def _describe(value: Any) -> str:
+    """How a found value reads in a message: its kind and a short repr."""
+    kinds = {bool: "a boolean", int: "a number", float: "a number", str: "a string",
+             list: "a list", dict: "a table", type(None): "null"}
+    kind = kinds.get(type(value), type(value).__name__)
+    shown = repr(value)
+    if len(shown) > 40:
+        shown = shown[:37] + "..."
+    return f"{kind} {shown}" if not isinstance(value, (list, dict)) else f"{kind} of {len(value)}"
+
+
+def _suggest(word: str, choices: tuple[str, ...] | list[str]) -> str:
+    close = difflib.get_close_matches(word, choices, n=1, cutoff=0.6)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+class _Reader:
+    """Validates one parsed document; knows where it came from for messages."""
+
+    def __init__(self, path: Path, toml_text: str | None) -> None:
+        self.path = path
+        self.text = toml_text
+
+    def fail(self, where: str, message: str) -> SceneError:
+        line = line_of(self.text, where) if self.text is not None and where else None
+        place = f"{where} (line {line})" if line else where
+        return SceneError(self.path, place or None, message)
+
+    # -- typed readers -------------------------------------------------------
+    def table(self, value: Any, where: str, allowed: tuple[str, ...]) -> dict[str, Any]:
+        if not isinstance(value, dict):
+            raise self.fail(where, f"expected a table, found {_describe(value)}")
+        for key in value:
+            if key not in allowed:
+                at = f"{where}.{key}" if where else str(key)
+                raise self.fail(at, f"unknown key {key!r}{_suggest(str(key), allowed)}; "
+                                    f"expected one of {', '.join(allowed)}")
+        return value
+
+    def number(self, value: Any, where: str, low: float = -math.inf, high: float = math.inf,
+               what: str = "a number") -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise self.fail(where, f"expected {what}, found {_describe(value)}")
+        number = float(value)
+        if not math.isfinite(number):
+            raise self.fail(where, f"expected a finite number, found {value!r}")
+        if not low <= number <= high:
+            raise self.fail(where, f"expected {what} from {low:g} to {high:g}, found {value!r}")
+        return number
+
+    def integer(self, value: Any, where: str, low: int, high: int, what: str) -> int:
+        if isinstance(value, bool) or not isinstance(value, int):
+            if isinstance(value, float) and value.is_integer():
+                value = int(value)
+            else:
+                raise self.fail(where, f"expected {what}, found {_describe(value)}")
+        if not low <= value <= high:
+            raise self.fail(where, f"expected {what} from {low} to {high}, found {value}")
+        return value
+
+    def string(self, value: Any, where: str) -> str:
+        if not isinstance(value, str):
+            raise self.fail(where, f"expected a string, found {_describe(value)}")
+        return value
+
+    def choice(self, value: Any, where: str, choices: tuple[str, ...], what: str) -> str:
+        word = self.string(value, where)
+        if word not in choices:
+            raise self.fail(where, f"unknown {what} {word!r}{_suggest(word, choices)}; "
+                                   f"expected one of {', '.join(choices)}")
+        return word
+
+    def listing(self, value: Any, where: str, what: str) -> list[Any]:
+        if not isinstance(value, list):
+            raise self.fail(where, f"expected {what}, found {_describe(value)}")
+        return value
+
+    def color(self, value: Any, where: str) -> Color:
+        return parse_color(self.string(value, where), lambda msg: self.fail(where, msg))
+
+    # -- the document ----------------------------------------------------------
+    def scene(self, data: Any) -> Scene:
+        top = self.table(data, "", _TOP)
+        canvas = LIMITS["canvas"]
+        size: tuple[int, int] = (1280, 720)
+        if "size" in top:
+            pair = self.listing(top["size"], "size", "[width, height] in pixels")
+            if len(pair) != 2:
+                raise self.fail("size", f"expected [width, height] in pixels, found a list of {len(pair)}")
+            size = (self.integer(pair[0], "size[0]", 1, canvas, "a width in pixels"),
+                    self.integer(pair[1], "size[1]", 1, canvas, "a height in pixels"))
+        low, high = LIMITS["fps"]
+        fps = self.number(top.get("fps", 24), "fps", low, high, "frames per second")
+        view = None
+        if "view" in top:
+            view = self.view(top["view"])
+        shapes_raw = top.get("shape")
+        if shapes_raw is None:
+            raise self.fail("shape", "expected at least one [[shape]], found none")
+        shapes_raw = self.listing(shapes_raw, "shape", "a list of [[shape]] tables")
+        if not shapes_raw:
+            raise self.fail("shape", "expected at least one [[shape]], found none")
+        shapes = tuple(self.shape(raw, f"shape[{i}]", i) for i, raw in enumerate(shapes_raw))
+        names: dict[str, int] = {}
+        for i, shape in enumerate(shapes):
+            if shape.name in names:
+                raise self.fail(f"shape[{i}].name", f"expected a unique name, found {shape.name!r} "
+                                                    f"again (also shape[{names[shape.name]}])")
+            names[shape.name] = i
+        method = self.choice(top.get("method", "nonlinear"), "method", METHODS, "method")
+        compare = ("linear", "nonlinear")
+        if "compare" in top:
+            items = self.listing(top["compare"], "compare", "a list of method names")
+            if not items:
+                raise self.fail("compare", "expected at least one method name, found an empty list")
+            compare = tuple(self.choice(m, f"compare[{i}]", METHODS, "method") for i, m in enumerate(items))
+        for i, shape in enumerate(shapes):
+            if (shape.method or method) == "jointed" and not shape.joints:
+                raise self.fail(f"shape[{i}].method", "method 'jointed' needs joints = [[a, b], ...], found none")
+        title = self.string(top["title"], "title") if "title" in top else None
+        background = self.color(top.get("background", "#ffffff"), "background")
+        return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
+                     method=method, compare=compare, matching=self.matching(top.get("correspondence", {})),
+                     path=self.path)
+
+    def view(self, value: Any) -> tuple[float, float, float, float]:
+        box = self.listing(value, "view", "[xmin, ymin, xmax, ymax]")
+        if len(box) != 4:
+            raise self.fail("view", f"expected [xmin, ymin, xmax, ymax], found a list of {len(box)}")
+        limit = LIMITS["coordinate"]
+        x0, y0, x1, y1 = (self.number(v, f"view[{i}]", -limit, limit, "a coordinate") for i, v in enumerate(box))
+        if not (x1 > x0 and y1 > y0):
+            raise self.fail("view", f"expected xmax > xmin and ymax > ymin, found {box}")
+        return (x0, y0, x1, y1)
+
+    def matching(self, value: Any) -> Matching:
+        table = self.table(value, "correspondence", _MATCHING)
+        fields: dict[str, Any] = {}
+        if "cost" in table:
+            fields["cost"] = self.choice(table["cost"], "correspondence.cost", COSTS, "cost")
+        if "align" in table:
+            fields["align"] = self.choice(table["align"], "correspondence.align", ALIGNS, "alignment")
+        for name in _MATCHING[2:]:
+            if name in table:
+                fields[name] = self.number(table[name], f"correspondence.{name}", 0.0, 1e6, "a constant")
+        return Matching(**fields)
+
+    def shape(self, value: Any, where: str, index: int) -> Shape:
+        table = self.table(value, where, _SHAPE)
+        name = self.string(table["name"], f"{where}.name") if "name" in table else f"shape{index + 1}"
+        if "key" not in table:
+            raise self.fail(where, "expected at least one [[shape.key]], found none")
+        keys_raw = self.listing(table["key"], f"{where}.key", "a list of [[shape.key]] tables")
+        if not keys_raw:
+            raise self.fail(f"{where}.key", "expected at least one [[shape.key]], found none")
+        keys = tuple(self.key(raw, f"{where}.key[{k}]") for k, raw in enumerate(keys_raw))
+        for k in range(1, len(keys)):
+            if keys[k].time <= keys[k - 1].time:
+                raise self.fail(f"{where}.key[{k}].time", f"expected a time after {keys[k - 1].time:g} "
+                                                          f"(times strictly increase), found {keys[k].time:g}")
+        method = None
+        if "method" in table:
+            method = self.choice(table["method"], f"{where}.method", METHODS, "method")
+        joints = self.joints(table.get("joints", []), f"{where}.joints", len(keys[0].points))
+        stroke = self.color(table["stroke"], f"{where}.stroke") if "stroke" in table else None
+        fill = self.color(table.get("fill", "#3b6fd8"), f"{where}.fill")
+        width = self.number(table.get("stroke_width", 2.0), f"{where}.stroke_width", 0.0, 1000.0,
+                            "a width in pixels")
+        return Shape(name=name, keys=keys, fill=fill, stroke=stroke, stroke_width=width,
+                     method=method, joints=joints)
+
+    def joints(self, value: Any, where: str, vertices: int) -> tuple[tuple[int, int], ...]:
+        from ..core.joints import JointError, validate_joints
+
+        items = self.listing(value, where, "a list of [a, b] vertex index pairs")
+        joints = []
+        for i, item in enumerate(items):
+            pair = self.listing(item, f"{where}[{i}]", "an [a, b] vertex index pair")
+            if len(pair) != 2:
+                raise self.fail(f"{where}[{i}]", f"expected an [a, b] vertex index pair, found a list of {len(pair)}")
+            joints.append(tuple(self.integer(v, f"{where}[{i}][{j}]", 0, vertices - 1,
+                                             "a vertex index of the first key") for j, v in enumerate(pair)))
+        try:
+            validate_joints(vertices, joints)
+        except JointError as error:
+            raise self.fail(f"{where}[{error.index}]", str(error)) from None
+        return tuple(joints)  # type: ignore[arg-type]
+
+    def key(self, value: Any, where: str) -> Key:
+        table = self.table(value, where, _KEY)
+        if "time" not in table:
+            raise self.fail(where, "expected a time (seconds), found none")
+        time = self.number(table["time"], f"{where}.time", 0.0, 1e7, "a time in seconds")
+        if "points" not in table:
+            raise self.fail(where, "expected points = [[x, y], ...], found none")
+        points = self.points(table["points"], f"{where}.points")
+        ease = self.choice(table.get("ease", "linear"), f"{where}.ease", EASES, "easing")
+        return Key(time=time, points=points, ease=ease)
+
+    def points(self, value: Any, where: str) -> np.ndarray:
+        if isinstance(value, dict):
+            return self.svg_points(value, where)
+        what = "a list of at least 3 [x, y] pairs"
+        items = self.listing(value, where, what + " or { svg = ..., id = ... }")
+        if len(items) > LIMITS["vertices"]:
+            raise self.fail(where, f"expected at most {LIMITS['vertices']} vertices, found {len(items)}")
+        limit = LIMITS["coordinate"]
+        coords = []
+        for i, item in enumerate(items):
+            if not isinstance(item, list) or len(item) != 2:
+                raise self.fail(f"{where}[{i}]", f"expected an [x, y] pair, found {_describe(item)}")
+            coords.append([self.number(v, f"{where}[{i}][{j}]", -limit, limit, "a coordinate")
+                           for j, v in enumerate(item)])
+        if len(coords) < 3:
+            raise self.fail(where, f"expected {what}, found {len(coords)}")
+        return frozen_points(coords)
+
+    def svg_points(self, value: dict[str, Any], where: str) -> np.ndarray:
+        from .svg import DEFAULT_TOLERANCE, SvgError, load_svg_points
+
+        table = self.table(value, where, _SVG)
+        if "svg" not in table or "id" not in table:
+            raise self.fail(where, "expected { svg = \"file.svg\", id = \"element\" }, "
+                                   f"found keys {', '.join(table) or 'none'}")
+        file = self.string(table["svg"], f"{where}.svg")
+        element = self.string(table["id"], f"{where}.id")
+        tolerance = self.number(table.get("tolerance", DEFAULT_TOLERANCE), f"{where}.tolerance",
+                                1e-9, 1e6, "a tolerance in world units")
+        try:
+            points = load_svg_points(self.path.parent / file, element, tolerance)
+        except SvgError as error:
+            raise self.fail(where, str(error)) from None
+        limit = LIMITS["coordinate"]
+        if len(points) > LIMITS["vertices"] or not np.all(np.abs(points) <= limit):
+            raise self.fail(where, f"the drawing gives {len(points)} vertices; expected at most "
+                                   f"{LIMITS['vertices']} within ±{limit:g}")
+        return frozen_points(points)
+
+
+def parse_color(text: str, fail: Callable[[str], Exception]) -> Color:
+    """``#rgb``, ``#rrggbb`` or ``#rrggbbaa`` → straight RGBA 0..255."""
+    digits = text[1:] if text.startswith("#") else None
+    if digits is None or len(digits) not in (3, 6, 8) or any(c not in "0123456789abcdefABCDEF" for c in digits):
+        raise fail(f"expected a colour #rgb, #rrggbb or #rrggbbaa, found {text!r}")
+    if len(digits) == 3:
+        digits = "".join(c * 2 for c in digits)
+    if len(digits) == 6:
+        digits += "ff"
+    r, g, b, a = (int(digits[i:i + 2], 16) for i in range(0, 8, 2))
+    return (r, g, b, a)

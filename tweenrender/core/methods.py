@@ -39,9 +39,16 @@ _METHODS: dict[str, Callable[[Array, Array, ArrayLike, Joints], Array]] = {
 
 
 def interpolate(k0: Array, k1: Array, t: ArrayLike, method: str, joints: Joints = ()) -> Array:
-    """Inbetweens of corresponding keys ``(N, 2)`` at ``t (T,)`` by ``method``: ``(T, N, 2)``."""
+    """Inbetweens of corresponding keys ``(N, 2)`` at ``t (T,)`` by ``method``: ``(T, N, 2)``.
+
+    At t = 0 and t = 1 the keys themselves are returned, bit for bit.
+    """
     try:
         fn = _METHODS[method]
     except KeyError:
         raise ValueError(f"unknown method {method!r}; expected one of {', '.join(_METHODS)}") from None
-    return fn(k0, k1, t, joints)
+    t = paths.as_times(t)
+    frames = fn(k0, k1, t, joints)
+    frames[t == 0.0] = k0
+    frames[t == 1.0] = k1
+    return frames

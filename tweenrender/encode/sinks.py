@@ -118,8 +118,9 @@ class FFmpegVideo:
             self.process.stdin.write(memoryview(np.ascontiguousarray(rgba)).cast("B"))
         except (BrokenPipeError, OSError):
             self.process.wait()
+            message = self._ffmpeg_said()
             self.abort()
-            raise EncodeError(f"{self.target}: ffmpeg stopped after {self.count} frames: {self._ffmpeg_said()}") from None
+            raise EncodeError(f"{self.target}: ffmpeg stopped after {self.count} frames: {message}") from None
         self.count += 1
 
     def close(self) -> Path:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Sequence
 
 import numpy as np
+import skia
 from numpy.typing import NDArray
 
 from ..model import Color, Points, Scene
@@ -43,7 +44,7 @@ class Composer:
         for index, polygons in enumerate(panels):
             raster.canvas.save()
             raster.canvas.translate(index * self.panel_width, 0)
-            raster.canvas.clipRect(0, 0, self.panel_width, self.height)
+            raster.canvas.clipRect(skia.Rect.MakeWH(self.panel_width, self.height))
             self.draw_shapes(polygons)
             label = self.labels[index]
             if label is not None:

@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import os
+from contextlib import contextmanager
 from functools import lru_cache
 from pathlib import Path
+from typing import Iterator
 
 import skia
 
@@ -12,10 +15,32 @@ __all__ = ["typeface", "font"]
 _FOLDER = Path(__file__).with_name("fonts")
 
 
+@contextmanager
+def _quiet_stderr() -> Iterator[None]:
+    """Silence file descriptor 2 for a moment.
+
+    skia's bundled fontconfig warns about newer system configuration files it
+    cannot parse when its font manager starts; the shipped fonts need none of it.
+    """
+    try:
+        saved = os.dup(2)
+    except OSError:
+        yield
+        return
+    try:
+        with open(os.devnull, "wb") as null:
+            os.dup2(null.fileno(), 2)
+            yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+
+
 @lru_cache(maxsize=None)
 def typeface(bold: bool = False) -> skia.Typeface:
     name = "DejaVuSans-Bold.ttf" if bold else "DejaVuSans.ttf"
-    face = skia.Typeface.MakeFromFile(str(_FOLDER / name))
+    with _quiet_stderr():
+        face = skia.Typeface.MakeFromFile(str(_FOLDER / name))
     return face if face is not None else skia.Typeface.MakeDefault()
 
 

@@ -46,7 +46,8 @@ def line_of(text: str, path: str) -> int | None:
                 best = number
             continue
         key = _KEY.match(line)
-        if key and _matches(table + [(key.group(1).strip('"'), None)], steps):
+        # an index on the last step points into the key's value: the key's line holds it
+        if key and _matches(table + [(key.group(1).strip('"'), None)], steps[:-1] + [(steps[-1][0], None)]):
             return number
     return best
 

@@ -1,0 +1,67 @@
+"""Argument converters and output helpers shared by the commands."""
+
+from __future__ import annotations
+
+import json
+import sys
+from typing import Any
+
+from ..errors import UsageError
+from ..model import METHODS
+
+__all__ = ["methods", "size", "fps", "times", "print_json"]
+
+
+def methods(text: str) -> tuple[str, ...]:
+    import difflib
+
+    names = tuple(m.strip() for m in text.split(",") if m.strip())
+    for name in names:
+        if name not in METHODS:
+            close = difflib.get_close_matches(name, METHODS, n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            raise UsageError(f"unknown method {name!r}{hint}; expected one of {', '.join(METHODS)}")
+    if not names:
+        raise UsageError("expected at least one method name")
+    return names
+
+
+def size(text: str) -> tuple[int, int]:
+    from ..scenefile import LIMITS
+
+    width, x, height = text.lower().partition("x")
+    try:
+        size = (int(width), int(height))
+    except ValueError:
+        raise UsageError(f"--size: expected WIDTHxHEIGHT in pixels, e.g. 1920x1080, found {text!r}") from None
+    if not x or not all(1 <= s <= LIMITS["canvas"] for s in size):
+        raise UsageError(f"--size: expected WIDTHxHEIGHT from 1 to {LIMITS['canvas']} each, found {text!r}")
+    return size
+
+
+def fps(text: str) -> float:
+    from ..scenefile import LIMITS
+
+    low, high = LIMITS["fps"]
+    try:
+        fps = float(text)
+    except ValueError:
+        raise UsageError(f"--fps: expected a number of frames per second, found {text!r}") from None
+    if not low <= fps <= high:
+        raise UsageError(f"--fps: expected {low} to {high}, found {text}")
+    return fps
+
+
+def times(text: str) -> list[float]:
+    try:
+        values = [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise UsageError(f"--t: expected comma-separated numbers in [0, 1], found {text!r}") from None
+    if not values or not all(0.0 <= v <= 1.0 for v in values):
+        raise UsageError(f"--t: expected comma-separated numbers in [0, 1], found {text!r}")
+    return values
+
+
+def print_json(data: Any) -> None:
+    json.dump(data, sys.stdout, indent=2)
+    sys.stdout.write("\n")

@@ -1,0 +1,561 @@
+"""Compiled kernels of the cyclic correspondence search (numba); the API is in ``correspond.py``.
+
+The grid is *unrolled*: row ``i`` in ``0..m`` is vertex ``i mod m`` of polygon a,
+column ``c`` in ``0..2n-1`` is vertex ``c mod n`` of polygon b (walked forwards).
+A closed path through the cyclic grid that starts at ``(0, s)`` is a monotone
+path from ``(0, s)`` to ``(m, s + n)``; its last node is its first.
+
+A step is named by what it advances (the order is the tie preference, see
+``solve_start``)::
+
+    STEP_B   (0, +1)  b only: a's vertex is duplicated
+    STEP_AB  (+1, +1) both
+    STEP_A   (+1, 0)  a only: b's vertex is duplicated
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+from numba import njit
+
+__all__ = [
+    "STEP_B", "STEP_AB", "STEP_A",
+    "distance_matrix", "maes_search", "every_start_search",
+    "sg_tables", "sg_search", "sg_path_energy", "stretch_work", "bend_work", "angle_change",
+]
+
+STEP_B, STEP_AB, STEP_A = 0, 1, 2
+
+
+def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
+    """Compile lazily with an on-disk cache; without the cache where no cache folder is usable.
+
+    numba caches next to this file (``__pycache__``) or, when that is read-only,
+    in the user's cache folder (``NUMBA_CACHE_DIR`` overrides both). When neither
+    can be written numba refuses ``cache=True`` at decoration time: compiling on
+    every run is slower but still correct. ``error_model="numpy"`` lets a division
+    by zero give ``inf`` (a collapse the S&G constants forbid) instead of raising.
+    """
+    try:
+        return njit(cache=True, error_model="numpy")(func)
+    except RuntimeError:
+        return njit(cache=False, error_model="numpy")(func)
+
+
+# --------------------------------------------------------------------------- distance
+
+
+@_jit
+def distance_matrix(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``W[i, j] = |a_i - b_j|``: ``(m, n)`` from ``a (m, 2)``, ``b (n, 2)``."""
+    m, n = a.shape[0], b.shape[0]
+    w = np.empty((m, n))
+    for i in range(m):
+        ax, ay = a[i, 0], a[i, 1]
+        for j in range(n):
+            dx, dy = ax - b[j, 0], ay - b[j, 1]
+            w[i, j] = math.sqrt(dx * dx + dy * dy)
+    return w
+
+
+@_jit
+def _relax_edge_cell(c: int, first: int, above_first: int, above_last: int, prev: np.ndarray,
+                     cur: np.ndarray, moves: np.ndarray, i: int, cost: float) -> None:
+    """One node near a band's edge, where some predecessors may lie outside the band."""
+    best = np.inf
+    move = STEP_A
+    if c > first:
+        best = cur[c - 1]
+        move = STEP_B
+    if above_first <= c - 1 <= above_last and prev[c - 1] < best:
+        best = prev[c - 1]
+        move = STEP_AB
+    if above_first <= c <= above_last and prev[c] < best:
+        best = prev[c]
+        move = STEP_A
+    cur[c] = best + cost
+    moves[i, c] = move
+
+
+@_jit
+def _relax_inner_run(start: int, stop: int, shift: int, row: np.ndarray, prev: np.ndarray,
+                     cur: np.ndarray, moves: np.ndarray, i: int) -> None:
+    """Nodes ``start..stop-1`` whose three predecessors all lie in the band (the hot loop).
+
+    ``shift`` is 0 or n: the column of ``row`` is ``c - shift``.
+    """
+    left = cur[start - 1]
+    for c in range(start, stop):
+        best = left
+        move = STEP_B
+        diagonal, above = prev[c - 1], prev[c]
+        if diagonal < best:
+            best = diagonal
+            move = STEP_AB
+        if above < best:
+            best = above
+            move = STEP_A
+        left = best + row[c - shift]
+        cur[c] = left
+        moves[i, c] = move
+
+
+@_jit
+def solve_start(w: np.ndarray, lo: np.ndarray, hi: np.ndarray,
+                moves: np.ndarray, prev: np.ndarray, cur: np.ndarray) -> float:
+    """Cheapest path from ``(0, s)`` to ``(m, s + n)`` inside columns ``lo[i]..hi[i]`` of each row.
+
+    The start is ``s = lo[0]``; the band must hold it and ``hi[m] = s + n``.
+    A node's cost ``w[i mod m, c mod n]`` is paid on arrival, so the start is paid
+    once, by the closing node. ``moves[i, c]`` gets the step that arrived at each
+    node. Ties prefer STEP_B, then STEP_AB, then STEP_A: tracing back then yields
+    the *leftmost* optimal path (the smallest columns in every row), which is what
+    makes the optimal paths of different starts nest (see ``maes_search``).
+    ``prev`` and ``cur`` are scratch rows of length ``2n``.
+    """
+    m, n = w.shape
+    s = lo[0]
+    cur[s] = 0.0
+    for c in range(s + 1, hi[0] + 1):
+        cur[c] = cur[c - 1] + w[0, c - n if c >= n else c]
+        moves[0, c] = STEP_B
+    for i in range(1, m + 1):
+        prev, cur = cur, prev
+        row = w[i if i < m else 0]
+        first, last = lo[i], hi[i]
+        above_first, above_last = lo[i - 1], hi[i - 1]
+        # Columns whose three predecessors are all inside the band need no checks.
+        inner_start = max(first + 1, above_first + 1)
+        inner_stop = max(inner_start, min(last, above_last) + 1)
+        for c in range(first, inner_start):
+            _relax_edge_cell(c, first, above_first, above_last, prev, cur, moves, i,
+                             row[c - n if c >= n else c])
+        # The inner run, in two parts: before and after the column wraps round b.
+        split = min(max(n, inner_start), inner_stop)
+        for part in range(2):
+            run_start, run_stop = (inner_start, split) if part == 0 else (split, inner_stop)
+            _relax_inner_run(run_start, run_stop, 0 if part == 0 else n, row, prev, cur, moves, i)
+        for c in range(inner_stop, last + 1):
+            _relax_edge_cell(c, first, above_first, above_last, prev, cur, moves, i,
+                             row[c - n if c >= n else c])
+    return cur[s + n]
+
+
+@_jit
+def trace_back(moves: np.ndarray, s: int, n: int, row_first: np.ndarray, row_last: np.ndarray,
+               nodes: np.ndarray) -> int:
+    """Follow ``moves`` back from ``(m, s + n)`` to ``(0, s)``.
+
+    Writes the path's first and last column in each row and its nodes, end first,
+    into ``nodes``; returns the number of nodes (the closing node included).
+    """
+    i, c = moves.shape[0] - 1, s + n
+    row_last[i] = c
+    count = 0
+    while True:
+        nodes[count, 0] = i
+        nodes[count, 1] = c
+        count += 1
+        row_first[i] = c
+        if i == 0 and c == s:
+            return count
+        move = moves[i, c]
+        if move != STEP_A:
+            c -= 1
+        if move != STEP_B:
+            i -= 1
+            row_last[i] = c
+
+
+@_jit
+def _copy_nodes(source: np.ndarray, target: np.ndarray, count: int) -> np.ndarray:
+    """Copy the first ``count`` nodes; returns ``target``.
+
+    An explicit loop: numba compiles a 2-D slice assignment for seconds.
+    """
+    for k in range(count):
+        target[k, 0], target[k, 1] = source[k, 0], source[k, 1]
+    return target
+
+
+@_jit
+def maes_search(w: np.ndarray) -> tuple[float, np.ndarray]:
+    """Exact minimal closed path over every start, by Maes' divide and conquer: O(mn log n).
+
+    Why it is exact: two monotone paths with steps (0,1), (1,1), (1,0) can only
+    cross at a shared node (no step crosses another between nodes), and node
+    costs add, so segments between shared nodes can be exchanged. Hence the
+    leftmost optimal path of start ``s < mid < t`` lies between the leftmost
+    optimal paths of ``s`` and ``t``, and the start ``mid`` is solved inside that
+    band only. Row bands are taken as the hull of the two bounding paths, so that
+    a float tie that let them touch or swap still leaves the band valid.
+    Returns the cost and the nodes ``(L + 1, 2)`` in unrolled coordinates, end first.
+    """
+    m, n = w.shape
+    moves = np.empty((m + 1, 2 * n), np.uint8)
+    prev = np.empty(2 * n)
+    cur = np.empty(2 * n)
+    lo = np.empty(m + 1, np.int64)
+    hi = np.empty(m + 1, np.int64)
+    nodes = np.empty((m + n + 1, 2), np.int64)
+    best_nodes = np.empty((m + n + 1, 2), np.int64)
+
+    depth_limit = 2
+    while (1 << (depth_limit - 2)) < n:
+        depth_limit += 1
+    # Bounding paths live in slots: 0 for start 0, 1 for start n, 2 + d for the
+    # middle start solved at recursion depth d (depth-first order never needs
+    # two live paths of the same depth).
+    row_first = np.empty((depth_limit + 2, m + 1), np.int64)
+    row_last = np.empty((depth_limit + 2, m + 1), np.int64)
+
+    for i in range(m + 1):
+        lo[i], hi[i] = 0, n
+    best = solve_start(w, lo, hi, moves, prev, cur)
+    best_count = trace_back(moves, lo[0], n, row_first[0], row_last[0], best_nodes)
+    # Start n is start 0 again, one turn round b later.
+    for i in range(m + 1):
+        row_first[1, i] = row_first[0, i] + n
+        row_last[1, i] = row_last[0, i] + n
+
+    # Depth-first stack of tasks: (first start, last start, their slots, depth).
+    stack = np.empty((2 * depth_limit + 4, 5), np.int64)
+    stack[0, 0], stack[0, 1], stack[0, 2], stack[0, 3], stack[0, 4] = 0, n, 0, 1, 0
+    top = 1
+    while top > 0:
+        top -= 1
+        s_lo, s_hi = stack[top, 0], stack[top, 1]
+        slot_lo, slot_hi, depth = stack[top, 2], stack[top, 3], stack[top, 4]
+        if s_hi - s_lo < 2:
+            continue
+        mid = (s_lo + s_hi) // 2
+        for i in range(m + 1):
+            lo[i] = max(mid, min(row_first[slot_lo, i], row_first[slot_hi, i]))
+            hi[i] = min(mid + n, max(row_last[slot_lo, i], row_last[slot_hi, i]))
+        value = solve_start(w, lo, hi, moves, prev, cur)
+        slot = 2 + depth
+        count = trace_back(moves, mid, n, row_first[slot], row_last[slot], nodes)
+        if value < best:
+            best, best_count = value, count
+            _copy_nodes(nodes, best_nodes, count)
+        # The lower half is pushed last so that it runs first (either order is correct).
+        stack[top, 0], stack[top, 1], stack[top, 2] = mid, s_hi, slot
+        stack[top, 3], stack[top, 4] = slot_hi, depth + 1
+        stack[top + 1, 0], stack[top + 1, 1], stack[top + 1, 2] = s_lo, mid, slot_lo
+        stack[top + 1, 3], stack[top + 1, 4] = slot, depth + 1
+        top += 2
+    return best, _copy_nodes(best_nodes, np.empty((best_count, 2), np.int64), best_count)
+
+
+@_jit
+def every_start_search(w: np.ndarray) -> tuple[float, np.ndarray]:
+    """Reference search: the full O(mn) dynamic program for each of the n starts, O(m n²).
+
+    Same return as ``maes_search``.
+    """
+    m, n = w.shape
+    moves = np.empty((m + 1, 2 * n), np.uint8)
+    prev = np.empty(2 * n)
+    cur = np.empty(2 * n)
+    lo = np.empty(m + 1, np.int64)
+    hi = np.empty(m + 1, np.int64)
+    best, best_start = np.inf, 0
+    for s in range(n):
+        for i in range(m + 1):
+            lo[i], hi[i] = s, s + n
+        value = solve_start(w, lo, hi, moves, prev, cur)
+        if value < best:
+            best, best_start = value, s
+    for i in range(m + 1):
+        lo[i], hi[i] = best_start, best_start + n
+    solve_start(w, lo, hi, moves, prev, cur)  # again, to trace the best path back
+    nodes = np.empty((m + n + 1, 2), np.int64)
+    count = trace_back(moves, best_start, n, np.empty(m + 1, np.int64),
+                       np.empty(m + 1, np.int64), nodes)
+    return best, _copy_nodes(nodes, np.empty((count, 2), np.int64), count)
+
+
+# --------------------------------------------------------------------------- Sederberg–Greenwood
+
+
+@_jit
+def stretch_work(l0: float, l1: float, ks: float, cs: float, es: float) -> float:
+    """Stretching work of an edge of length ``l0`` becoming ``l1`` (SPEC §2.1); 0 when equal."""
+    if l0 == l1:
+        return 0.0
+    shorter, longer = min(l0, l1), max(l0, l1)
+    return ks * abs(l1 - l0) ** es / ((1.0 - cs) * shorter + cs * longer)
+
+
+@_jit
+def _roots_inside(c0: float, c1: float, c2: float, out: np.ndarray, count: int) -> int:
+    """Append to ``out`` the roots in (0, 1) of ``c0(1-t)² + 2c1 t(1-t) + c2 t²``; return the new count."""
+    qa = c0 - 2.0 * c1 + c2
+    qb = 2.0 * (c1 - c0)
+    qc = c0
+    if qa == 0.0:
+        if qb != 0.0:
+            t = -qc / qb
+            if 0.0 < t < 1.0:
+                out[count] = t
+                count += 1
+        return count
+    disc = qb * qb - 4.0 * qa * qc
+    if disc < 0.0:
+        return count
+    # The cancellation-free pair of quadratic roots.
+    q = -0.5 * (qb + math.copysign(math.sqrt(disc), qb))
+    if q == 0.0:
+        return count  # a double root at t = 0
+    t = q / qa
+    if 0.0 < t < 1.0:
+        out[count] = t
+        count += 1
+    t = qc / q
+    if 0.0 < t < 1.0:
+        out[count] = t
+        count += 1
+    return count
+
+
+@_jit
+def _sorted_small(values: np.ndarray, count: int) -> np.ndarray:
+    """``values[:count]`` in increasing order (insertion sort: a handful of values)."""
+    out = np.empty(count)
+    for k in range(count):
+        v = values[k]
+        p = k
+        while p > 0 and out[p - 1] > v:
+            out[p] = out[p - 1]
+            p -= 1
+        out[p] = v
+    return out
+
+
+@_jit
+def _bezier(p0: float, p1: float, p2: float, t: float) -> float:
+    s = 1.0 - t
+    return p0 * s * s + 2.0 * p1 * s * t + p2 * t * t
+
+
+@_jit
+def angle_change(q0x: float, q0y: float, q1x: float, q1y: float,
+                 q2x: float, q2y: float) -> tuple[float, float, bool]:
+    """How the angle of a Q-curve changes over t in [0, 1]: ``(Δθ, Δθ*, through_zero)``.
+
+    θ(t) is the continuous angle of ``Q(t)``; ``Δθ = |θ(1) - θ(0)|`` (so the long
+    way round when the curve sweeps past 180°); ``Δθ*`` is how far θ(t) leaves
+    the range between θ(0) and θ(1), above plus below; ``through_zero`` is whether
+    ``Q(t)`` meets the positive x-axis for some 0 < t < 1 (the edges fold).
+    Exact: θ's extremes are at roots of ``d(t)`` (SPEC §3), and between the roots
+    of ``x(t)``, ``y(t)`` and ``d(t)`` the curve stays in one quadrant, where the
+    angle between two of its points is their plain atan2 difference.
+    """
+    splits = np.empty(8)
+    splits[0] = 0.0
+    count = 1
+    count = _roots_inside(q0x, q1x, q2x, splits, count)
+    count = _roots_inside(q0y, q1y, q2y, splits, count)
+    d0 = q0x * q1y - q0y * q1x
+    d1 = 0.5 * (q0x * q2y - q0y * q2x)
+    d2 = q1x * q2y - q1y * q2x
+    count = _roots_inside(d0, d1, d2, splits, count)
+    splits[count] = 1.0
+    count += 1
+    ts = _sorted_small(splits, count)
+
+    theta, low, high = 0.0, 0.0, 0.0
+    px, py = q0x, q0y
+    for k in range(1, count):
+        x = _bezier(q0x, q1x, q2x, ts[k])
+        y = _bezier(q0y, q1y, q2y, ts[k])
+        theta += math.atan2(px * y - py * x, px * x + py * y)
+        low, high = min(low, theta), max(high, theta)
+        px, py = x, y
+    sweep = abs(theta)
+    overshoot = (high - max(0.0, theta)) + (min(0.0, theta) - low)
+
+    through_zero = False
+    if q0y == 0.0 and q1y == 0.0 and q2y == 0.0:
+        # On the x-axis throughout: folded wherever x > 0 (x's extreme included).
+        through_zero = q0x > 0.0 or q2x > 0.0
+        curvature = q0x - 2.0 * q1x + q2x
+        if curvature != 0.0:
+            t = (q0x - q1x) / curvature
+            through_zero = through_zero or (0.0 < t < 1.0 and _bezier(q0x, q1x, q2x, t) > 0.0)
+    else:
+        roots = np.empty(2)
+        for k in range(_roots_inside(q0y, q1y, q2y, roots, 0)):
+            if _bezier(q0x, q1x, q2x, roots[k]) > 0.0:
+                through_zero = True
+    return sweep, overshoot, through_zero
+
+
+@_jit
+def bend_work(b0x: float, b0y: float, f0x: float, f0y: float,
+              b1x: float, b1y: float, f1x: float, f1y: float,
+              kb: float, eb: float, mb: float, pb: float) -> float:
+    """Bending work of a vertex with backward/forward edges ``B0, F0`` (key 0) and ``B1, F1`` (key 1).
+
+    ``kb·(Δθ + mb·Δθ*)^eb``, plus ``pb`` if the angle passes through zero, over
+    the Q-curve of SPEC §3. A zero edge (a duplicated vertex) makes that key's
+    end of the Q-curve vanish: the vertex then counts as straight there, the end
+    being replaced by ``(-r, 0)`` with ``r`` the other end's length (or ``|Q1|``
+    when both ends vanish). No bending at all when ``Q0 = Q1 = Q2 = 0``.
+    """
+    q0x = f0x * b0x + f0y * b0y
+    q0y = f0x * b0y - f0y * b0x
+    q2x = f1x * b1x + f1y * b1y
+    q2y = f1x * b1y - f1y * b1x
+    q1x = 0.5 * ((f1x * b0x + f1y * b0y) + (f0x * b1x + f0y * b1y))
+    q1y = 0.5 * ((f1x * b0y - f1y * b0x) + (f0x * b1y - f0y * b1x))
+    r0 = math.hypot(q0x, q0y)
+    r2 = math.hypot(q2x, q2y)
+    if r0 == 0.0 and r2 == 0.0:
+        r = math.hypot(q1x, q1y)
+        if r == 0.0:
+            return 0.0
+        q0x, q0y, q2x, q2y = -r, 0.0, -r, 0.0
+    elif r0 == 0.0:
+        q0x, q0y = -r2, 0.0
+    elif r2 == 0.0:
+        q2x, q2y = -r0, 0.0
+    sweep, overshoot, through_zero = angle_change(q0x, q0y, q1x, q1y, q2x, q2y)
+    work = kb * (sweep + mb * overshoot) ** eb
+    if through_zero:
+        work += pb
+    return work
+
+
+@_jit
+def _node_bend(a: np.ndarray, b: np.ndarray, i: int, j: int, into: int, out: int,
+               kb: float, eb: float, mb: float, pb: float) -> float:
+    """Bending at node ``(i, j)`` entered by step ``into`` and left by step ``out``."""
+    m, n = a.shape[0], b.shape[0]
+    b0x = b0y = f0x = f0y = b1x = b1y = f1x = f1y = 0.0
+    if into != STEP_B:
+        b0x, b0y = a[(i - 1) % m, 0] - a[i, 0], a[(i - 1) % m, 1] - a[i, 1]
+    if into != STEP_A:
+        b1x, b1y = b[(j - 1) % n, 0] - b[j, 0], b[(j - 1) % n, 1] - b[j, 1]
+    if out != STEP_B:
+        f0x, f0y = a[(i + 1) % m, 0] - a[i, 0], a[(i + 1) % m, 1] - a[i, 1]
+    if out != STEP_A:
+        f1x, f1y = b[(j + 1) % n, 0] - b[j, 0], b[(j + 1) % n, 1] - b[j, 1]
+    return bend_work(b0x, b0y, f0x, f0y, b1x, b1y, f1x, f1y, kb, eb, mb, pb)
+
+
+@_jit
+def sg_tables(a: np.ndarray, b: np.ndarray, ks: float, cs: float, es: float,
+              kb: float, eb: float, mb: float, pb: float) -> tuple[np.ndarray, np.ndarray]:
+    """Every step's stretching ``(m, n, 3)`` and every node's bending ``(m, n, 3 in, 3 out)``."""
+    m, n = a.shape[0], b.shape[0]
+    stretch = np.empty((m, n, 3))
+    bend = np.empty((m, n, 3, 3))
+    for i in range(m):
+        la = math.hypot(a[(i + 1) % m, 0] - a[i, 0], a[(i + 1) % m, 1] - a[i, 1])
+        for j in range(n):
+            lb = math.hypot(b[(j + 1) % n, 0] - b[j, 0], b[(j + 1) % n, 1] - b[j, 1])
+            stretch[i, j, STEP_B] = stretch_work(0.0, lb, ks, cs, es)
+            stretch[i, j, STEP_AB] = stretch_work(la, lb, ks, cs, es)
+            stretch[i, j, STEP_A] = stretch_work(la, 0.0, ks, cs, es)
+            for into in range(3):
+                for out in range(3):
+                    bend[i, j, into, out] = _node_bend(a, b, i, j, into, out, kb, eb, mb, pb)
+    return stretch, bend
+
+
+@_jit
+def _sg_solve(stretch: np.ndarray, bend: np.ndarray, s: int, closing: int,
+              energy: np.ndarray, choice: np.ndarray) -> float:
+    """Least energy of a closed path from ``(0, s)`` whose closing step is ``closing``.
+
+    State: (node, step that entered it); a node's bending is added when it is
+    left, so the start's bending uses ``closing`` and is paid once. Columns are
+    offsets ``k = c - s``; ``energy`` is a ``(2, n + 1, 3)`` rolling buffer and
+    ``choice[i, k, e]`` the entering step at the predecessor, for tracing back.
+    """
+    m, n = stretch.shape[0], stretch.shape[1]
+    for i in range(m + 1):
+        here, above = energy[i % 2], energy[(i + 1) % 2]
+        node_i = i if i < m else 0
+        for k in range(n + 1):
+            if i == 0 and k == 0:
+                for step in range(3):
+                    here[0, step] = 0.0 if step == closing else np.inf
+                continue
+            for step in range(3):
+                pi = i - 1 if step != STEP_B else i
+                pk = k - 1 if step != STEP_A else k
+                if pi < 0 or pk < 0:
+                    here[k, step] = np.inf
+                    continue
+                source = here if pi == i else above
+                node_pi = node_i if pi == i else pi
+                pj = (s + pk) % n
+                best, best_into = np.inf, 0
+                for into in range(3):
+                    value = source[pk, into] + bend[node_pi, pj, into, step]
+                    if value < best:
+                        best, best_into = value, into
+                here[k, step] = best + stretch[node_pi, pj, step]
+                choice[i, k, step] = best_into
+    return energy[m % 2][n, closing]
+
+
+@_jit
+def sg_search(stretch: np.ndarray, bend: np.ndarray) -> tuple[float, np.ndarray]:
+    """Least-energy closed path over every start and closing step: O(27 m n²) time, O(mn) memory.
+
+    Returns the energy and the nodes ``(L + 1, 2)`` in unrolled coordinates, end first.
+    """
+    m, n = stretch.shape[0], stretch.shape[1]
+    energy = np.empty((2, n + 1, 3))
+    choice = np.zeros((m + 1, n + 1, 3), np.int8)
+    best, best_start, best_closing = np.inf, 0, STEP_AB
+    for s in range(n):
+        for closing in range(3):
+            value = _sg_solve(stretch, bend, s, closing, energy, choice)
+            if value < best:
+                best, best_start, best_closing = value, s, closing
+    _sg_solve(stretch, bend, best_start, best_closing, energy, choice)
+
+    nodes = np.empty((m + n + 1, 2), np.int64)
+    i, k, step = m, n, best_closing
+    count = 0
+    while True:
+        nodes[count, 0] = i
+        nodes[count, 1] = best_start + k
+        count += 1
+        if i == 0 and k == 0:
+            break
+        into = choice[i, k, step]
+        if step != STEP_A:
+            k -= 1
+        if step != STEP_B:
+            i -= 1
+        step = into
+    return best, _copy_nodes(nodes, np.empty((count, 2), np.int64), count)
+
+
+@_jit
+def sg_path_energy(a: np.ndarray, b: np.ndarray, pairs: np.ndarray, ks: float, cs: float,
+                   es: float, kb: float, eb: float, mb: float, pb: float) -> float:
+    """S&G energy of a closed path given as ``pairs (L, 2)``: every step's stretching plus every node's bending."""
+    count = pairs.shape[0]
+    total = 0.0
+    for k in range(count):
+        i, j = pairs[k, 0], pairs[k, 1]
+        pi, pj = pairs[(k - 1) % count, 0], pairs[(k - 1) % count, 1]
+        ni, nj = pairs[(k + 1) % count, 0], pairs[(k + 1) % count, 1]
+        l0 = math.hypot(a[ni, 0] - a[i, 0], a[ni, 1] - a[i, 1])
+        l1 = math.hypot(b[nj, 0] - b[j, 0], b[nj, 1] - b[j, 1])
+        total += stretch_work(l0, l1, ks, cs, es)
+        total += bend_work(a[pi, 0] - a[i, 0], a[pi, 1] - a[i, 1],
+                           a[ni, 0] - a[i, 0], a[ni, 1] - a[i, 1],
+                           b[pj, 0] - b[j, 0], b[pj, 1] - b[j, 1],
+                           b[nj, 0] - b[j, 0], b[nj, 1] - b[j, 1], kb, eb, mb, pb)
+    return total

@@ -1,0 +1,197 @@
+"""Vertex correspondence of two keys with different vertex counts (SPEC §2).
+
+A correspondence is a closed monotone lattice path through the cyclic ``m × n``
+grid of vertex pairs ``(i, j)``: every step advances i, j or both by one (j by
+minus one when b is walked backwards), the path winds once round each polygon
+and closes on its start. Its ``L`` nodes become the ``L`` vertices of both
+balanced polygons, ``max(m, n) ≤ L ≤ m + n``.
+
+Path costs, over the path's nodes ``p_k = (i_k, j_k)``, ``k = 0..L-1``, taken
+cyclically (``p_L = p_0``, ``p_-1 = p_{L-1}``), after the alignment of
+``Matching.align`` (``"centroid"``: each polygon's vertex mean moved to the origin):
+
+``distance``
+    ``Σ_k |a[i_k] - b[j_k]|``: each node once (SPEC §2, the thesis's work).
+
+``sg``
+    ``Σ_k stretch_k + Σ_k bend_k`` (Sederberg–Greenwood, SPEC §2.1) where
+
+    * ``stretch_k = ks·|l1 - l0|^es / ((1 - cs)·min + cs·max)`` for the step
+      ``p_k → p_k+1``, with ``l0 = |a[i_k+1] - a[i_k]|`` and ``l1 = |b[j_k+1] - b[j_k]|``
+      (0 for the polygon the step does not advance), and 0 when ``l0 = l1``;
+    * ``bend_k = kb·(Δθ + mb·Δθ*)^eb``, plus ``pb`` if the angle passes through
+      zero, from the Q-curve (SPEC §3) of the node with ``B0 = a[i_k-1] - a[i_k]``,
+      ``F0 = a[i_k+1] - a[i_k]`` and ``B1, F1`` likewise in b (zero vectors where
+      a step does not advance that polygon). ``Δθ = |θ(1) - θ(0)|`` for the
+      continuous angle θ(t) of ``Q(t)``; ``Δθ*`` is how far θ leaves the range
+      between its end values (above plus below); "through zero" is ``Q(t)``
+      meeting the positive x-axis for some 0 < t < 1. A zero edge (a duplicated
+      vertex) makes an end of the Q-curve vanish; that key's angle is then taken
+      as straight, the end being replaced by ``(-r, 0)`` with ``r`` the length of
+      the other end (``|Q1|`` if both vanish; no bending if all of Q vanish).
+
+Searches: ``distance`` uses Maes' divide and conquer over the start, exact in
+O(mn log n); ``sg`` tries every start and every closing step with a dynamic
+program over (node, entering step), exact in O(27·m·n²) time and O(mn)
+memory — fine for the hundred-odd vertices of hand-drawn keys.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..model import ALIGNS, COSTS, Matching, Points
+from . import _cyclic_dtw as kernels
+from .geometry import centroid, signed_area
+
+__all__ = [
+    "Correspondence", "work_matrix", "correspond", "naive_correspond", "path_work",
+    "is_cyclic_monotone",
+]
+
+Pairs = NDArray[np.intp]
+"""A correspondence path: ``(L, 2)`` indices ``(i, j)`` into a and b, in path order."""
+
+_DEFAULT = Matching()
+
+
+@dataclass(frozen=True, slots=True)
+class Correspondence:
+    """The chosen closed path and its cost.
+
+    ``pairs (L, 2)`` index the original a and b in path order, ``pairs[0, 0] == 0``;
+    ``work`` is the path's cost under the matching asked for; ``reversed`` is True
+    when b winds opposite to a and was walked backwards (j steps by -1).
+    """
+
+    pairs: Pairs
+    work: float
+    reversed: bool
+
+    @property
+    def balanced(self) -> int:
+        """Vertex count ``L`` of both balanced polygons."""
+        return int(self.pairs.shape[0])
+
+    def apply(self, a: Points, b: Points) -> tuple[Points, Points]:
+        """Both polygons with vertices duplicated along the path: two ``(L, 2)`` arrays."""
+        return np.asarray(a)[self.pairs[:, 0]], np.asarray(b)[self.pairs[:, 1]]
+
+
+def work_matrix(a: Points, b: Points) -> NDArray[np.float64]:
+    """``W[i, j] = |a_i - b_j|`` for ``a (m, 2)``, ``b (n, 2)``: ``(m, n)``."""
+    return kernels.distance_matrix(_as_polygon(a, "a"), _as_polygon(b, "b"))
+
+
+def correspond(a: Points, b: Points, matching: Matching = _DEFAULT) -> Correspondence:
+    """The least-cost correspondence of ``a (m, 2)`` and ``b (n, 2)`` over every start.
+
+    Exact for both costs (see the module's docstring for their definitions).
+    """
+    return _correspond(a, b, matching, exhaustive=False)
+
+
+def naive_correspond(a: Points, b: Points, matching: Matching = _DEFAULT) -> Correspondence:
+    """Reference for ``correspond``: the full dynamic program for every start, O(m n²).
+
+    For ``sg`` this is the very search ``correspond`` runs.
+    """
+    return _correspond(a, b, matching, exhaustive=True)
+
+
+def path_work(a: Points, b: Points, pairs: ArrayLike, matching: Matching = _DEFAULT) -> float:
+    """Cost of any closed path ``pairs (L, 2)`` under ``matching``: what ``correspond`` minimises."""
+    _check_matching(matching)
+    a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
+    return _aligned_work(a, b, np.asarray(pairs, dtype=np.intp).reshape(-1, 2), matching)
+
+
+def is_cyclic_monotone(pairs: ArrayLike, m: int, n: int, reversed: bool = False) -> bool:
+    """Whether ``pairs (L, 2)`` is a closed monotone path winding once round the ``m × n`` grid.
+
+    Each step (the last one closes onto the first pair) advances i by 0 or 1 mod m
+    and j by 0 or 1 mod n (by 0 or -1 when ``reversed``), never by nothing; the
+    advances add up to exactly m and n, so every vertex of both polygons appears.
+    """
+    path = np.asarray(pairs)
+    if m < 2 or n < 2 or path.ndim != 2 or path.shape[1] != 2 or len(path) == 0:
+        return False
+    if not np.issubdtype(path.dtype, np.integer):
+        return False
+    i, j = path[:, 0], path[:, 1]
+    if i.min() < 0 or i.max() >= m or j.min() < 0 or j.max() >= n:
+        return False
+    di = (np.roll(i, -1) - i) % m
+    dj = ((j - np.roll(j, -1)) if reversed else (np.roll(j, -1) - j)) % n
+    steps_ok = bool(np.all(di <= 1) and np.all(dj <= 1) and np.all(di + dj >= 1))
+    return steps_ok and int(di.sum()) == m and int(dj.sum()) == n
+
+
+def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> Correspondence:
+    _check_matching(matching)
+    a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
+    backwards = _winds_opposite(a, b)
+    # b as walked: position k holds vertex walk[k], so a forward step in k is a
+    # step of -1 in b when b winds the other way; walk[0] = 0 either way.
+    walk = (-np.arange(len(b))) % len(b) if backwards else np.arange(len(b))
+    walked_b = np.ascontiguousarray(b[walk])
+    if matching.cost == "distance":
+        search = kernels.every_start_search if exhaustive else kernels.maes_search
+        _, nodes = search(kernels.distance_matrix(a, walked_b))
+    else:
+        m = matching
+        tables = kernels.sg_tables(a, walked_b, m.ks, m.cs, m.es, m.kb, m.eb, m.mb, m.pb)
+        _, nodes = kernels.sg_search(*tables)
+    pairs = _pairs_from_nodes(nodes, len(a), walk)
+    pairs.flags.writeable = False
+    return Correspondence(pairs, _aligned_work(a, b, pairs, matching), backwards)
+
+
+def _pairs_from_nodes(nodes: NDArray[np.int64], m: int, walk: NDArray[np.intp]) -> Pairs:
+    """Unrolled nodes ``(L + 1, 2)``, end first, as pairs of original indices ``(L, 2)``, start first."""
+    path = nodes[::-1][:-1]  # start first; the closing node is the start again
+    n = len(walk)
+    return np.column_stack([path[:, 0] % m, walk[path[:, 1] % n]]).astype(np.intp)
+
+
+def _aligned_work(a: Points, b: Points, pairs: Pairs, matching: Matching) -> float:
+    """Path cost of already aligned polygons (module docstring)."""
+    if matching.cost == "distance":
+        step = a[pairs[:, 0]] - b[pairs[:, 1]]
+        return float(np.hypot(step[:, 0], step[:, 1]).sum())
+    m = matching
+    return float(kernels.sg_path_energy(a, b, np.ascontiguousarray(pairs, dtype=np.int64),
+                                        m.ks, m.cs, m.es, m.kb, m.eb, m.mb, m.pb))
+
+
+def _aligned(a: Points, b: Points, align: str) -> tuple[Points, Points]:
+    if align == "centroid":
+        return a - centroid(a), b - centroid(b)
+    return a, b
+
+
+def _winds_opposite(a: Points, b: Points) -> bool:
+    """True when the signed areas have opposite signs (a zero area counts as either winding)."""
+    return bool(float(signed_area(a)) * float(signed_area(b)) < 0.0)
+
+
+def _as_polygon(points: Points, name: str) -> NDArray[np.float64]:
+    """``points`` as a C-contiguous float64 ``(N, 2)`` array with N ≥ 2 finite vertices."""
+    array = np.ascontiguousarray(points, dtype=np.float64)
+    if array.ndim != 2 or array.shape[1] != 2:
+        raise ValueError(f"polygon {name} should have shape (N, 2), not {array.shape}")
+    if array.shape[0] < 2:
+        raise ValueError(f"polygon {name} should have at least 2 vertices, not {array.shape[0]}")
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"polygon {name} has non-finite coordinates")
+    return array
+
+
+def _check_matching(matching: Matching) -> None:
+    if matching.cost not in COSTS:
+        raise ValueError(f"matching cost should be one of {', '.join(COSTS)}, not {matching.cost!r}")
+    if matching.align not in ALIGNS:
+        raise ValueError(f"matching align should be one of {', '.join(ALIGNS)}, not {matching.align!r}")

@@ -27,25 +27,57 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the exit code (0 done, 1 failure, 2 bad input, 130 interrupted)."""
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
     except UsageError as error:  # raised by a type= converter
         print(f"tweenrender: error: {error}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        return _interrupted()
     try:
         return args.run(args)
-    except TweenrenderError as error:
-        if args.verbose:
-            raise
-        print(f"tweenrender: error: {error}", file=sys.stderr)
-        return error.exit_code
     except KeyboardInterrupt:
-        print("tweenrender: interrupted; no output was changed", file=sys.stderr)
-        return 130
-    except Exception as error:  # noqa: BLE001 - the last line of defence against tracebacks
-        if args.verbose:
-            raise
-        print(f"tweenrender: error: unexpected {type(error).__name__}: {error} (run with -v for details)",
-              file=sys.stderr)
+        return _interrupted()
+    except BrokenPipeError:
+        # the reader of stdout went away (``| head``): nothing left to say, and nowhere to say it
+        _silence_stdout()
         return 1
+    except TweenrenderError as error:
+        _explain(args.verbose)
+        print(f"tweenrender: error: {_one_line(str(error))}", file=sys.stderr)
+        return error.exit_code
+    except Exception as error:  # noqa: BLE001 - the last line of defence against tracebacks
+        _explain(args.verbose)
+        print(f"tweenrender: error: unexpected {type(error).__name__}: {_one_line(str(error))} "
+              "(run with -v for details)", file=sys.stderr)
+        return 1
+
+
+def _interrupted() -> int:
+    # outputs go through temporaries, and the sinks remove theirs on the way out
+    print("tweenrender: interrupted; no output was changed", file=sys.stderr)
+    return 130
+
+
+def _explain(verbose: bool) -> None:
+    """With ``-v``, the traceback of the error being handled, before its one-line message."""
+    if verbose:
+        import traceback
+
+        traceback.print_exc(file=sys.stderr)
+
+
+def _one_line(text: str) -> str:
+    return " | ".join(line.strip() for line in text.splitlines() if line.strip()) or "no message"
+
+
+def _silence_stdout() -> None:
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass

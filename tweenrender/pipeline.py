@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Sequence
+from typing import TYPE_CHECKING, Callable, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
@@ -16,6 +16,9 @@ from numpy.typing import NDArray
 from .core.timeline import Track, build_track, frame_count
 from .errors import RenderError, UsageError
 from .model import Points, Scene
+
+if TYPE_CHECKING:
+    from concurrent.futures import Executor
 
 __all__ = ["RenderJob", "Frames", "render", "total_frames", "parse_frames", "scene_view"]
 
@@ -74,6 +77,9 @@ class RenderJob:
     size: tuple[int, int] | None = None  # per panel; default the scene's
     fps: float | None = None
     frames: range | None = None  # default every frame
+    paths: bool = False  # every vertex's path and the keys, behind the shapes
+    onion: int = 0  # ghosted inbetweens before and after the frame (see render.overlays)
+    strip: bool = False  # the perimeter-ratio strip along each panel's bottom
 
     @property
     def panel_size(self) -> tuple[int, int]:
@@ -123,25 +129,35 @@ class Frames:
             width, height = job.panel_size
             view = scene_view(job.scene, self.tracks, job.methods)
             self._composer = Composer(job.scene, labels, width, height, view)
+            if job.paths or job.onion or job.strip:
+                from .render.overlays import PanelOverlays, above_strip
+
+                if job.strip:
+                    self._composer.viewport = above_strip(self._composer.viewport)
+                self._composer.layers.append(PanelOverlays(
+                    job.scene, self.tracks, job.methods, self._composer.viewport, job.rate, self.polygons,
+                    paths=job.paths, onion=job.onion, strip=job.strip))
         time = index / job.rate
         panels = [self.polygons(method, time) for method in job.methods]
         return self._composer.draw(panels, time)  # type: ignore[attr-defined]
 
 
-def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = None) -> Path:
-    """Render ``job`` into ``target`` as ``fmt``; the target changes only if everything succeeded."""
-    from .encode import open_sink
+def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = None,
+           executor: Executor | None = None, workers: int = 1) -> Path:
+    """Render ``job`` into ``target`` as ``fmt``; the target changes only if everything succeeded.
 
-    frames = Frames(job)
+    Frames stream one at a time into the sink, so memory does not grow with the
+    clip. They are drawn here, or on ``executor`` (any
+    ``concurrent.futures.Executor``) or ``workers`` processes, and written in order.
+    """
+    from .encode import open_sink
+    from .parallel import frame_stream
+
     indices = job.frame_range
     width, height = job.frame_size
     sink = open_sink(fmt, target, width, height, job.rate, len(indices))
     try:
-        for done, index in enumerate(indices, start=1):
-            try:
-                picture = frames(index)
-            except (ValueError, FloatingPointError, RuntimeError) as error:
-                raise RenderError(f"frame {index}: {error}") from error
+        for done, picture in enumerate(frame_stream(job, executor, workers), start=1):
             sink.write(picture)
             if progress is not None:
                 progress(done, len(indices))

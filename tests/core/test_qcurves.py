@@ -374,17 +374,33 @@ def test_auto_choice_per_body():
                                        ("linear", "linear"))
 
 
-def test_auto_with_joints_averages_each_body_choice_at_the_joints():
+def _unit_spoke_scale(phi: float, t: np.ndarray) -> np.ndarray:
+    """|B(t)| of the thesis's Bézier for a unit spoke turning by phi about a fixed center."""
+    p0 = np.array([1.0, 0.0])
+    p2 = np.array([np.cos(phi), np.sin(phi)])
+    p1 = 2 * np.array([np.cos(phi / 2), np.sin(phi / 2)]) - 0.5 * (p0 + p2)
+    s = (1 - t)[:, None]
+    return np.linalg.norm(s * s * p0 + 2 * s * t[:, None] * p1 + (t * t)[:, None] * p2, axis=1)
+
+
+def test_auto_with_joints_uses_each_body_choice():
     k0, k1, joint = _limb_scene(60.0)
     t = np.linspace(0, 1, 7)
     got = qcurves.auto(k0, k1, t, joint)
     torso, limb = [0, 1, 2, 5, 6], [2, 3, 4, 5]
+    # The torso (most vertices, linear: it does not turn rigidly) leads on straight paths.
     a = paths.linear(k0[torso], k1[torso], t)
-    b = paths.nonlinear(k0[limb], k1[limb], t)
     np.testing.assert_allclose(got[:, [0, 1, 6]], a[:, [0, 1, 4]], atol=1e-12)
-    np.testing.assert_allclose(got[:, [3, 4]], b[:, [1, 2]], atol=1e-12)
-    np.testing.assert_allclose(got[:, 2], 0.5 * (a[:, 2] + b[:, 0]), atol=1e-12)
-    np.testing.assert_allclose(got[:, 5], 0.5 * (a[:, 3] + b[:, 3]), atol=1e-12)
+    # The limb (nonlinear: a rigid turn) turns about its joint, whose midpoint goes straight...
+    np.testing.assert_allclose(got[:, [2, 5]].mean(axis=1), 0.5 * (a[:, 2] + a[:, 3]), atol=1e-12)
+    # ...and keeps its shape: every edge, the joint's width included, scales like a spoke of the
+    # thesis's Bézier turning 60 degrees about a fixed center.
+    def lengths(p: np.ndarray) -> np.ndarray:
+        return np.linalg.norm(np.roll(p, -1, axis=-2) - p, axis=-1)
+
+    ratio = lengths(got[:, limb]) / lengths(k0[limb])
+    np.testing.assert_allclose(ratio, np.repeat(_unit_spoke_scale(np.radians(60), t)[:, None], 4, 1),
+                               atol=1e-12)
 
 
 def test_auto_rejects_bad_joints():

@@ -151,7 +151,7 @@ def test_missing_and_unreadable_files(tmp_path: Path) -> None:
         load_scene(tmp_path)
     binary = tmp_path / "b.toml"
     binary.write_bytes(b"\xff\xfe\x00bad")
-    with pytest.raises(SceneError, match="not UTF-8"):
+    with pytest.raises(SceneError, match=r"b\.toml: line 1: expected UTF-8 text, found byte 0xff"):
         load_scene(binary)
 
 

@@ -8,6 +8,7 @@ from pathlib import Path
 from ..errors import UsageError
 from ..model import METHODS
 from ._args import fps, methods, size
+from ._overlays import add_overlay_flags
 
 DEFAULT_MAX_FRAMES = 100_000
 
@@ -24,10 +25,24 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (of each panel)")
     p.add_argument("--fps", type=fps, metavar="N")
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")
+    add_overlay_flags(p)
     p.add_argument("--max-frames", type=int, default=DEFAULT_MAX_FRAMES, metavar="N",
                    help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")
+    p.add_argument("--workers", type=_workers, metavar="N",
+                   help="processes drawing frames (default: 1 for video, whose encoder is the limit; "
+                        "one per core for long, large PNG/GIF renders)")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(run=run)
+
+
+def _workers(text: str) -> int:
+    try:
+        count = int(text)
+    except ValueError:
+        raise UsageError(f"--workers: expected a whole number of processes, found {text!r}") from None
+    if not 1 <= count <= 256:
+        raise UsageError(f"--workers: expected 1 to 256 processes, found {count}")
+    return count
 
 
 def _output_format(args: argparse.Namespace) -> tuple[str, Path]:
@@ -75,8 +90,12 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"{len(panels)} panels of {width} px make a {width * len(panels)} px wide "
                          f"frame, more than {LIMITS['canvas']}")
     job = RenderJob(scene, panels, labels=args.compare is not None, size=(width, height), fps=rate,
-                    frames=frames)
+                    frames=frames, paths=args.paths, onion=args.onion, strip=args.strip)
     bar = ProgressBar(f"{target.name}", enabled=False if args.quiet else None)
-    written = render(job, fmt, target, bar)
+    if args.workers is None:
+        from ..parallel import default_workers
+
+        args.workers = default_workers(job, fmt)
+    written = render(job, fmt, target, bar, workers=args.workers)
     print(written)
     return 0

@@ -63,86 +63,55 @@ def distance_matrix(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 @_jit
-def _relax_edge_cell(c: int, first: int, above_first: int, above_last: int, prev: np.ndarray,
-                     cur: np.ndarray, moves: np.ndarray, i: int, cost: float) -> None:
-    """One node near a band's edge, where some predecessors may lie outside the band."""
-    best = np.inf
-    move = STEP_A
-    if c > first:
-        best = cur[c - 1]
-        move = STEP_B
-    if above_first <= c - 1 <= above_last and prev[c - 1] < best:
-        best = prev[c - 1]
-        move = STEP_AB
-    if above_first <= c <= above_last and prev[c] < best:
-        best = prev[c]
-        move = STEP_A
-    cur[c] = best + cost
-    moves[i, c] = move
-
-
-@_jit
-def _relax_inner_run(start: int, stop: int, shift: int, row: np.ndarray, prev: np.ndarray,
-                     cur: np.ndarray, moves: np.ndarray, i: int) -> None:
-    """Nodes ``start..stop-1`` whose three predecessors all lie in the band (the hot loop).
-
-    ``shift`` is 0 or n: the column of ``row`` is ``c - shift``.
-    """
-    left = cur[start - 1]
-    for c in range(start, stop):
-        best = left
-        move = STEP_B
-        diagonal, above = prev[c - 1], prev[c]
-        if diagonal < best:
-            best = diagonal
-            move = STEP_AB
-        if above < best:
-            best = above
-            move = STEP_A
-        left = best + row[c - shift]
-        cur[c] = left
-        moves[i, c] = move
-
-
-@_jit
 def solve_start(w: np.ndarray, lo: np.ndarray, hi: np.ndarray,
                 moves: np.ndarray, prev: np.ndarray, cur: np.ndarray) -> float:
     """Cheapest path from ``(0, s)`` to ``(m, s + n)`` inside columns ``lo[i]..hi[i]`` of each row.
 
-    The start is ``s = lo[0]``; the band must hold it and ``hi[m] = s + n``.
-    A node's cost ``w[i mod m, c mod n]`` is paid on arrival, so the start is paid
-    once, by the closing node. ``moves[i, c]`` gets the step that arrived at each
-    node. Ties prefer STEP_B, then STEP_AB, then STEP_A: tracing back then yields
-    the *leftmost* optimal path (the smallest columns in every row), which is what
-    makes the optimal paths of different starts nest (see ``maes_search``).
-    ``prev`` and ``cur`` are scratch rows of length ``2n``.
+    The start is ``s = lo[0]``; bands only widen to the right from row to row
+    (``lo`` and ``hi`` never decrease) and ``hi[m] = s + n``. A node's cost
+    ``w[i mod m, c mod n]`` is paid on arrival, so the start is paid once, by the
+    closing node. ``moves[i, c]`` gets the step that arrived at each node. Ties
+    prefer STEP_B, then STEP_AB, then STEP_A: tracing back then yields the
+    *leftmost* optimal path (the smallest columns in every row), so that the
+    paths of different starts nest and ``maes_search``'s bands stay thin.
+    ``prev`` and ``cur`` are scratch rows of length ``2n + 1``; column ``c`` is
+    kept at ``c + 1`` so that column -1 is a +inf sentinel.
     """
     m, n = w.shape
     s = lo[0]
-    cur[s] = 0.0
+    prev[0] = cur[0] = np.inf
+    cur[s + 1] = 0.0
     for c in range(s + 1, hi[0] + 1):
-        cur[c] = cur[c - 1] + w[0, c - n if c >= n else c]
+        cur[c + 1] = cur[c] + w[0, c - n if c >= n else c]
         moves[0, c] = STEP_B
     for i in range(1, m + 1):
         prev, cur = cur, prev
-        row = w[i if i < m else 0]
         first, last = lo[i], hi[i]
-        above_first, above_last = lo[i - 1], hi[i - 1]
-        # Columns whose three predecessors are all inside the band need no checks.
-        inner_start = max(first + 1, above_first + 1)
-        inner_stop = max(inner_start, min(last, above_last) + 1)
-        for c in range(first, inner_start):
-            _relax_edge_cell(c, first, above_first, above_last, prev, cur, moves, i,
-                             row[c - n if c >= n else c])
-        # The inner run, in two parts: before and after the column wraps round b.
-        split = min(max(n, inner_start), inner_stop)
-        for part in range(2):
-            run_start, run_stop = (inner_start, split) if part == 0 else (split, inner_stop)
-            _relax_inner_run(run_start, run_stop, 0 if part == 0 else n, row, prev, cur, moves, i)
-        for c in range(inner_stop, last + 1):
-            _relax_edge_cell(c, first, above_first, above_last, prev, cur, moves, i,
-                             row[c - n if c >= n else c])
-    return cur[s + n]
+        # Predecessors outside the row above's band cost +inf: no checks in the hot loop.
+        for c in range(first - 1, lo[i - 1]):
+            prev[c + 1] = np.inf
+        for c in range(hi[i - 1] + 1, last + 1):
+            prev[c + 1] = np.inf
+        row = w[i if i < m else 0]
+        row_moves = moves[i]
+        left = np.inf
+        for part in range(2):  # before and after the column wraps round b
+            start, stop = (first, min(last + 1, n)) if part == 0 else (max(first, n), last + 1)
+            shift = 0 if part == 0 else n
+            for c in range(start, stop):
+                best = left
+                move = STEP_B
+                diagonal, above = prev[c], prev[c + 1]
+                if diagonal < best:
+                    best = diagonal
+                    move = STEP_AB
+                if above < best:
+                    best = above
+                    move = STEP_A
+                left = best + row[c - shift]
+                cur[c + 1] = left
+                row_moves[c] = move
+    return cur[s + n + 1]
 
 
 @_jit
@@ -188,17 +157,18 @@ def maes_search(w: np.ndarray) -> tuple[float, np.ndarray]:
 
     Why it is exact: two monotone paths with steps (0,1), (1,1), (1,0) can only
     cross at a shared node (no step crosses another between nodes), and node
-    costs add, so segments between shared nodes can be exchanged. Hence the
-    leftmost optimal path of start ``s < mid < t`` lies between the leftmost
-    optimal paths of ``s`` and ``t``, and the start ``mid`` is solved inside that
-    band only. Row bands are taken as the hull of the two bounding paths, so that
-    a float tie that let them touch or swap still leaves the band valid.
+    costs add, so between two shared nodes either path's segment can replace
+    the other's. An optimal path of start ``s < mid < t`` that strays left of
+    the optimal path of ``s`` (or right of that of ``t``) can therefore follow
+    it instead at no extra cost: start ``mid`` is solved only in the band
+    between the two. Each row's band is the hull of both paths' columns, which
+    stays valid even if ties let the two paths cross.
     Returns the cost and the nodes ``(L + 1, 2)`` in unrolled coordinates, end first.
     """
     m, n = w.shape
     moves = np.empty((m + 1, 2 * n), np.uint8)
-    prev = np.empty(2 * n)
-    cur = np.empty(2 * n)
+    prev = np.empty(2 * n + 1)
+    cur = np.empty(2 * n + 1)
     lo = np.empty(m + 1, np.int64)
     hi = np.empty(m + 1, np.int64)
     nodes = np.empty((m + n + 1, 2), np.int64)
@@ -259,8 +229,8 @@ def every_start_search(w: np.ndarray) -> tuple[float, np.ndarray]:
     """
     m, n = w.shape
     moves = np.empty((m + 1, 2 * n), np.uint8)
-    prev = np.empty(2 * n)
-    cur = np.empty(2 * n)
+    prev = np.empty(2 * n + 1)
+    cur = np.empty(2 * n + 1)
     lo = np.empty(m + 1, np.int64)
     hi = np.empty(m + 1, np.int64)
     best, best_start = np.inf, 0
@@ -293,7 +263,7 @@ def stretch_work(l0: float, l1: float, ks: float, cs: float, es: float) -> float
 
 @_jit
 def _roots_inside(c0: float, c1: float, c2: float, out: np.ndarray, count: int) -> int:
-    """Append to ``out`` the roots in (0, 1) of ``c0(1-t)² + 2c1 t(1-t) + c2 t²``; return the new count."""
+    """Append the roots in (0, 1) of ``c0(1-t)² + 2c1 t(1-t) + c2 t²`` to ``out``; returns the new count."""
     qa = c0 - 2.0 * c1 + c2
     qb = 2.0 * (c1 - c0)
     qc = c0
@@ -544,7 +514,7 @@ def sg_search(stretch: np.ndarray, bend: np.ndarray) -> tuple[float, np.ndarray]
 @_jit
 def sg_path_energy(a: np.ndarray, b: np.ndarray, pairs: np.ndarray, ks: float, cs: float,
                    es: float, kb: float, eb: float, mb: float, pb: float) -> float:
-    """S&G energy of a closed path given as ``pairs (L, 2)``: every step's stretching plus every node's bending."""
+    """S&G energy of the closed path ``pairs (L, 2)``: every step's stretching, every node's bending."""
     count = pairs.shape[0]
     total = 0.0
     for k in range(count):

@@ -6,25 +6,26 @@ minus one when b is walked backwards), the path winds once round each polygon
 and closes on its start. Its ``L`` nodes become the ``L`` vertices of both
 balanced polygons, ``max(m, n) ≤ L ≤ m + n``.
 
-Path costs, over the path's nodes ``p_k = (i_k, j_k)``, ``k = 0..L-1``, taken
-cyclically (``p_L = p_0``, ``p_-1 = p_{L-1}``), after the alignment of
+Path costs, over the path's nodes ``p[k] = (i[k], j[k])``, ``k = 0..L-1``, taken
+cyclically (``p[L] = p[0]``, ``p[-1] = p[L-1]``), after the alignment of
 ``Matching.align`` (``"centroid"``: each polygon's vertex mean moved to the origin):
 
 ``distance``
-    ``Σ_k |a[i_k] - b[j_k]|``: each node once (SPEC §2, the thesis's work).
+    ``Σ_k |a[i[k]] - b[j[k]]|``: each node once (SPEC §2, the thesis's work).
 
 ``sg``
     ``Σ_k stretch_k + Σ_k bend_k`` (Sederberg–Greenwood, SPEC §2.1) where
 
-    * ``stretch_k = ks·|l1 - l0|^es / ((1 - cs)·min + cs·max)`` for the step
-      ``p_k → p_k+1``, with ``l0 = |a[i_k+1] - a[i_k]|`` and ``l1 = |b[j_k+1] - b[j_k]|``
-      (0 for the polygon the step does not advance), and 0 when ``l0 = l1``;
+    * ``stretch_k = ks·|l1 - l0|^es / ((1 - cs)·min(l0, l1) + cs·max(l0, l1))``
+      for the step ``p[k] → p[k+1]``, with ``l0 = |a[i[k+1]] - a[i[k]]|`` and
+      ``l1 = |b[j[k+1]] - b[j[k]]|`` (0 for a polygon the step does not
+      advance), and 0 when ``l0 = l1``: L terms;
     * ``bend_k = kb·(Δθ + mb·Δθ*)^eb``, plus ``pb`` if the angle passes through
-      zero, from the Q-curve (SPEC §3) of the node with ``B0 = a[i_k-1] - a[i_k]``,
-      ``F0 = a[i_k+1] - a[i_k]`` and ``B1, F1`` likewise in b (zero vectors where
-      a step does not advance that polygon). ``Δθ = |θ(1) - θ(0)|`` for the
-      continuous angle θ(t) of ``Q(t)``; ``Δθ*`` is how far θ leaves the range
-      between its end values (above plus below); "through zero" is ``Q(t)``
+      zero, from the Q-curve (SPEC §3) of node k with ``B0 = a[i[k-1]] - a[i[k]]``,
+      ``F0 = a[i[k+1]] - a[i[k]]`` and ``B1, F1`` likewise in b (zero vectors
+      where a step does not advance that polygon): L terms. ``Δθ = |θ(1) - θ(0)|``
+      for the continuous angle θ(t) of ``Q(t)``; ``Δθ*`` is how far θ leaves the
+      range between its end values (above plus below); "through zero" is ``Q(t)``
       meeting the positive x-axis for some 0 < t < 1. A zero edge (a duplicated
       vertex) makes an end of the Q-curve vanish; that key's angle is then taken
       as straight, the end being replaced by ``(-r, 0)`` with ``r`` the length of
@@ -39,12 +40,12 @@ memory — fine for the hundred-odd vertices of hand-drawn keys.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from types import ModuleType
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..model import ALIGNS, COSTS, Matching, Points
-from . import _cyclic_dtw as kernels
 from .geometry import centroid, signed_area
 
 __all__ = [
@@ -56,6 +57,14 @@ Pairs = NDArray[np.intp]
 """A correspondence path: ``(L, 2)`` indices ``(i, j)`` into a and b, in path order."""
 
 _DEFAULT = Matching()
+
+
+def _kernels() -> ModuleType:
+    """The compiled search kernels, imported on first need: numba costs ~0.2 s to import,
+    and scenes whose keys agree in vertex count never need it."""
+    from . import _cyclic_dtw
+
+    return _cyclic_dtw
 
 
 @dataclass(frozen=True, slots=True)
@@ -83,7 +92,7 @@ class Correspondence:
 
 def work_matrix(a: Points, b: Points) -> NDArray[np.float64]:
     """``W[i, j] = |a_i - b_j|`` for ``a (m, 2)``, ``b (n, 2)``: ``(m, n)``."""
-    return kernels.distance_matrix(_as_polygon(a, "a"), _as_polygon(b, "b"))
+    return _kernels().distance_matrix(_as_polygon(a, "a"), _as_polygon(b, "b"))
 
 
 def correspond(a: Points, b: Points, matching: Matching = _DEFAULT) -> Correspondence:
@@ -106,7 +115,15 @@ def path_work(a: Points, b: Points, pairs: ArrayLike, matching: Matching = _DEFA
     """Cost of any closed path ``pairs (L, 2)`` under ``matching``: what ``correspond`` minimises."""
     _check_matching(matching)
     a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
-    return _aligned_work(a, b, np.asarray(pairs, dtype=np.intp).reshape(-1, 2), matching)
+    path = np.asarray(pairs)
+    if path.ndim != 2 or path.shape[1] != 2 or len(path) == 0:
+        raise ValueError(f"pairs should have shape (L, 2) with L ≥ 1, not {path.shape}")
+    if not np.issubdtype(path.dtype, np.integer):
+        raise ValueError(f"pairs should be integer indices, not {path.dtype}")
+    if path.min() < 0 or path[:, 0].max() >= len(a) or path[:, 1].max() >= len(b):
+        raise ValueError(f"pairs should index {len(a)} × {len(b)} vertices, "
+                         f"not range over {path.min(axis=0).tolist()}..{path.max(axis=0).tolist()}")
+    return _aligned_work(a, b, path.astype(np.intp), matching)
 
 
 def is_cyclic_monotone(pairs: ArrayLike, m: int, n: int, reversed: bool = False) -> bool:
@@ -138,6 +155,7 @@ def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> C
     # step of -1 in b when b winds the other way; walk[0] = 0 either way.
     walk = (-np.arange(len(b))) % len(b) if backwards else np.arange(len(b))
     walked_b = np.ascontiguousarray(b[walk])
+    kernels = _kernels()
     if matching.cost == "distance":
         search = kernels.every_start_search if exhaustive else kernels.maes_search
         _, nodes = search(kernels.distance_matrix(a, walked_b))
@@ -151,7 +169,7 @@ def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> C
 
 
 def _pairs_from_nodes(nodes: NDArray[np.int64], m: int, walk: NDArray[np.intp]) -> Pairs:
-    """Unrolled nodes ``(L + 1, 2)``, end first, as pairs of original indices ``(L, 2)``, start first."""
+    """Unrolled nodes ``(L + 1, 2)``, end first, as original indices ``(L, 2)``, start first."""
     path = nodes[::-1][:-1]  # start first; the closing node is the start again
     n = len(walk)
     return np.column_stack([path[:, 0] % m, walk[path[:, 1] % n]]).astype(np.intp)
@@ -160,11 +178,12 @@ def _pairs_from_nodes(nodes: NDArray[np.int64], m: int, walk: NDArray[np.intp]) 
 def _aligned_work(a: Points, b: Points, pairs: Pairs, matching: Matching) -> float:
     """Path cost of already aligned polygons (module docstring)."""
     if matching.cost == "distance":
-        step = a[pairs[:, 0]] - b[pairs[:, 1]]
-        return float(np.hypot(step[:, 0], step[:, 1]).sum())
+        gap = a[pairs[:, 0]] - b[pairs[:, 1]]
+        return float(np.sqrt((gap * gap).sum(axis=1)).sum())
     m = matching
-    return float(kernels.sg_path_energy(a, b, np.ascontiguousarray(pairs, dtype=np.int64),
-                                        m.ks, m.cs, m.es, m.kb, m.eb, m.mb, m.pb))
+    # A writable int64 copy: a read-only array would be compiled for separately.
+    indices = np.array(pairs, dtype=np.int64, order="C", copy=True)
+    return float(_kernels().sg_path_energy(a, b, indices, m.ks, m.cs, m.es, m.kb, m.eb, m.mb, m.pb))
 
 
 def _aligned(a: Points, b: Points, align: str) -> tuple[Points, Points]:
@@ -179,8 +198,11 @@ def _winds_opposite(a: Points, b: Points) -> bool:
 
 
 def _as_polygon(points: Points, name: str) -> NDArray[np.float64]:
-    """``points`` as a C-contiguous float64 ``(N, 2)`` array with N ≥ 2 finite vertices."""
-    array = np.ascontiguousarray(points, dtype=np.float64)
+    """A C-contiguous float64 ``(N, 2)`` copy of ``points``, checked for N ≥ 2 finite vertices.
+
+    Always a writable copy: the kernels would be compiled again for read-only arrays.
+    """
+    array = np.array(points, dtype=np.float64, order="C", copy=True)
     if array.ndim != 2 or array.shape[1] != 2:
         raise ValueError(f"polygon {name} should have shape (N, 2), not {array.shape}")
     if array.shape[0] < 2:

@@ -1,10 +1,13 @@
 """Jointed nonlinear paths (SPEC §5.1, thesis ch. 7).
 
 A joint is a chord ``(a, b)`` between two vertices of a polygon. Non-crossing
-chords cut the polygon into *local bodies*; each body gets the nonlinear paths
-of SPEC §4 around its own center of mass, and a joint vertex, which belongs to
-two or more bodies, follows the mean of its bodies' paths so the outline never
-cracks.
+chords cut the polygon into *local bodies*, which form a tree joined by the
+chords. The body with most vertices leads: it gets the nonlinear paths of SPEC §4
+around its own center of mass. Each other body turns about its joint, the
+midpoint of the chord to the body it hangs from, and that midpoint moves with
+the leading side, so the outline never cracks. (SPEC §5.1's first rule, every
+body about its own center of mass and joint vertices on the mean of their bodies'
+paths, is kept as ``rule="mean"``; it bends a limb that swings about a hinge.)
 """
 
 from __future__ import annotations
@@ -16,10 +19,18 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import paths
+from .geometry import best_fit_rotation, cross, rotate
 
-__all__ = ["JointError", "PathFunction", "validate_joints", "bodies", "jointed"]
+__all__ = ["JointError", "PathFunction", "RULES", "validate_joints", "bodies", "pivoted", "misfit", "root_body",
+           "jointed"]
 
 Array = NDArray[np.float64]
+RULES = ("chain", "mean")
+"""How bodies share their joint vertices; see :func:`jointed`."""
+
+# |mid offset| below this fraction of the body's size counts as "no direction" (SPEC §4).
+_DEGENERATE = 1e-9
+
 PathFunction = Callable[[Array, Array, ArrayLike], Array]
 """``f(k0 (N, 2), k1 (N, 2), t (T,)) -> (T, N, 2)``, like the functions of :mod:`paths`."""
 
@@ -101,24 +112,82 @@ def bodies(n: int, joints: Sequence[tuple[int, int]]) -> list[NDArray[np.intp]]:
     return [np.array(r, dtype=np.intp) for r in sorted(sorted(run) for run in runs)]
 
 
+def pivoted(u0: Array, u1: Array, t: ArrayLike) -> Array:
+    """The thesis's nonlinear paths for offsets ``(N, 2)`` that turn about a fixed origin: ``(T, N, 2)``.
+
+    SPEC §4 with both centers at the origin: the mid frame ``(u0 + u1)/2`` is
+    pushed back out to each offset's mean length. Near a half turn the mid frame
+    has no direction; the first key's offset turned by half the best-fit angle
+    about the origin is used instead, as :func:`paths.nonlinear_controls` does.
+    """
+    mid = 0.5 * (u0 + u1)
+    dist = 0.5 * (np.linalg.norm(u0, axis=-1) + np.linalg.norm(u1, axis=-1))  # (N,)
+    length = np.linalg.norm(mid, axis=-1)
+    flat = length <= _DEGENERATE * max(float(dist.max(initial=0.0)), 1e-300)
+    if np.any(flat):
+        phi = float(np.arctan2(cross(u0, u1).sum(), (u0 * u1).sum()))
+        spoke = np.where((np.linalg.norm(u0, axis=-1) > 0)[:, None], rotate(u0, phi / 2), rotate(u1, -phi / 2))
+        mid = np.where(flat[:, None], spoke, mid)
+        length = np.linalg.norm(mid, axis=-1)
+    unit = np.divide(mid, length[:, None], out=np.zeros_like(mid), where=length[:, None] > 0)
+    p1 = 2.0 * unit * dist[:, None] - 0.5 * (u0 + u1)
+    return paths.bezier2(u0, p1, u1, t)
+
+
+def _about_joint(f: PathFunction) -> PathFunction:
+    """``f`` for a body that turns about its joint: offsets from the joint, not from the body's center."""
+    if f is paths.nonlinear:
+        return pivoted
+    return f  # linear paths do not depend on the origin; any other f sees the offsets
+
+
+def misfit(k0: Array, k1: Array) -> float:
+    """How far ``k0 → k1`` (each ``(N, 2)``) is from a rigid motion: RMS residual of the best
+    rigid fit over the RMS distance from the center of mass (0 for a rigid motion)."""
+    u0 = k0 - k0.mean(axis=0)
+    u1 = k1 - k1.mean(axis=0)
+    size = float(np.sqrt(0.5 * ((u0 * u0).sum() + (u1 * u1).sum()) / len(u0)))
+    if size == 0.0:
+        return 0.0
+    residual = rotate(u0, float(best_fit_rotation(k0, k1))) - u1
+    return float(np.sqrt((residual * residual).sum() / len(u0))) / size
+
+
+def root_body(k0: Array, k1: Array, parts: Sequence[NDArray[np.intp]]) -> int:
+    """Index in ``parts`` of the body that leads: the most vertices, then the least turn, then the first."""
+    turns = [abs(float(best_fit_rotation(k0[b], k1[b]))) for b in parts]
+    return min(range(len(parts)), key=lambda i: (-len(parts[i]), turns[i], i))
+
+
 def jointed(
     k0: Array,
     k1: Array,
     t: ArrayLike,
     joints: Sequence[tuple[int, int]],
     body_paths: PathFunction | Sequence[PathFunction] | None = None,
+    rule: str = "chain",
 ) -> Array:
-    """Per-body paths, joint vertices averaged over their bodies: ``(T, N, 2)``.
+    """Per-body paths of a polygon cut by ``joints``: ``(T, N, 2)``.
 
     ``body_paths`` is one path function for every body, or one per body in the
-    order of :func:`bodies`; the default is :func:`paths.nonlinear`, so each body
-    turns about its own center of mass. With no joints this is ``body_paths``
-    (or ``paths.nonlinear``) of the whole shape.
+    order of :func:`bodies`; the default is :func:`paths.nonlinear`. With no
+    joints this is ``body_paths`` (or ``paths.nonlinear``) of the whole shape.
+
+    ``rule = "chain"`` (the default): the body with most vertices (the thesis's
+    larger mass that drags the others along) gets its paths about its own
+    center of mass; every other body turns about the midpoint of the chord
+    that joins it to the body before it, and that midpoint moves with that
+    body. The chord itself turns with whichever of its two bodies is closer to
+    rigid (:func:`misfit`), so the joint keeps its width. ``rule = "mean"``: every body turns about its
+    own center of mass and a joint vertex follows the mean of its bodies' paths
+    (SPEC §5.1's first choice; see the README for what was measured).
     """
     k0 = np.asarray(k0, dtype=np.float64)
     k1 = np.asarray(k1, dtype=np.float64)
     if k0.shape != k1.shape or k0.ndim != 2 or k0.shape[1] != 2:
         raise ValueError(f"keys must both be (N, 2), found {k0.shape} and {k1.shape}")
+    if rule not in RULES:
+        raise ValueError(f"unknown joint rule {rule!r}; expected chain or mean")
     t = paths.as_times(t)
     n = k0.shape[0]
     parts = bodies(n, joints)
@@ -129,9 +198,16 @@ def jointed(
         raise ValueError(
             f"{len(parts)} bodies need {len(parts)} path functions, found {len(functions)}"
         )
+    if rule == "mean":
+        return _mean(k0, k1, t, parts, functions)
+    return _chain(k0, k1, t, joints, parts, functions)
 
+
+def _mean(k0: Array, k1: Array, t: Array, parts: list[NDArray[np.intp]],
+          functions: list[PathFunction]) -> Array:
     # A joint vertex's mean is taken as first path + mean deviation from it, so
     # that where all bodies agree (t = 0 and 1) the key is hit bit for bit.
+    n = k0.shape[0]
     out = np.zeros((t.shape[0], n, 2))
     offset = np.zeros_like(out)
     count = np.zeros(n)
@@ -142,3 +218,36 @@ def jointed(
         offset[:, index] += path - out[:, index]
         count[index] += 1
     return out + offset / count[None, :, None]
+
+
+def _chain(k0: Array, k1: Array, t: Array, joints: Sequence[tuple[int, int]],
+           parts: list[NDArray[np.intp]], functions: list[PathFunction]) -> Array:
+    n = k0.shape[0]
+    out = np.empty((t.shape[0], n, 2))
+    root = root_body(k0, k1, parts) if len(parts) > 1 else 0
+    out[:, parts[root]] = functions[root](k0[parts[root]], k1[parts[root]], t)
+    members = [set(b.tolist()) for b in parts]
+    placed, queue = {root}, [root]
+    while queue:  # breadth first over the tree of bodies, whose edges are the chords
+        parent = queue.pop(0)
+        for k, joint in enumerate(joints):
+            a, b = _as_pair(k, joint)
+            if not {a, b} <= members[parent]:
+                continue
+            child = next((i for i, m in enumerate(members) if i not in placed and {a, b} <= m), None)
+            if child is None:  # the chord to this body's own parent
+                continue
+            # The chord turns with whichever of its two bodies keeps its shape better,
+            # so a joint keeps its width when one side of it is rigid.
+            carried = misfit(k0[parts[child]], k1[parts[child]]) < misfit(k0[parts[parent]], k1[parts[parent]])
+            own = np.array([v for v in parts[child].tolist() if carried or v not in (a, b)], dtype=np.intp)
+            j0, j1 = 0.5 * (k0[a] + k0[b]), 0.5 * (k1[a] + k1[b])
+            hinge = 0.5 * (out[:, a] + out[:, b])  # (T, 2): the chord's midpoint, carried by the parent
+            turn = _about_joint(functions[child])(k0[own] - j0, k1[own] - j1, t)
+            # Written as deviations from the straight path so that t = 0 and 1 give the keys bit for bit.
+            straight = paths.linear(k0[own], k1[own], t)
+            drift = hinge - paths.linear(j0[None], j1[None], t)[:, 0]  # (T, 2)
+            out[:, own] = straight + (turn - paths.linear(k0[own] - j0, k1[own] - j1, t)) + drift[:, None]
+            placed.add(child)
+            queue.append(child)
+    return out

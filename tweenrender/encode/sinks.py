@@ -4,7 +4,9 @@ earlier output untouched."""
 
 from __future__ import annotations
 
+import re
 import subprocess
+import sys
 import tempfile
 from pathlib import Path
 from typing import Protocol
@@ -13,9 +15,18 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import EncodeError, UsageError
-from .atomic import commit_file, commit_folder, discard, prepare_folder, sibling
+from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 
-__all__ = ["FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video"]
+__all__ = ["FORMATS", "PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
+           "ffmpeg_command"]
+
+PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
+"""Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout."""
+
+# A pipe holds 64 KiB by default: each 8 MB frame then trickles through in 128
+# wake-ups. 1 MiB (Linux's limit for an unprivileged process) lets ffmpeg
+# read in larger gulps; elsewhere the default stays.
+_PIPE_BYTES = 1 << 20
 
 FORMATS = ("mp4", "webm", "gif", "png")
 
@@ -43,8 +54,13 @@ class Sink(Protocol):
         """Drop everything written so far; the target is left as it was."""
 
 
-def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frames: int) -> Sink:
-    """A sink for ``frames`` frames of ``width × height`` at ``fps`` into ``target``."""
+def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
+              pixel_format: str = "rgba") -> Sink:
+    """A sink for ``frames`` frames of ``width × height`` at ``fps`` into ``target``.
+
+    ``pixel_format`` is the layout of the arrays given to ``write`` (video
+    sinks; PNG frames are always straight RGBA).
+    """
     if fmt not in FORMATS:
         raise UsageError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
     if fmt in ("mp4", "webm") and (width % 2 or height % 2):
@@ -52,7 +68,19 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     prepare_folder(target)
     if fmt == "png":
         return PngSequence(target, frames)
-    return FFmpegVideo(fmt, target, width, height, fps, frames)
+    return FFmpegVideo(fmt, target, width, height, fps, frames, pixel_format)
+
+
+def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, output: str,
+                   pixel_format: str = "rgba") -> list[str]:
+    """The bundled ffmpeg's command line that encodes raw ``pixel_format`` frames from ``source`` as ``fmt``."""
+    import imageio_ffmpeg
+
+    if pixel_format not in PIXEL_FORMATS:
+        raise UsageError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)}")
+    return [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
+            "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}",
+            "-i", source, "-an", *_CODECS[fmt], output]
 
 
 class PngSequence:
@@ -62,7 +90,10 @@ class PngSequence:
         self.target = target
         self.expected = frames
         self.temporary = sibling(target)
-        self.temporary.mkdir()
+        try:
+            self.temporary.mkdir()
+        except OSError as error:
+            raise EncodeError(f"{target}: cannot create the frames folder ({os_reason(error)})") from None
         self.count = 0
         self.digits = max(4, len(str(max(frames - 1, 0))))
 
@@ -73,7 +104,8 @@ class PngSequence:
         try:
             iio.imwrite(name, rgba, extension=".png")
         except OSError as error:
-            raise EncodeError(f"{self.target}: cannot write {name.name} ({error.strerror or error})") from None
+            self.abort()
+            raise EncodeError(f"{self.target}: cannot write {name.name} ({os_reason(error)})") from None
         self.count += 1
 
     def close(self) -> Path:
@@ -88,22 +120,25 @@ class PngSequence:
 
 
 class FFmpegVideo:
-    """Raw RGBA frames piped into the ffmpeg bundled with imageio-ffmpeg."""
+    """Raw frames piped into the ffmpeg bundled with imageio-ffmpeg.
 
-    def __init__(self, fmt: str, target: Path, width: int, height: int, fps: float, frames: int) -> None:
-        import imageio_ffmpeg
+    ffmpeg is its own process, so it encodes frame n while this one draws
+    frame n + 1; ``write`` hands the array's memory to the pipe without a copy.
+    """
 
+    def __init__(self, fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
+                 pixel_format: str = "rgba") -> None:
         self.fmt, self.target = fmt, target
         self.width, self.height, self.fps, self.expected = width, height, fps, frames
+        self.pixel_format = pixel_format
+        self.channels = 3 if pixel_format == "rgb24" else 4
         self.temporary = sibling(target, "." + fmt)
+        command = ffmpeg_command(fmt, width, height, fps, "pipe:0", str(self.temporary), pixel_format)
         self.log = tempfile.TemporaryFile()
-        command = [
-            imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
-            "-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{width}x{height}", "-framerate", f"{fps:g}",
-            "-i", "pipe:0", "-an", *_CODECS[fmt], str(self.temporary),
-        ]
+        # unbuffered: Python's 8 KiB buffer would only add a copy of every frame
         self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                        stderr=self.log)
+                                        stderr=self.log, bufsize=0)
+        _grow_pipe(self.process.stdin)
         self.count = 0
 
     def _ffmpeg_said(self) -> str:
@@ -113,9 +148,17 @@ class FFmpegVideo:
         return " | ".join(lines[-4:]) if lines else "no message"
 
     def write(self, rgba: NDArray[np.uint8]) -> None:
+        """Take one frame ``(height, width, channels)`` in this sink's ``pixel_format``."""
         assert self.process.stdin is not None
+        if rgba.shape != (self.height, self.width, self.channels) or rgba.dtype != np.uint8:
+            self.abort()
+            raise EncodeError(f"{self.target}: frame {self.count} is {rgba.dtype} {rgba.shape}, expected uint8 "
+                              f"({self.height}, {self.width}, {self.channels}) {self.pixel_format}")
         try:
-            self.process.stdin.write(memoryview(np.ascontiguousarray(rgba)).cast("B"))
+            view = memoryview(np.ascontiguousarray(rgba)).cast("B")
+            while view:  # an unbuffered pipe may take part of a frame at a time
+                written = self.process.stdin.write(view)
+                view = view[written:]
         except (BrokenPipeError, OSError):
             self.process.wait()
             message = self._ffmpeg_said()
@@ -155,14 +198,33 @@ class FFmpegVideo:
         self.log.close()
 
 
+def _grow_pipe(pipe: object) -> None:
+    """Ask for a larger pipe buffer where the system allows it (Linux); otherwise keep the default."""
+    if sys.platform != "linux":
+        return
+    try:
+        import fcntl
+
+        fcntl.fcntl(pipe.fileno(), getattr(fcntl, "F_SETPIPE_SZ", 1031), _PIPE_BYTES)  # type: ignore[attr-defined]
+    except (OSError, ValueError, AttributeError):
+        pass  # a smaller limit (/proc/sys/fs/pipe-max-size) only costs wake-ups
+
+
 def probe_video(path: Path) -> tuple[int, tuple[int, int]]:
-    """Decoded frame count and ``(width, height)`` of a video file."""
+    """Frame count and ``(width, height)`` of a video file.
+
+    One ffmpeg run that copies the stream to nowhere (no decoding): the input's
+    stream line gives the size, the final progress line the frame count.
+    """
     import imageio_ffmpeg
 
-    reader = imageio_ffmpeg.read_frames(str(path))
-    try:
-        meta = reader.__next__()
-    finally:
-        reader.close()
-    frames, _ = imageio_ffmpeg.count_frames_and_secs(str(path))
-    return int(frames), tuple(int(v) for v in meta["size"])  # type: ignore[return-value]
+    done = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", str(path),
+                           "-map", "0:v:0", "-c", "copy", "-f", "null", "-"],
+                          capture_output=True, text=True, errors="replace")
+    said = done.stderr
+    stream = re.search(r"Stream #0:\d+.*?: Video: [^\n]*?(?<!\w)(\d{1,5})x(\d{1,5})(?!\w)", said)
+    counts = re.findall(r"frame=\s*(\d+)", said)
+    if done.returncode != 0 or stream is None or not counts:
+        lines = [line for line in said.strip().splitlines() if line.strip()]
+        raise ValueError(lines[-1] if lines else f"ffmpeg exit {done.returncode}")
+    return int(counts[-1]), (int(stream.group(1)), int(stream.group(2)))

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Sequence
+from typing import Protocol, Sequence
 
 import numpy as np
 import skia
@@ -12,11 +12,19 @@ from ..model import Color, Points, Scene
 from .raster import Raster
 from .view import Box, Viewport
 
-__all__ = ["Composer"]
+__all__ = ["Composer", "Layer"]
 
 _LABEL: Color = (30, 34, 45, 255)
 _LABEL_SOFT: Color = (30, 34, 45, 150)
 _DIVIDER: Color = (30, 34, 45, 70)
+
+
+class Layer(Protocol):
+    """Something drawn in every panel, behind (``under``) or in front of (``over``) the shapes."""
+
+    def under(self, canvas: skia.Canvas, panel: int, width: int, height: int, time: float) -> None: ...
+
+    def over(self, canvas: skia.Canvas, panel: int, width: int, height: int, time: float) -> None: ...
 
 
 class Composer:
@@ -33,6 +41,9 @@ class Composer:
         self.width = width * len(self.labels)
         self.viewport = Viewport(view, width, height)
         self.raster = Raster(self.width, height)
+        # extras per panel (see render.overlays): ``under``/``over`` hooks called with
+        # (canvas, panel index, panel width, height, time), the canvas in panel pixels
+        self.layers: list[Layer] = []
 
     def draw(self, panels: Sequence[Sequence[Points]], time: float) -> NDArray[np.uint8]:
         """One frame from each panel's polygons (one ``(N, 2)`` per shape, in file order).
@@ -45,7 +56,11 @@ class Composer:
             raster.canvas.save()
             raster.canvas.translate(index * self.panel_width, 0)
             raster.canvas.clipRect(skia.Rect.MakeWH(self.panel_width, self.height))
+            for layer in self.layers:
+                layer.under(raster.canvas, index, self.panel_width, self.height, time)
             self.draw_shapes(polygons)
+            for layer in self.layers:
+                layer.over(raster.canvas, index, self.panel_width, self.height, time)
             label = self.labels[index]
             if label is not None:
                 self.draw_label(label, time)

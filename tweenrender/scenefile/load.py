@@ -9,6 +9,8 @@ from __future__ import annotations
 import difflib
 import json
 import math
+import os
+import stat
 import tomllib
 from pathlib import Path
 from typing import Any, Callable
@@ -26,7 +28,10 @@ LIMITS = {
     "canvas": 16384,       # pixels a side
     "fps": (1, 240),
     "coordinate": 1e9,     # |x|, |y| in world units
-    "file_bytes": 64 << 20,
+    "time": 1e7,           # seconds, the latest a key may be
+    # tomllib parses ~2.5 MB/s into ~16x its size in objects: these two bound a refusal to seconds
+    "file_bytes": 16 << 20,
+    "vertices_total": 1_000_000,  # [x, y] pairs in one file, every key together
     "vertices": 200_000,   # per key
 }
 
@@ -37,39 +42,77 @@ _SVG = ("svg", "id", "tolerance")
 _MATCHING = ("cost", "align", "ks", "cs", "es", "kb", "eb", "mb", "pb")
 
 
+_KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a pipe (FIFO)"), (stat.S_ISCHR, "a character device"),
+          (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
+
+
 def load_scene(path: str | Path) -> Scene:
     """Read and validate the scene at ``path`` (``.json`` is JSON, anything else TOML)."""
     path = Path(path)
+    limit = LIMITS["file_bytes"]
     try:
-        size = path.stat().st_size
-        if path.is_dir():
-            raise SceneError(path, None, "is a folder, expected a scene file (.toml or .json)")
-        if size > LIMITS["file_bytes"]:
-            raise SceneError(path, None, f"file is {size} bytes, larger than the {LIMITS['file_bytes']} a scene may be")
-        raw = path.read_bytes()
+        mode = path.stat().st_mode
+        # a pipe or a device would block or never end: only regular files are read
+        for test, kind in _KINDS:
+            if test(mode):
+                raise SceneError(path, None, f"is {kind}, expected a scene file (.toml or .json)")
+        # O_NONBLOCK: should the path turn into a FIFO after the check, open must not wait for a writer
+        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(descriptor, "rb") as file:
+            raw = file.read(limit + 1)  # bounded even if the file grows while read
     except FileNotFoundError:
         raise SceneError(path, None, "no such file") from None
     except PermissionError:
         raise SceneError(path, None, "cannot be read (permission denied)") from None
     except OSError as error:
         raise SceneError(path, None, f"cannot be read ({error.strerror or error})") from None
+    if len(raw) > limit:
+        raise SceneError(path, None, f"expected a scene of at most {limit >> 20} MiB, found a larger file")
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as error:
-        raise SceneError(path, f"byte {error.start}", "is not UTF-8 text") from None
+        line = raw[: error.start].count(b"\n") + 1
+        raise SceneError(path, f"line {line}", f"expected UTF-8 text, found byte 0x{raw[error.start]:02x} "
+                                               f"(at byte {error.start})") from None
     return parse_scene(text, path, "json" if path.suffix.lower() == ".json" else "toml")
+
+
+def _refuse_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """JSON object hook: a repeated key would silently drop a value, so it is an error."""
+    table: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in table:
+            raise _DuplicateKey(key)
+        table[key] = value
+    return table
+
+
+class _DuplicateKey(ValueError):
+    def __init__(self, key: str) -> None:
+        super().__init__(key)
+        self.key = key
 
 
 def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
     """Validate scene ``text`` (``fmt`` ``"toml"`` or ``"json"``); ``path`` names it in errors."""
     path = Path(path)
+    # a cheap count before parsing: each [x, y] pair opens one bracket (so do a few headers)
+    pairs, most = text.count("["), LIMITS["vertices_total"] + 1000
+    if pairs > most:
+        raise SceneError(path, None, f"expected at most {LIMITS['vertices_total']} [x, y] pairs in one scene, "
+                                     f"found about {pairs} (count of '[')")
     if fmt == "json":
         try:
-            data = json.loads(text)
+            data = json.loads(text, object_pairs_hook=_refuse_duplicates)
         except json.JSONDecodeError as error:
             raise SceneError(path, f"line {error.lineno}", f"not valid JSON: {error.msg}") from None
+        except _DuplicateKey as error:
+            raise SceneError(path, None, f"not valid JSON: expected each key once per object, "
+                                         f"found {error.key!r} twice") from None
         except RecursionError:
             raise SceneError(path, None, "not valid JSON: nested too deeply") from None
+        except ValueError as error:  # e.g. an integer of more than 4300 digits
+            raise SceneError(path, None, f"not valid JSON: {error}") from None
     else:
         try:
             data = tomllib.loads(text)
@@ -84,18 +127,30 @@ def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
             raise SceneError(path, where, f"not valid TOML: {message}") from None
         except RecursionError:
             raise SceneError(path, None, "not valid TOML: nested too deeply") from None
+        except ValueError as error:  # e.g. an integer of more than 4300 digits
+            raise SceneError(path, None, f"not valid TOML: {error}") from None
     return _Reader(path, text if fmt == "toml" else None).scene(data)
+
+
+def _short(value: Any) -> str:
+    """A repr short enough for a one-line message (huge integers included)."""
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**30:
+        return f"an integer of {len(str(abs(value))) if abs(value).bit_length() < 14000 else 'over 4000'} digits"
+    shown = repr(value)
+    return shown if len(shown) <= 40 else shown[:37] + "..."
 
 
 def _describe(value: Any) -> str:
     """How a found value reads in a message: its kind and a short repr."""
-    kinds = {bool: "a boolean", int: "a number", float: "a number", str: "a string",
-             list: "a list", dict: "a table", type(None): "null"}
+    kinds = {bool: "a boolean", int: "a number", float: "a number", str: "a string", type(None): "null"}
+    if isinstance(value, dict):
+        return f"a table of {len(value)} key{'s' * (len(value) != 1)}"
+    if isinstance(value, list):
+        if value and all(isinstance(v, dict) for v in value):
+            return f"an array of {len(value)} table{'s' * (len(value) != 1)}"
+        return f"a list of {len(value)} item{'s' * (len(value) != 1)}"
     kind = kinds.get(type(value), type(value).__name__)
-    shown = repr(value)
-    if len(shown) > 40:
-        shown = shown[:37] + "..."
-    return f"{kind} {shown}" if not isinstance(value, (list, dict)) else f"{kind} of {len(value)}"
+    return f"{kind} {_short(value)}"
 
 
 def _suggest(word: str, choices: tuple[str, ...] | list[str]) -> str:
@@ -130,11 +185,14 @@ class _Reader:
                what: str = "a number") -> float:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.fail(where, f"expected {what}, found {_describe(value)}")
-        number = float(value)
+        try:
+            number = float(value)
+        except OverflowError:  # an integer beyond float range
+            number = math.inf
         if not math.isfinite(number):
-            raise self.fail(where, f"expected a finite number, found {value!r}")
+            raise self.fail(where, f"expected {what} (finite), found {_short(value)}")
         if not low <= number <= high:
-            raise self.fail(where, f"expected {what} from {low:g} to {high:g}, found {value!r}")
+            raise self.fail(where, f"expected {what} from {low:g} to {high:g}, found {_short(value)}")
         return number
 
     def integer(self, value: Any, where: str, low: int, high: int, what: str) -> int:
@@ -144,7 +202,7 @@ class _Reader:
             else:
                 raise self.fail(where, f"expected {what}, found {_describe(value)}")
         if not low <= value <= high:
-            raise self.fail(where, f"expected {what} from {low} to {high}, found {value}")
+            raise self.fail(where, f"expected {what} from {low} to {high}, found {_short(value)}")
         return value
 
     def string(self, value: Any, where: str) -> str:
@@ -279,7 +337,7 @@ class _Reader:
         table = self.table(value, where, _KEY)
         if "time" not in table:
             raise self.fail(where, "expected a time (seconds), found none")
-        time = self.number(table["time"], f"{where}.time", 0.0, 1e7, "a time in seconds")
+        time = self.number(table["time"], f"{where}.time", 0.0, LIMITS["time"], "a time in seconds")
         if "points" not in table:
             raise self.fail(where, "expected points = [[x, y], ...], found none")
         points = self.points(table["points"], f"{where}.points")

@@ -41,7 +41,9 @@ def line_of(text: str, path: str) -> int | None:
                 counters[key] = counters.get(key, -1) + 1
                 table = list(parent) + [(names[-1], counters[key])]
             else:
-                table = [(n, None) for n in names]
+                # [shape.key] under [[shape]] belongs to the latest shape: inherit its index
+                table = [(n, table[i][1] if i < len(table) and table[i][0] == n else None)
+                         for i, n in enumerate(names)]
             if _matches(table, steps):
                 best = number
             continue

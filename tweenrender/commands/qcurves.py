@@ -1,0 +1,59 @@
+"""``tweenrender qcurves SCENE [--json] [-o PNG]``: Q-curves per vertex, motion class, auto's choice; a plot."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from ..errors import UsageError
+from ._args import print_json
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("qcurves", help="Q-curves of every vertex, the motion they show and auto's choice")
+    p.add_argument("scene", metavar="SCENE")
+    p.add_argument("--json", action="store_true", help="print the report as JSON")
+    p.add_argument("-o", "--output", metavar="PNG",
+                   help="where to draw the plot (default output/<stem>-qcurves.png)")
+    p.set_defaults(run=run)
+
+
+def _target(args: argparse.Namespace) -> Path:
+    if args.output is None:
+        return Path("output") / f"{Path(args.scene).stem}-qcurves.png"
+    target = Path(args.output)
+    if target.suffix.lower() != ".png":
+        raise UsageError(f"-o {target}: the plot is a PNG; give a name ending in .png")
+    return target
+
+
+def _plot(report: dict[str, Any], target: Path) -> Path:
+    """Draw the report's Q-curves and write them to ``target`` atomically."""
+    import imageio.v3 as iio
+
+    from ..encode.atomic import replacing
+    from ..render.qplot import report_picture
+
+    picture = report_picture(report)
+    with replacing(target, ".png", "the plot") as temporary:
+        iio.imwrite(temporary, picture, extension=".png")
+    return target
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..qreport import qcurves_dict, qcurves_text
+    from ..scenefile import load_scene
+
+    target = _target(args)
+    scene = load_scene(args.scene)
+    report = qcurves_dict(scene)
+    report["scene"] = args.scene
+    if args.json:
+        print_json(report)
+        if args.output is not None:
+            _plot(report, target)
+        return 0
+    print(qcurves_text(report))
+    print(_plot(report, target))
+    return 0

@@ -1,0 +1,65 @@
+"""``tweenrender reel SCENE... -o OUT``: a demo reel, a title card and a comparison per scene."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..errors import UsageError
+from ._args import fps, methods, size
+from ._overlays import MAX_ONION, count
+from .render import DEFAULT_MAX_FRAMES
+
+DEFAULT_SIZE = (1280, 720)
+DEFAULT_FPS = 24.0
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("reel", help="a demo reel: a title card and a comparison for each scene, one video")
+    p.add_argument("scene", nargs="+", metavar="SCENE")
+    p.add_argument("-o", "--output", metavar="OUT", default="output/reel.mp4",
+                   help="a .mp4, .webm or .gif file, or a folder of PNG frames (default output/reel.mp4)")
+    p.add_argument("--size", type=size, default=DEFAULT_SIZE, metavar="WxH",
+                   help="size of the whole reel (default 1280x720); comparisons are fitted inside")
+    p.add_argument("--fps", type=fps, default=DEFAULT_FPS, metavar="N", help="frame rate of the whole reel (default 24)")
+    p.add_argument("--methods", type=methods, metavar="M,M..",
+                   help="the panels of every comparison (default: each scene's compare list)")
+    p.add_argument("--onion", type=count(0, MAX_ONION, "--onion"), default=0, metavar="N",
+                   help="N ghosted inbetweens before and after each frame")
+    p.add_argument("--plain", action="store_true", help="no vertex paths and no perimeter strip")
+    p.add_argument("--max-frames", type=int, default=DEFAULT_MAX_FRAMES, metavar="N",
+                   help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(run=run)
+
+
+def _output_format(text: str) -> tuple[str, Path]:
+    from ..encode import FORMATS
+
+    target = Path(text)
+    suffix = target.suffix.lower().lstrip(".")
+    if suffix in FORMATS and suffix != "png":
+        return suffix, target
+    if suffix == "":
+        return "png", target
+    raise UsageError(f"-o {target}: cannot tell the format from .{suffix}; use a .mp4, .webm or .gif name, "
+                     "or a folder name without extension for PNG frames")
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..progress import ProgressBar
+    from ..reel import plan_reel, write_reel
+    from ..scenefile import load_scene
+
+    fmt, target = _output_format(args.output)
+    scenes = [load_scene(path) for path in args.scene]
+    names = [Path(path).stem for path in args.scene]
+    parts = plan_reel(scenes, names, args.size, args.fps, args.methods, paths=not args.plain,
+                      onion=args.onion, strip=not args.plain)
+    frames = sum(part.frames for part in parts)
+    if frames > args.max_frames:
+        raise UsageError(f"the reel would have {frames} frames, more than --max-frames {args.max_frames}; "
+                         "raise --max-frames to render it anyway")
+    bar = ProgressBar(target.name, enabled=False if args.quiet else None)
+    print(write_reel(parts, fmt, target, args.size, args.fps, bar))
+    return 0

@@ -1,0 +1,181 @@
+"""Frames drawn in worker processes, handed back in order; chunks rendered apart and joined.
+
+A frame is a pure function of (scene, methods, index), so any process can draw
+any frame. Two ways to spread the work, both through a
+``concurrent.futures.Executor`` (a ``ProcessPoolExecutor``, or a cluster's,
+e.g. ``dask.distributed.Client.get_executor()``):
+
+* :func:`frame_stream`: batches of frames are drawn by the executor and come
+  back in order to one sink in this process (a bounded number in flight, so
+  memory does not grow with the clip);
+* :func:`render_chunks`: each chunk of frames becomes a whole video part where
+  it is rendered (only the encoded bytes travel back), and the parts are joined
+  without re-encoding.
+
+skia holds the GIL while it draws, so threads do not help: use processes.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+import uuid
+from collections import deque
+from concurrent.futures import Executor, Future
+from dataclasses import replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Iterator
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .errors import RenderError, UsageError
+
+if TYPE_CHECKING:
+    from .pipeline import Frames, RenderJob
+
+__all__ = ["frame_stream", "draw_frame", "default_workers", "render_part", "render_chunks", "split_range"]
+
+# Below about this many pixels per clip, starting worker processes (≈0.3 s
+# each, importing skia) costs more than the drawing they would share.
+_MIN_PARALLEL_PIXELS = 200 * 1920 * 1080
+
+
+def draw_frame(frames: Frames, index: int) -> NDArray[np.uint8]:
+    """Frame ``index`` of ``frames``, with drawing failures reported as :class:`RenderError`."""
+    try:
+        return frames(index)
+    except (ValueError, FloatingPointError, RuntimeError, ZeroDivisionError) as error:
+        raise RenderError(f"frame {index}: {error}") from error
+
+
+def default_workers(job: RenderJob, fmt: str, cpus: int | None = None) -> int:
+    """How many processes to draw ``job``'s frames for ``fmt``: 1 unless it pays.
+
+    Video encoders (x264, VP9) already keep every core busy and drawing a frame
+    costs a fraction of encoding it, so a video gets one drawing process
+    whatever its size. PNG and GIF frames are cheap to encode relative to
+    drawing, so long, large renders of those get one process per spare core.
+    """
+    if cpus is None:
+        cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    width, height = job.frame_size
+    pixels = width * height * len(job.frame_range)
+    if fmt in ("mp4", "webm") or cpus < 2 or pixels < _MIN_PARALLEL_PIXELS:
+        return 1
+    return min(cpus, 8)
+
+
+def split_range(frames: range, parts: int) -> list[range]:
+    """``frames`` cut into ``parts`` consecutive, nearly equal, non-empty ranges (fewer if it is short)."""
+    parts = max(1, min(parts, len(frames)))
+    edges = np.linspace(0, len(frames), parts + 1).round().astype(int)
+    return [frames[a:b] for a, b in zip(edges[:-1], edges[1:]) if b > a]
+
+
+# One Frames per worker process, kept between batches of the same job: building
+# it (correspondence, view, surfaces) is paid once per process, not per batch.
+_cached: tuple[str, Frames] | None = None
+
+
+def _draw_batch(token: str, job: RenderJob, indices: range) -> NDArray[np.uint8]:
+    """Frames ``indices`` of ``job`` stacked as ``(len(indices), height, width, 4)`` straight RGBA."""
+    global _cached
+    from .pipeline import Frames
+
+    if _cached is None or _cached[0] != token:
+        _cached = (token, Frames(job))
+    frames = _cached[1]
+    out = np.empty((len(indices), *job.frame_size[::-1], 4), dtype=np.uint8)
+    for slot, index in enumerate(indices):
+        out[slot] = draw_frame(frames, index)
+    return out
+
+
+def frame_stream(job: RenderJob, executor: Executor | None = None, workers: int = 1,
+                 batch: int | None = None) -> Iterator[NDArray[np.uint8]]:
+    """``job``'s frames in order as straight RGBA ``(height, width, 4)``.
+
+    Drawn here when ``executor`` is None and ``workers`` ≤ 1 (each array then
+    reused by the next frame); otherwise in batches of ``batch`` frames on
+    ``executor`` (or on a pool of ``workers`` processes made for the occasion),
+    at most two batches per worker in flight.
+    """
+    indices = job.frame_range
+    if executor is None and workers <= 1:
+        from .pipeline import Frames
+
+        frames = Frames(job)
+        for index in indices:
+            yield draw_frame(frames, index)
+        return
+    own = executor is None
+    if executor is None:
+        from concurrent.futures import ProcessPoolExecutor
+
+        executor = ProcessPoolExecutor(max_workers=workers)
+    width, height = job.frame_size
+    # a batch of about 32 MB amortises a round trip without holding much memory
+    batch = batch or max(1, min(8, (32 << 20) // (width * height * 4)))
+    ahead = 2 * max(workers, 1)
+    token = uuid.uuid4().hex
+    pending: deque[Future[NDArray[np.uint8]]] = deque()
+    batches = iter(split_range(indices, -(-len(indices) // batch)))
+    try:
+        for chunk in batches:
+            pending.append(executor.submit(_draw_batch, token, job, chunk))
+            if len(pending) >= ahead:
+                break
+        while pending:
+            done = pending.popleft().result()
+            chunk = next(batches, None)
+            if chunk is not None:
+                pending.append(executor.submit(_draw_batch, token, job, chunk))
+            yield from done
+    finally:
+        for future in pending:
+            future.cancel()
+        if own:
+            executor.shutdown(wait=True, cancel_futures=True)
+
+
+def render_part(job: RenderJob, fmt: str) -> bytes:
+    """Render ``job`` (typically a ``frames`` chunk) to a ``fmt`` file where this runs; its bytes.
+
+    Meant to run on an executor's worker: only the encoded part travels back.
+    """
+    from .pipeline import render
+
+    with tempfile.TemporaryDirectory(prefix="tweenrender-part-") as folder:
+        path = Path(folder) / f"part.{fmt}"
+        render(job, fmt, path)
+        return path.read_bytes()
+
+
+def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, chunks: int) -> Path:
+    """Render ``job`` as ``chunks`` parts on ``executor`` and join them into ``target`` without re-encoding.
+
+    Parts are written beside ``target`` as hidden temporaries and removed after
+    the join; ``target`` changes only if every part and the join succeeded.
+    """
+    from .encode.atomic import discard, prepare_folder, sibling
+    from .encode.concat import CONCAT_FORMATS, concat
+
+    if fmt not in CONCAT_FORMATS:
+        raise UsageError(f"chunks can be joined for {' or '.join(CONCAT_FORMATS)} only, not {fmt}")
+    target = Path(target)
+    prepare_folder(target)
+    ranges = split_range(job.frame_range, chunks)
+    futures = [executor.submit(render_part, replace(job, frames=r), fmt) for r in ranges]
+    parts: list[Path] = []
+    try:
+        for future in futures:
+            part = sibling(target, f".{len(parts):04d}.{fmt}")
+            parts.append(part)
+            part.write_bytes(future.result())
+        return concat(parts, target, expected=len(job.frame_range))
+    finally:
+        for future in futures:
+            future.cancel()
+        for part in parts:
+            discard(part)

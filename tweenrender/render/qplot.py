@@ -162,12 +162,18 @@ def _plot_area(p: _Painter, m: _Map, panel: QPanel, labels: bool, size: float) -
         p.square(pix[i, 2], 3.2, color)
         p.dot(pix[i, 0], 4.0, color)
     if labels:
+        placed: list[tuple[float, float, float]] = []  # (x, baseline, width) of labels drawn
+        line = (size + 2) * p.scale
         for group in _groups(pix, 3.0 * p.scale):
             first = group[0]
-            at = pix[first, 0]
-            words = ",".join(map(str, group)) if len(group) < 6 else f"{group[0]}..{group[-1]}"
-            p.text(words, at[0] + 7 * p.scale, at[1] - 6 * p.scale, size,
-                   PALETTE[first % len(PALETTE)], bold=True)
+            words = ",".join(map(str, group[:5])) + (f"… (+{len(group) - 5})" if len(group) > 5 else "")
+            x, y = pix[first, 0, 0] + 7 * p.scale, pix[first, 0, 1] - 6 * p.scale
+            width = font(size * p.scale, True).measureText(words)
+            # Labels of curves that start close together stack downwards instead of overprinting.
+            while any(abs(y - b) < line and x < bx + bw and bx < x + width for bx, b, bw in placed):
+                y += line
+            placed.append((x, y, width))
+            p.text(words, x, y, size, PALETTE[first % len(PALETTE)], bold=True)
     c.restore()
     p.stroke.setColor(paint_color(_FRAME))
     p.stroke.setStrokeWidth(1.0)

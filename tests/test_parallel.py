@@ -132,9 +132,21 @@ def test_default_workers() -> None:
 
 
 def test_cli_workers(cli, tmp_path: Path) -> None:
+    import imageio.v3 as iio
+
     scene = write_scene(tmp_path, SMALL)
-    code, out, err = cli("render", scene, "-o", tmp_path / "frames", "-q", "--workers", "2")
-    assert code == 0, err
-    assert sorted(p.name for p in (tmp_path / "frames").iterdir()) == [f"frame_{i:04d}.png" for i in range(25)]
+    for workers in ("1", "2"):
+        code, out, err = cli("render", scene, "-o", tmp_path / f"frames{workers}", "-q", "--workers", workers)
+        assert code == 0, err
+    names = [f"frame_{i:04d}.png" for i in range(25)]
+    assert sorted(p.name for p in (tmp_path / "frames2").iterdir()) == names
+    for name in names:  # compressed in the workers, the same pictures
+        assert np.array_equal(iio.imread(tmp_path / "frames1" / name), iio.imread(tmp_path / "frames2" / name))
+    first = iio.imread(tmp_path / "frames2" / names[0])
+    # the 2×2 square at 160/12 = 13.33 px per unit (view 12 × 9 units in 160×120): 711 px, between
+    # the pixels it fully covers and those it touches at all (one ring of antialiased edge)
+    side = 2 * 160 / 12
+    full, touched = _blue(first).sum(), (first[..., :3] != 255).any(axis=-1).sum()
+    assert full <= side**2 <= touched and touched - full <= 4 * (side + 2)
     code, _, err = cli("render", scene, "-o", tmp_path / "x.mp4", "--workers", "0")
     assert code == 2 and "--workers" in err

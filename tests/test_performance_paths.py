@@ -174,3 +174,20 @@ def test_numba_is_imported_only_for_keys_of_different_counts(tmp_path: Path) -> 
     differ = write_scene(tmp_path, SQUARE.replace("[[7, 1], [7, 3], [5, 3], [5, 1]]",
                                                   "[[7, 1], [7, 3], [6, 4], [5, 3], [5, 1]]"))
     assert "numba" in _imported_after("check", "--json", str(differ))
+
+
+@pytest.mark.parametrize("fmt", ["mp4", "gif"])
+def test_probe_reads_frame_count_and_size_in_one_pass(tmp_path: Path, fmt: str) -> None:
+    from tweenrender.encode import open_sink
+    from tweenrender.encode.sinks import probe_video
+
+    target = tmp_path / f"probe.{fmt}"
+    sink = open_sink(fmt, target, 66, 40, 10, 7)
+    for shade in range(7):
+        sink.write(np.full((40, 66, 4), (30 * shade, 90, 200, 255), dtype=np.uint8))
+    sink.close()
+    _, frames = decode(target)
+    assert len(frames) == 7 and frames[0].shape == (40, 66, 3)  # what a decoder sees
+    assert probe_video(target) == (7, (66, 40))
+    with pytest.raises(ValueError):
+        probe_video(write_scene(tmp_path, "not a video", "fake.mp4"))

@@ -7,8 +7,10 @@ Commands live in :mod:`tweenrender.commands`, one module each.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import signal
 import sys
-from typing import Sequence
+from typing import Iterator, Sequence
 
 from .commands import register_all
 from .errors import TweenrenderError, UsageError
@@ -37,7 +39,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         return _interrupted()
     try:
-        return args.run(args)
+        with _terminate_cleanly():
+            return args.run(args)
     except KeyboardInterrupt:
         return _interrupted()
     except BrokenPipeError:
@@ -53,6 +56,27 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"tweenrender: error: unexpected {type(error).__name__}: {_one_line(str(error))} "
               "(run with -v for details)", file=sys.stderr)
         return 1
+
+
+@contextlib.contextmanager
+def _terminate_cleanly() -> Iterator[None]:
+    """Turn SIGTERM (``kill``, ``timeout``, a container stopping) into ``SystemExit(143)``.
+
+    Python's default SIGTERM ends the process on the spot; as an exception it
+    unwinds through the sinks, which remove their temporaries.
+    """
+    def stop(signum: int, frame: object) -> None:
+        raise SystemExit(128 + signum)
+
+    try:
+        previous = signal.signal(signal.SIGTERM, stop)
+    except ValueError:  # not the main thread: leave signals alone
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _interrupted() -> int:

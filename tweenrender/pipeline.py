@@ -148,17 +148,24 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
 
     Frames stream one at a time into the sink, so memory does not grow with the
     clip. They are drawn here, or on ``executor`` (any
-    ``concurrent.futures.Executor``) or ``workers`` processes, and written in order.
+    ``concurrent.futures.Executor``) or ``workers`` processes, and written in
+    order; PNG frames drawn elsewhere are compressed there too.
     """
     from .encode import open_sink
+    from .encode.sinks import png_bytes
     from .parallel import frame_stream
 
     indices = job.frame_range
     width, height = job.frame_size
     sink = open_sink(fmt, target, width, height, job.rate, len(indices))
+    elsewhere = fmt == "png" and (executor is not None or workers > 1)
     try:
-        for done, picture in enumerate(frame_stream(job, executor, workers), start=1):
-            sink.write(picture)
+        stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None)
+        for done, picture in enumerate(stream, start=1):
+            if elsewhere:
+                sink.write_encoded(picture)  # type: ignore[attr-defined]
+            else:
+                sink.write(picture)
             if progress is not None:
                 progress(done, len(indices))
         return sink.close()

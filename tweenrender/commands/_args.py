@@ -9,7 +9,7 @@ from typing import Any
 from ..errors import UsageError
 from ..model import METHODS
 
-__all__ = ["methods", "size", "fps", "times", "print_json"]
+__all__ = ["method", "methods", "size", "fps", "times", "print_json", "not_an_input"]
 
 
 def methods(text: str) -> tuple[str, ...]:
@@ -24,6 +24,15 @@ def methods(text: str) -> tuple[str, ...]:
     if not names:
         raise UsageError("expected at least one method name")
     return names
+
+
+def method(text: str) -> str:
+    """One method name (``--method``), with a "did you mean" for a misspelt one."""
+    names = methods(text)
+    if len(names) != 1:
+        raise UsageError(f"--method: expected one method, found {len(names)} ({text}); "
+                         "use --compare for several")
+    return names[0]
 
 
 def size(text: str) -> tuple[int, int]:
@@ -65,3 +74,16 @@ def times(text: str) -> list[float]:
 def print_json(data: Any) -> None:
     json.dump(data, sys.stdout, indent=2)
     sys.stdout.write("\n")
+
+
+def not_an_input(target: Any, *inputs: Any) -> None:
+    """Refuse an output path that is one of the ``inputs`` (``-o scene.toml`` would replace the scene)."""
+    import os
+
+    for source in inputs:
+        try:
+            same = os.path.samefile(target, source)
+        except OSError:  # either does not exist (yet): they cannot be the same file
+            continue
+        if same:
+            raise UsageError(f"-o {target}: is the input {source}; choose another output")

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ._args import fps, methods, size
+from ._matching import add_matching_flags, with_matching
 from ._overlays import MAX_ONION, count
 from .render import DEFAULT_MAX_FRAMES
 
@@ -26,6 +27,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="the panels of every comparison (default: each scene's compare list)")
     p.add_argument("--onion", type=count(0, MAX_ONION, "--onion"), default=0, metavar="N",
                    help="N ghosted inbetweens before and after each frame")
+    add_matching_flags(p)
     p.add_argument("--plain", action="store_true", help="no vertex paths and no perimeter strip")
     p.add_argument("--max-frames", type=int, default=DEFAULT_MAX_FRAMES, metavar="N",
                    help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")
@@ -52,7 +54,7 @@ def run(args: argparse.Namespace) -> int:
     from ..scenefile import load_scene
 
     fmt, target = _output_format(args.output)
-    scenes = [load_scene(path) for path in args.scene]
+    scenes = [with_matching(load_scene(path), args) for path in args.scene]
     names = [Path(path).stem for path in args.scene]
     parts = plan_reel(scenes, names, args.size, args.fps, args.methods, paths=not args.plain,
                       onion=args.onion, strip=not args.plain)

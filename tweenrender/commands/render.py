@@ -7,7 +7,8 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..model import METHODS
-from ._args import fps, methods, size
+from ._args import fps, method, methods, not_an_input, size
+from ._matching import add_matching_flags, with_matching
 from ._overlays import add_overlay_flags
 
 DEFAULT_MAX_FRAMES = 100_000
@@ -26,6 +27,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--fps", type=fps, metavar="N")
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")
     add_overlay_flags(p)
+    add_matching_flags(p)
     p.add_argument("--max-frames", type=int, default=DEFAULT_MAX_FRAMES, metavar="N",
                    help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")
     p.add_argument("--workers", type=_workers, metavar="N",
@@ -71,14 +73,15 @@ def run(args: argparse.Namespace) -> int:
     from ..progress import ProgressBar
     from ..scenefile import LIMITS, load_scene
 
-    scene = load_scene(args.scene)
+    scene = with_matching(load_scene(args.scene), args)
     fmt, target = _output_format(args)
+    not_an_input(target, args.scene)
     if args.compare is not None:
         panels: tuple[str | None, ...] = methods(args.compare) if args.compare else scene.compare
         if args.method:
             raise UsageError("--method and --compare do not go together: list the methods in --compare")
     else:
-        panels = (methods(args.method)[0],) if args.method else (None,)
+        panels = (method(args.method),) if args.method else (None,)
     rate = args.fps or scene.fps
     total = total_frames(scene, rate)
     frames = parse_frames(args.frames, total) if args.frames else range(total)

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ._args import methods, size
+from ._matching import add_matching_flags, with_matching
 from ._overlays import count
 
 DEFAULT_COUNT = 7
@@ -23,6 +24,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--size", type=size, metavar="WxH",
                    help="size of the whole sheet (default 1280 wide, rows as tall as the view asks)")
     p.add_argument("--paths", action="store_true", help="draw every vertex's path behind the outlines")
+    add_matching_flags(p)
     p.set_defaults(run=run)
 
 
@@ -31,7 +33,7 @@ def run(args: argparse.Namespace) -> int:
     from ..scenefile import load_scene
     from ..sheet import write_sheet
 
-    scene = load_scene(args.scene)
+    scene = with_matching(load_scene(args.scene), args)
     rows = args.methods or scene.compare
     target = Path(args.output) if args.output else Path("output") / f"{Path(args.scene).stem}-sheet.png"
     if target.suffix.lower() != ".png":

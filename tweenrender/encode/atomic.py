@@ -54,9 +54,17 @@ def sweep(target: Path) -> list[Path]:
         return removed
     for entry in entries:
         match = pattern.fullmatch(entry.name)
-        if match and not _alive(int(match.group(1))):
-            discard(entry)
-            removed.append(entry)
+        if not match or _alive(int(match.group(1))):
+            continue
+        if match.group(2) == ".old" and not target.exists():
+            # killed between commit_folder's two renames: this is the earlier output, put it back
+            try:
+                os.replace(entry, target)
+                continue
+            except OSError:
+                pass
+        discard(entry)
+        removed.append(entry)
     return removed
 
 

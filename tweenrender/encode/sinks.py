@@ -18,7 +18,7 @@ from ..errors import EncodeError, UsageError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 
 __all__ = ["FORMATS", "PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
-           "ffmpeg_command"]
+           "ffmpeg_command", "png_bytes"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
 """Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout."""
@@ -83,6 +83,17 @@ def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, o
             "-i", source, "-an", *_CODECS[fmt], output]
 
 
+def png_bytes(rgba: NDArray[np.uint8]) -> bytes:
+    """One straight-RGBA frame ``(height, width, 4)`` as the bytes of a PNG file.
+
+    Compressing a 1080p frame costs several times drawing it, and the encoder
+    holds the GIL, so parallel PNG renders do this in the drawing processes.
+    """
+    import imageio.v3 as iio
+
+    return iio.imwrite("<bytes>", rgba, extension=".png")
+
+
 class PngSequence:
     """A folder of ``frame_0000.png …`` built beside ``target`` and swapped in when complete."""
 
@@ -98,11 +109,14 @@ class PngSequence:
         self.digits = max(4, len(str(max(frames - 1, 0))))
 
     def write(self, rgba: NDArray[np.uint8]) -> None:
-        import imageio.v3 as iio
+        """Take one straight-RGBA frame ``(height, width, 4)``."""
+        self.write_encoded(png_bytes(rgba))
 
+    def write_encoded(self, data: bytes) -> None:
+        """Take one frame already encoded by :func:`png_bytes` (e.g. in the process that drew it)."""
         name = self.temporary / f"frame_{self.count:0{self.digits}d}.png"
         try:
-            iio.imwrite(name, rgba, extension=".png")
+            name.write_bytes(data)
         except OSError as error:
             self.abort()
             raise EncodeError(f"{self.target}: cannot write {name.name} ({os_reason(error)})") from None

@@ -20,7 +20,7 @@ import numpy as np
 from ..errors import SceneError
 from ..model import (ALIGNS, COSTS, EASES, METHODS, Color, Key, Matching, Scene, Shape,
                      frozen_points)
-from .locate import line_of
+from .locate import json_line_of, line_of
 
 __all__ = ["load_scene", "parse_scene", "LIMITS"]
 
@@ -33,6 +33,10 @@ LIMITS = {
     "file_bytes": 16 << 20,
     "vertices_total": 1_000_000,  # [x, y] pairs in one file, every key together
     "vertices": 200_000,   # per key
+    # keys of different vertex counts m, n are matched in O(mn log n) (distance) or O(27 m n²) (sg)
+    # steps: these caps keep one segment's correspondence to seconds (about 1.5 s and 7 s here)
+    "match_cells": 25_000_000,    # m·n, cost "distance"
+    "match_sg": 100_000_000,      # m·n·max(m, n), cost "sg"
 }
 
 _TOP = ("title", "size", "fps", "background", "view", "method", "compare", "correspondence", "shape")
@@ -129,7 +133,7 @@ def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
             raise SceneError(path, None, "not valid TOML: nested too deeply") from None
         except ValueError as error:  # e.g. an integer of more than 4300 digits
             raise SceneError(path, None, f"not valid TOML: {error}") from None
-    return _Reader(path, text if fmt == "toml" else None).scene(data)
+    return _Reader(path, text, fmt).scene(data)
 
 
 def _short(value: Any) -> str:
@@ -161,12 +165,13 @@ def _suggest(word: str, choices: tuple[str, ...] | list[str]) -> str:
 class _Reader:
     """Validates one parsed document; knows where it came from for messages."""
 
-    def __init__(self, path: Path, toml_text: str | None) -> None:
+    def __init__(self, path: Path, text: str, fmt: str) -> None:
         self.path = path
-        self.text = toml_text
+        self.text = text
+        self.locate = json_line_of if fmt == "json" else line_of
 
     def fail(self, where: str, message: str) -> SceneError:
-        line = line_of(self.text, where) if self.text is not None and where else None
+        line = self.locate(self.text, where) if where else None
         place = f"{where} (line {line})" if line else where
         return SceneError(self.path, place or None, message)
 
@@ -177,7 +182,7 @@ class _Reader:
         for key in value:
             if key not in allowed:
                 at = f"{where}.{key}" if where else str(key)
-                raise self.fail(at, f"unknown key {key!r}{_suggest(str(key), allowed)}; "
+                raise self.fail(at, f"unknown key {_short(key)}{_suggest(str(key), allowed)}; "
                                     f"expected one of {', '.join(allowed)}")
         return value
 
@@ -213,7 +218,7 @@ class _Reader:
     def choice(self, value: Any, where: str, choices: tuple[str, ...], what: str) -> str:
         word = self.string(value, where)
         if word not in choices:
-            raise self.fail(where, f"unknown {what} {word!r}{_suggest(word, choices)}; "
+            raise self.fail(where, f"unknown {what} {_short(word)}{_suggest(word, choices)}; "
                                    f"expected one of {', '.join(choices)}")
         return word
 
@@ -233,7 +238,7 @@ class _Reader:
         if "size" in top:
             pair = self.listing(top["size"], "size", "[width, height] in pixels")
             if len(pair) != 2:
-                raise self.fail("size", f"expected [width, height] in pixels, found a list of {len(pair)}")
+                raise self.fail("size", f"expected [width, height] in pixels, found {_describe(pair)}")
             size = (self.integer(pair[0], "size[0]", 1, canvas, "a width in pixels"),
                     self.integer(pair[1], "size[1]", 1, canvas, "a height in pixels"))
         low, high = LIMITS["fps"]
@@ -251,7 +256,7 @@ class _Reader:
         names: dict[str, int] = {}
         for i, shape in enumerate(shapes):
             if shape.name in names:
-                raise self.fail(f"shape[{i}].name", f"expected a unique name, found {shape.name!r} "
+                raise self.fail(f"shape[{i}].name", f"expected a unique name, found {_short(shape.name)} "
                                                     f"again (also shape[{names[shape.name]}])")
             names[shape.name] = i
         method = self.choice(top.get("method", "nonlinear"), "method", METHODS, "method")
@@ -266,14 +271,31 @@ class _Reader:
                 raise self.fail(f"shape[{i}].method", "method 'jointed' needs joints = [[a, b], ...], found none")
         title = self.string(top["title"], "title") if "title" in top else None
         background = self.color(top.get("background", "#ffffff"), "background")
+        matching = self.matching(top.get("correspondence", {}))
+        self.matching_effort(shapes, matching.cost)
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
-                     method=method, compare=compare, matching=self.matching(top.get("correspondence", {})),
-                     path=self.path)
+                     method=method, compare=compare, matching=matching, path=self.path)
+
+    def matching_effort(self, shapes: tuple[Shape, ...], cost: str) -> None:
+        """Refuse key pairs whose correspondence search would run for minutes (see ``LIMITS``)."""
+        for i, shape in enumerate(shapes):
+            for k in range(1, len(shape.keys)):
+                m, n = len(shape.keys[k - 1].points), len(shape.keys[k].points)
+                if m == n:
+                    continue  # equal counts keep the drawn order: no search
+                effort, limit = (m * n * max(m, n), LIMITS["match_sg"]) if cost == "sg" else \
+                                (m * n, LIMITS["match_cells"])
+                if effort > limit:
+                    raise self.fail(f"shape[{i}].key[{k}].points",
+                                    f"expected keys the {cost!r} correspondence can match in seconds "
+                                    f"(a size of at most {limit:.0e}), found {m} vertices then {n} "
+                                    f"(size {effort:.1e}); use fewer vertices, equal counts"
+                                    + (", or cost = \"distance\"" if cost == "sg" else ""))
 
     def view(self, value: Any) -> tuple[float, float, float, float]:
         box = self.listing(value, "view", "[xmin, ymin, xmax, ymax]")
         if len(box) != 4:
-            raise self.fail("view", f"expected [xmin, ymin, xmax, ymax], found a list of {len(box)}")
+            raise self.fail("view", f"expected [xmin, ymin, xmax, ymax], found {_describe(box)}")
         limit = LIMITS["coordinate"]
         x0, y0, x1, y1 = (self.number(v, f"view[{i}]", -limit, limit, "a coordinate") for i, v in enumerate(box))
         if not (x1 > x0 and y1 > y0):
@@ -324,7 +346,7 @@ class _Reader:
         for i, item in enumerate(items):
             pair = self.listing(item, f"{where}[{i}]", "an [a, b] vertex index pair")
             if len(pair) != 2:
-                raise self.fail(f"{where}[{i}]", f"expected an [a, b] vertex index pair, found a list of {len(pair)}")
+                raise self.fail(f"{where}[{i}]", f"expected an [a, b] vertex index pair, found {_describe(pair)}")
             joints.append(tuple(self.integer(v, f"{where}[{i}][{j}]", 0, vertices - 1,
                                              "a vertex index of the first key") for j, v in enumerate(pair)))
         try:
@@ -388,7 +410,7 @@ def parse_color(text: str, fail: Callable[[str], Exception]) -> Color:
     """``#rgb``, ``#rrggbb`` or ``#rrggbbaa`` → straight RGBA 0..255."""
     digits = text[1:] if text.startswith("#") else None
     if digits is None or len(digits) not in (3, 6, 8) or any(c not in "0123456789abcdefABCDEF" for c in digits):
-        raise fail(f"expected a colour #rgb, #rrggbb or #rrggbbaa, found {text!r}")
+        raise fail(f"expected a colour #rgb, #rrggbb or #rrggbbaa, found {_short(text)}")
     if len(digits) == 3:
         digits = "".join(c * 2 for c in digits)
     if len(digits) == 6:

@@ -1,16 +1,18 @@
-"""Find the line of a key path (``shape[1].key[0].points``) in a TOML scene's text.
+"""Find the line of a key path (``shape[1].key[0].points``) in a TOML or JSON scene's text.
 
 tomllib keeps no positions, so the locator walks the table headers the way a
 reader would: ``[[shape]]`` opens the next shape, ``[[shape.key]]`` the next key
 of that shape. It finds what a conventional file holds; for anything it cannot
 place (inline tables, arrays of tables written inline) it answers ``None``.
+JSON is walked along the path with the json module's own scanner.
 """
 
 from __future__ import annotations
 
+import json
 import re
 
-__all__ = ["line_of"]
+__all__ = ["line_of", "json_line_of"]
 
 _HEADER = re.compile(r"^\s*(\[\[?)\s*([A-Za-z0-9_.\-\" ]+?)\s*\]\]?\s*(#.*)?$")
 _KEY = re.compile(r"^\s*([A-Za-z0-9_\-]+|\"[^\"]*\")\s*=")
@@ -59,3 +61,54 @@ def _matches(table: list[tuple[str, int | None]], steps: list[tuple[str, int | N
     if len(table) != len(steps):
         return False
     return all(n == s and (si is None or ti == si) for (n, ti), (s, si) in zip(table, steps))
+
+
+_SPACE = re.compile(r"[ \t\n\r]*")
+_DECODER = json.JSONDecoder()
+
+
+def json_line_of(text: str, path: str) -> int | None:
+    """1-based line where ``path``'s value (or, for a key the document lacks, its object) starts in JSON ``text``."""
+    try:
+        return _json_line(text, _parse_path(path))
+    except (ValueError, IndexError, RecursionError):
+        return None
+
+
+def _json_line(text: str, steps: list[tuple[str, int | None]]) -> int | None:
+    at = _SPACE.match(text, 0).end()  # type: ignore[union-attr]
+    hops: list[str | int] = []
+    for name, index in steps:
+        hops.append(name)
+        if index is not None:
+            hops.append(index)
+    for hop in hops:
+        found = _json_child(text, at, hop)
+        if found is None:
+            break
+        at = found
+    return text.count("\n", 0, at) + 1
+
+
+def _json_child(text: str, at: int, hop: str | int) -> int | None:
+    """Where the value of key or index ``hop`` starts in the object or array at ``at``, or None."""
+    opening = text[at]
+    if (opening == "{") != isinstance(hop, str) or opening not in "{[":
+        return None
+    at = _SPACE.match(text, at + 1).end()  # type: ignore[union-attr]
+    count = 0
+    while text[at] not in "}]":
+        if opening == "{":
+            key, at = json.decoder.scanstring(text, at + 1)
+            at = _SPACE.match(text, at).end() + 1  # type: ignore[union-attr]  # past the colon
+            at = _SPACE.match(text, at).end()  # type: ignore[union-attr]
+            if key == hop:
+                return at
+        elif count == hop:
+            return at
+        _, at = _DECODER.raw_decode(text, at)
+        at = _SPACE.match(text, at).end()  # type: ignore[union-attr]
+        if text[at] == ",":
+            at = _SPACE.match(text, at + 1).end()  # type: ignore[union-attr]
+        count += 1
+    return None

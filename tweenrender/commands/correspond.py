@@ -1,0 +1,63 @@
+"""``tweenrender correspond SCENE [--json] [-o PNG] [--cost C] [--align A]``: vertex pairs, work, a picture."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from ..errors import UsageError
+from ..model import Scene
+from ._args import print_json
+from ._matching import add_matching_flags, matching_of
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("correspond", help="the vertex correspondence of each segment: pairs, balanced "
+                                          "count, work; a picture")
+    p.add_argument("scene", metavar="SCENE")
+    p.add_argument("--json", action="store_true", help="print the report as JSON (the picture only with -o)")
+    p.add_argument("-o", "--output", metavar="PNG",
+                   help="where to draw the picture (default output/<stem>-correspond.png)")
+    add_matching_flags(p)
+    p.set_defaults(run=run)
+
+
+def _target(args: argparse.Namespace) -> Path:
+    if args.output is None:
+        return Path("output") / f"{Path(args.scene).stem}-correspond.png"
+    target = Path(args.output)
+    if target.suffix.lower() != ".png":
+        raise UsageError(f"-o {target}: the picture is a PNG; give a name ending in .png")
+    return target
+
+
+def _draw(scene: Scene, report: dict[str, Any], target: Path) -> Path:
+    """Draw the report's pairs and write the picture to ``target`` atomically."""
+    import imageio.v3 as iio
+
+    from ..encode.atomic import replacing
+    from ..render.corrplot import report_picture
+
+    picture = report_picture(scene, report)
+    with replacing(target, ".png", "the picture") as temporary:
+        iio.imwrite(temporary, picture, extension=".png")
+    return target
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..creport import correspond_dict, correspond_text
+    from ..scenefile import load_scene
+
+    target = _target(args)
+    scene = load_scene(args.scene)
+    report = correspond_dict(scene, matching_of(scene, args))
+    report["scene"] = args.scene
+    if args.json:
+        print_json(report)
+        if args.output is not None:
+            _draw(scene, report, target)
+        return 0
+    print(correspond_text(report))
+    print(_draw(scene, report, target))
+    return 0

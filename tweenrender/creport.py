@@ -1,0 +1,120 @@
+"""The ``correspond`` report: per shape and segment, the vertex pairs the renderer uses and their work.
+
+Built on :func:`core.timeline.build_track`, so the pairs are exactly those the
+frames are drawn with: the least-work path where the two keys' vertex counts
+differ, the drawn order (vertex i with vertex i) where they agree. For the
+drawn order the optimum's work is reported too (``minimal_work``), so a user
+can see how far the animator's own correspondence is from the least-work one.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .core.correspond import correspond, path_work
+from .core.timeline import build_track
+from .model import Matching, Scene
+
+__all__ = ["MINIMAL", "DRAWN", "inserted", "correspond_dict", "entry_line", "correspond_text",
+           "matching_words"]
+
+MINIMAL = "minimal work"
+DRAWN = "drawn order"
+
+
+def inserted(indices: NDArray[np.intp], count: int) -> list[int]:
+    """Vertices of a ``count``-vertex key duplicated by a path column ``indices (L,)``.
+
+    Each vertex appears once per extra copy, in index order, so the list has
+    ``L - count`` entries: ``[3, 7, 7]`` is vertex 3 twice and vertex 7 three times.
+    """
+    copies = np.bincount(np.asarray(indices), minlength=count)
+    return [int(i) for i in np.repeat(np.arange(count), np.maximum(copies - 1, 0))]
+
+
+def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str, Any]:
+    """DESIGN.md's ``correspond --json``: one entry per shape and segment (static shapes have none).
+
+    ``matching`` defaults to the scene's ``[correspondence]``. ``work`` is the
+    cost of the reported ``pairs`` under it (the sum of ``|A_i - B_j|`` after the
+    alignment, or the S&G energy); ``minimal_work`` is the least cost any closed
+    monotone path reaches. Where the drawn order is kept, ``minimal_pairs`` and
+    ``minimal_reversed`` give that least-cost path too (the renderer does not use it).
+    """
+    matching = matching or scene.matching
+    shapes = []
+    for shape in scene.shapes:
+        track = build_track(shape, matching)
+        for index, segment in enumerate(track.segments):
+            a, b = shape.keys[index].points, shape.keys[index + 1].points
+            found = segment.correspondence
+            if found is None:  # equal counts: the renderer keeps the animator's order
+                pairs = np.column_stack([np.arange(len(a)), np.arange(len(b))]).astype(np.intp)
+                work, reversed_, matched = path_work(a, b, pairs, matching), False, DRAWN
+                best = correspond(a, b, matching)
+                minimal, extra = best.work, {"minimal_pairs": best.pairs.tolist(),
+                                             "minimal_reversed": best.reversed}
+            else:
+                pairs, work, reversed_, matched = found.pairs, found.work, found.reversed, MINIMAL
+                minimal, extra = found.work, {}
+            shapes.append({
+                "name": shape.name,
+                "segment": index,
+                "times": [segment.start, segment.end],
+                "counts": [len(a), len(b)],
+                "balanced": int(len(pairs)),
+                "work": float(work),
+                "minimal_work": float(minimal),
+                "cost": matching.cost,
+                "align": matching.align,
+                "reversed": bool(reversed_),
+                "matched": matched,
+                "inserted": {"a": inserted(pairs[:, 0], len(a)), "b": inserted(pairs[:, 1], len(b))},
+                "pairs": pairs.tolist(),
+                **extra,
+            })
+    return {"scene": str(scene.path) if scene.path else None, "cost": matching.cost,
+            "align": matching.align, "shapes": shapes}
+
+
+def matching_words(cost: str, align: str) -> str:
+    """``"distance, centroid-aligned"`` or ``"sg, as placed"``."""
+    return f"{cost}, {'centroid-aligned' if align == 'centroid' else 'as placed'}"
+
+
+def _indices(values: list[int]) -> str:
+    """``[3, 7, 7]`` → ``"3, 7 ×3"`` (a vertex listed k times has k + 1 copies)."""
+    if not values:
+        return "none"
+    counts: dict[int, int] = {}
+    for v in values:
+        counts[v] = counts.get(v, 0) + 1
+    return ", ".join(str(v) if k == 1 else f"{v} ×{k + 1}" for v, k in counts.items())
+
+
+def entry_line(entry: dict[str, Any]) -> str:
+    """One line per shape segment: counts, balance, work, and where vertices were inserted."""
+    m, n = entry["counts"]
+    how = matching_words(entry["cost"], entry["align"])
+    line = f"{entry['name']}, segment {entry['segment']}: {m} → {n} vertices, "
+    if entry["matched"] == DRAWN:
+        line += (f"drawn order kept ({m} pairs), work {entry['work']:.4g} ({how}); "
+                 f"least-work path would cost {entry['minimal_work']:.4g}")
+        return line
+    line += f"balanced to {entry['balanced']}, work {entry['work']:.4g} ({how})"
+    if entry["reversed"]:
+        line += ", second key walked backwards"
+    ins = entry["inserted"]
+    return line + f"; vertices inserted: a: {_indices(ins['a'])}; b: {_indices(ins['b'])}"
+
+
+def correspond_text(report: dict[str, Any]) -> str:
+    """The report as text: the scene, then one line per shape and segment."""
+    lines = [f"{report['scene']}"]
+    lines += [entry_line(entry) for entry in report["shapes"]]
+    if not report["shapes"]:
+        lines.append("no shape has two keys: nothing to put in correspondence")
+    return "\n".join(lines)

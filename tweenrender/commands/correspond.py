@@ -34,15 +34,11 @@ def _target(args: argparse.Namespace) -> Path:
 
 def _draw(scene: Scene, report: dict[str, Any], target: Path) -> Path:
     """Draw the report's pairs and write the picture to ``target`` atomically."""
-    import imageio.v3 as iio
-
-    from ..encode.atomic import replacing
+    from ..encode.images import write_png
     from ..render.corrplot import report_picture
 
     picture = report_picture(scene, report)
-    with replacing(target, ".png", "the picture") as temporary:
-        iio.imwrite(temporary, picture, extension=".png")
-    return target
+    return write_png(picture, target, "the picture")
 
 
 def run(args: argparse.Namespace) -> int:

@@ -30,15 +30,11 @@ def _target(args: argparse.Namespace) -> Path:
 
 def _plot(report: dict[str, Any], target: Path) -> Path:
     """Draw the report's Q-curves and write them to ``target`` atomically."""
-    import imageio.v3 as iio
-
-    from ..encode.atomic import replacing
+    from ..encode.images import write_png
     from ..render.qplot import report_picture
 
     picture = report_picture(report)
-    with replacing(target, ".png", "the plot") as temporary:
-        iio.imwrite(temporary, picture, extension=".png")
-    return target
+    return write_png(picture, target, "the plot")
 
 
 def run(args: argparse.Namespace) -> int:

@@ -17,7 +17,7 @@ import skia
 from numpy.typing import NDArray
 
 from ..model import Color, Scene
-from .fonts import font
+from .fonts import font, wrap
 from .raster import Raster, paint_color
 from .view import Viewport
 
@@ -58,23 +58,6 @@ def placed_apart(a: NDArray[np.float64], b: NDArray[np.float64]) -> tuple[NDArra
     return b + np.array([shift, 0.0]), shift
 
 
-def _wrap(words: str, size: float, width: float) -> list[str]:
-    """``words`` broken at spaces into lines no wider than ``width`` pixels at ``size``."""
-    face = font(size)
-    lines: list[str] = []
-    for paragraph in words.split("\n"):
-        line = ""
-        for word in paragraph.split(" "):
-            trial = f"{line} {word}" if line else word
-            if line and face.measureText(trial) > width:
-                lines.append(line)
-                line = word
-            else:
-                line = trial
-        lines.append(line)
-    return lines
-
-
 @dataclass(frozen=True, slots=True)
 class _Layout:
     """A panel's header lines and the pixel size of its drawing area."""
@@ -89,7 +72,7 @@ class _Layout:
 def _layout(panel: CPanel, width: float, s: float) -> _Layout:
     b, shift = placed_apart(panel.a, panel.b)
     note = f"keys overlap: the second is drawn {shift:.3g} units to the right" if shift else ""
-    lines = _wrap(panel.subtitle, 12 * s, width - 28 * s)
+    lines = wrap(panel.subtitle, 12 * s, width - 28 * s)
     top = (50 + 16 * (len(lines) - 1)) * s
     both = np.concatenate([panel.a, b])
     span = np.maximum(both.max(axis=0) - both.min(axis=0), 1e-9)

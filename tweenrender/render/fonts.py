@@ -10,7 +10,7 @@ from typing import Iterator
 
 import skia
 
-__all__ = ["typeface", "font"]
+__all__ = ["typeface", "font", "wrap"]
 
 _FOLDER = Path(__file__).with_name("fonts")
 
@@ -50,3 +50,20 @@ def font(size: float, bold: bool = False) -> skia.Font:
     f.setEdging(skia.Font.Edging.kAntiAlias)
     f.setSubpixel(True)
     return f
+
+
+def wrap(words: str, size: float, width: float) -> list[str]:
+    """``words`` broken at spaces into lines no wider than ``width`` pixels at ``size``."""
+    face = font(size)
+    lines: list[str] = []
+    for paragraph in words.split("\n"):
+        line = ""
+        for word in paragraph.split(" "):
+            trial = f"{line} {word}" if line else word
+            if line and face.measureText(trial) > width:
+                lines.append(line)
+                line = word
+            else:
+                line = trial
+        lines.append(line)
+    return lines

@@ -18,7 +18,7 @@ import skia
 from numpy.typing import NDArray
 
 from ..model import Color
-from .fonts import font
+from .fonts import font, wrap
 from .raster import Raster, paint_color
 
 __all__ = ["QPanel", "PALETTE", "axis_range", "qcurves_picture", "report_panels", "report_picture"]
@@ -196,27 +196,10 @@ def _zoom_box(q: NDArray[np.float64], r: float) -> tuple[float, float, float] | 
     return float(centre[0]), float(centre[1]), half
 
 
-def _wrap(words: str, size: float, width: float) -> list[str]:
-    """``words`` broken at spaces into lines no wider than ``width`` pixels at ``size``."""
-    face = font(size)
-    lines: list[str] = []
-    for paragraph in words.split("\n"):
-        line = ""
-        for word in paragraph.split(" "):
-            trial = f"{line} {word}" if line else word
-            if line and face.measureText(trial) > width:
-                lines.append(line)
-                line = word
-            else:
-                line = trial
-        lines.append(line)
-    return lines
-
-
 def _panel(p: _Painter, panel: QPanel, x: float, y: float, width: float, height: float) -> None:
     s = p.scale
     p.text(panel.title, x + 14 * s, y + 24 * s, 16, bold=True)
-    lines = _wrap(panel.subtitle, 13 * s, width - 28 * s)
+    lines = wrap(panel.subtitle, 13 * s, width - 28 * s)
     for k, line in enumerate(lines):
         p.text(line, x + 14 * s, y + (44 + 17 * k) * s, 13, _SOFT)
     top, bottom = y + (56 + 17 * (len(lines) - 1)) * s, y + height - 30 * s

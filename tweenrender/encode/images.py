@@ -1,0 +1,26 @@
+"""Single pictures (sheets, plots) written as PNG, atomically."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .atomic import replacing
+
+__all__ = ["write_png"]
+
+
+def write_png(picture: NDArray[np.uint8], target: Path, what: str = "the picture") -> Path:
+    """Write straight RGBA ``(H, W, 4)`` to ``target`` through a temporary sibling; returns ``target``.
+
+    An opaque picture is stored as RGB, a quarter smaller.
+    """
+    import imageio.v3 as iio
+
+    if picture.shape[-1] == 4 and np.all(picture[..., 3] == 255):
+        picture = picture[..., :3]
+    with replacing(target, ".png", what) as temporary:
+        iio.imwrite(temporary, picture, extension=".png", compress_level=9)
+    return target

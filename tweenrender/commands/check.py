@@ -15,6 +15,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(run=run)
 
 
+def _count(number: int, noun: str) -> str:
+    return f"{number} {noun}{'' if number == 1 else 's'}"
+
+
 def run(args: argparse.Namespace) -> int:
     from ..scenefile import load_scene
 
@@ -29,6 +33,6 @@ def run(args: argparse.Namespace) -> int:
             print_json(scene_dict(scene, scene_view(scene, tracks_of(scene), (None,))))
         else:
             keys = sum(len(s.keys) for s in scene.shapes)
-            print(f"{path}: ok ({len(scene.shapes)} shapes, {keys} keys, {scene.duration:g} s "
-                  f"at {scene.fps:g} fps)")
+            print(f"{path}: ok ({_count(len(scene.shapes), 'shape')}, {_count(keys, 'key')}, "
+                  f"{scene.duration:g} s at {scene.fps:g} fps)")
     return 0

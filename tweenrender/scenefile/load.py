@@ -325,8 +325,8 @@ class _Reader:
         keys = tuple(self.key(raw, f"{where}.key[{k}]") for k, raw in enumerate(keys_raw))
         for k in range(1, len(keys)):
             if keys[k].time <= keys[k - 1].time:
-                raise self.fail(f"{where}.key[{k}].time", f"expected a time after {keys[k - 1].time:g} "
-                                                          f"(times strictly increase), found {keys[k].time:g}")
+                raise self.fail(f"{where}.key[{k}].time", f"expected a time after {keys[k - 1].time:.15g} "
+                                                          f"(times strictly increase), found {keys[k].time:.15g}")
         method = None
         if "method" in table:
             method = self.choice(table["method"], f"{where}.method", METHODS, "method")

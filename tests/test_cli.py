@@ -145,3 +145,14 @@ def test_help_imports_neither_skia_nor_ffmpeg() -> None:
             "print(sorted(m for m in ('skia', 'imageio_ffmpeg', 'imageio', 'numba') if m in sys.modules))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert result.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_check_reports_every_bad_scene_and_goes_on(cli, tmp_path: Path) -> None:
+    good = write_scene(tmp_path, SQUARE, "good.toml")
+    bad = write_scene(tmp_path, SQUARE.replace("time = 2", "time = -2"), "bad.toml")
+    worse = write_scene(tmp_path, "size = [1, 2, 3]\n", "worse.toml")
+    code, out, err = cli("check", bad, good, worse)
+    assert code == 2
+    assert out.strip() == f"{good}: ok (1 shape, 2 keys, 2 s at 24 fps)"
+    assert err.count("tweenrender: error: ") == 2 and "bad.toml: shape[0].key[1].time" in err
+    assert "worse.toml: size (line 1)" in err

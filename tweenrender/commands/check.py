@@ -3,9 +3,14 @@
 from __future__ import annotations
 
 import argparse
+import sys
+from typing import TYPE_CHECKING
 
 from ..errors import UsageError
 from ._args import print_json
+
+if TYPE_CHECKING:
+    from ..model import Scene
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -20,19 +25,34 @@ def _count(number: int, noun: str) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
+    """Check every scene; a bad one is reported on its own line and the others are still checked."""
+    from ..errors import SceneError
     from ..scenefile import load_scene
 
     if args.json and len(args.scene) != 1:
         raise UsageError("check --json takes exactly one scene")
-    for path in args.scene:
-        scene = load_scene(path)
-        if args.json:
-            from ..pipeline import scene_view, tracks_of
-            from ..reports import scene_dict
+    if args.json:
+        from ..pipeline import scene_view, tracks_of
+        from ..reports import scene_dict
 
-            print_json(scene_dict(scene, scene_view(scene, tracks_of(scene), (None,))))
-        else:
-            keys = sum(len(s.keys) for s in scene.shapes)
-            print(f"{path}: ok ({_count(len(scene.shapes), 'shape')}, {_count(keys, 'key')}, "
-                  f"{scene.duration:g} s at {scene.fps:g} fps)")
-    return 0
+        scene = load_scene(args.scene[0])
+        print_json(scene_dict(scene, scene_view(scene, tracks_of(scene), (None,))))
+        return 0
+    if len(args.scene) == 1:
+        scene = load_scene(args.scene[0])  # a single bad scene is reported by the command line
+        _report(args.scene[0], scene)
+        return 0
+    failed = 0
+    for path in args.scene:
+        try:
+            _report(path, load_scene(path))
+        except SceneError as error:
+            print(f"tweenrender: error: {error}", file=sys.stderr)
+            failed += 1
+    return 2 if failed else 0
+
+
+def _report(path: str, scene: "Scene") -> None:
+    keys = sum(len(s.keys) for s in scene.shapes)
+    print(f"{path}: ok ({_count(len(scene.shapes), 'shape')}, {_count(keys, 'key')}, "
+          f"{scene.duration:g} s at {scene.fps:g} fps)")

@@ -150,3 +150,26 @@ def test_cli_workers(cli, tmp_path: Path) -> None:
     assert full <= side**2 <= touched and touched - full <= 4 * (side + 2)
     code, _, err = cli("render", scene, "-o", tmp_path / "x.mp4", "--workers", "0")
     assert code == 2 and "--workers" in err
+
+
+def test_a_frame_failing_in_a_worker_stops_the_render_cleanly(tmp_path: Path,
+                                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    import multiprocessing
+
+    from tweenrender.errors import RenderError
+    from tweenrender.pipeline import Frames, render
+
+    original = Frames.__call__
+
+    def failing(self, index):  # type: ignore[no-untyped-def]
+        if index == 7:
+            raise ValueError("no polygon")
+        return original(self, index)
+
+    monkeypatch.setattr(Frames, "__call__", failing)
+    job = _job(tmp_path)
+    # forked workers inherit the patched class
+    with ProcessPoolExecutor(max_workers=2, mp_context=multiprocessing.get_context("fork")) as pool:
+        with pytest.raises(RenderError, match="frame 7: no polygon"):
+            render(job, "mp4", tmp_path / "broken.mp4", executor=pool)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]  # no output, no temporaries

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any, Callable, Iterator, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from .errors import RenderError, UsageError
+from .errors import EncodeError, RenderError, UsageError
 
 if TYPE_CHECKING:
     from .pipeline import Frames, RenderJob
@@ -189,7 +189,11 @@ def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, ch
         for future in futures:
             part = sibling(target, f".{len(parts):04d}.{fmt}")
             parts.append(part)
-            part.write_bytes(future.result())
+            try:
+                part.write_bytes(future.result())
+            except OSError as error:
+                raise EncodeError(f"{target}: cannot write part {len(parts)} beside it ({error.strerror or error})") \
+                    from None
         return concat(parts, target, expected=len(job.frame_range))
     finally:
         for future in futures:

@@ -159,8 +159,8 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     width, height = job.frame_size
     sink = open_sink(fmt, target, width, height, job.rate, len(indices))
     elsewhere = fmt == "png" and (executor is not None or workers > 1)
+    stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None)
     try:
-        stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None)
         for done, picture in enumerate(stream, start=1):
             if elsewhere:
                 sink.write_encoded(picture)  # type: ignore[attr-defined]
@@ -172,3 +172,5 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     except BaseException:
         sink.abort()
         raise
+    finally:
+        stream.close()  # now, not when the traceback lets go: stops a pool of workers at once

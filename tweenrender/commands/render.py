@@ -32,7 +32,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")
     p.add_argument("--workers", type=_workers, metavar="N",
                    help="processes drawing frames (default: 1 for video, whose encoder is the limit; "
-                        "one per core for long, large PNG/GIF renders)")
+                        "one per core for PNG frames of more than a second or so of 1080p)")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(run=run)
 

@@ -107,20 +107,21 @@ def _ignore_interrupts() -> None:
 
 
 def frame_stream(job: RenderJob, executor: Executor | None = None, workers: int = 1,
-                 batch: int | None = None, encode: Encode | None = None) -> Iterator[Any]:
+                 batch: int | None = None, encode: Encode | None = None, layout: str = "rgba") -> Iterator[Any]:
     """``job``'s frames in order as straight RGBA ``(height, width, 4)`` (or ``encode(frame)`` of each).
 
     Drawn here when ``executor`` is None and ``workers`` ≤ 1 (each array then
     reused by the next frame); otherwise in batches of ``batch`` frames on
     ``executor`` (or on a pool of ``workers`` processes made for the occasion),
     at most two batches per worker in flight, each frame passed through
-    ``encode`` (a picklable function) where it was drawn.
+    ``encode`` (a picklable function) where it was drawn. ``layout="bgra"``
+    hands over the surface's own pixels when drawing here (see ``Frames``).
     """
     indices = job.frame_range
     if executor is None and workers <= 1:
         from .pipeline import Frames
 
-        frames = Frames(job)
+        frames = Frames(job, layout)
         for index in indices:
             frame = draw_frame(frames, index)
             yield frame if encode is None else encode(frame)

@@ -23,6 +23,7 @@ if TYPE_CHECKING:
 __all__ = ["RenderJob", "Frames", "render", "total_frames", "parse_frames", "scene_view"]
 
 Box = tuple[float, float, float, float]
+_BLOCK = 32  # frames whose polygons are evaluated in one vectorised call
 Progress = Callable[[int, int], None]
 
 
@@ -104,8 +105,11 @@ class Frames:
     """Draws the frames of a job; built lazily so it can be shipped to a worker process."""
 
     job: RenderJob
+    layout: str = "rgba"  # "bgra": the surface's own premultiplied pixels (opaque backgrounds only)
     _tracks: tuple[Track, ...] | None = field(default=None, init=False, repr=False)
     _composer: object | None = field(default=None, init=False, repr=False)
+    _blocks: dict[str | None, tuple[int, list[list[Points]]]] = field(default_factory=dict, init=False,
+                                                                      repr=False)
 
     @property
     def tracks(self) -> tuple[Track, ...]:
@@ -119,8 +123,21 @@ class Frames:
         return [track.at(np.array([time]), method or scene.method_of(shape))[0]
                 for track, shape in zip(self.tracks, scene.shapes)]
 
+    def frame_polygons(self, method: str | None, index: int) -> list[Points]:
+        """Every shape's polygon at frame ``index``: ``polygons(method, index / fps)``, but evaluated
+        for a block of ``_BLOCK`` frames at once, so the per-call cost of numpy is paid once a block."""
+        block = index // _BLOCK
+        cached = self._blocks.get(method)
+        if cached is None or cached[0] != block:
+            scene, times = self.job.scene, np.arange(block * _BLOCK, (block + 1) * _BLOCK) / self.job.rate
+            cached = (block, [track.at(times, method or scene.method_of(shape))
+                              for track, shape in zip(self.tracks, scene.shapes)])
+            self._blocks[method] = cached
+        return [per_time[index - block * _BLOCK] for per_time in cached[1]]
+
     def __call__(self, index: int) -> NDArray[np.uint8]:
-        """Frame ``index`` as straight RGBA ``(height, width, 4)`` (a buffer reused by the next call)."""
+        """Frame ``index`` as straight RGBA ``(height, width, 4)`` (a buffer reused by the next call),
+        or as the surface's premultiplied BGRA when ``layout`` is ``"bgra"``."""
         from .render.compose import Composer
 
         job = self.job
@@ -138,8 +155,8 @@ class Frames:
                     job.scene, self.tracks, job.methods, self._composer.viewport, job.rate, self.polygons,
                     paths=job.paths, onion=job.onion, strip=job.strip))
         time = index / job.rate
-        panels = [self.polygons(method, time) for method in job.methods]
-        return self._composer.draw(panels, time)  # type: ignore[attr-defined]
+        panels = [self.frame_polygons(method, index) for method in job.methods]
+        return self._composer.draw(panels, time, self.layout)  # type: ignore[attr-defined]
 
 
 def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = None,
@@ -157,9 +174,13 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
 
     indices = job.frame_range
     width, height = job.frame_size
-    sink = open_sink(fmt, target, width, height, job.rate, len(indices))
-    elsewhere = fmt == "png" and (executor is not None or workers > 1)
-    stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None)
+    here = executor is None and workers <= 1
+    # Over an opaque background premultiplied pixels are straight ones: a video
+    # encoder can take skia's own BGRA surface, with no conversion and no copy.
+    layout = "bgra" if here and fmt != "png" and job.scene.background[3] == 255 else "rgba"
+    sink = open_sink(fmt, target, width, height, job.rate, len(indices), pixel_format=layout)
+    elsewhere = fmt == "png" and not here
+    stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None, layout=layout)
     try:
         for done, picture in enumerate(stream, start=1):
             if elsewhere:

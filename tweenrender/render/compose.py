@@ -45,10 +45,12 @@ class Composer:
         # (canvas, panel index, panel width, height, time), the canvas in panel pixels
         self.layers: list[Layer] = []
 
-    def draw(self, panels: Sequence[Sequence[Points]], time: float) -> NDArray[np.uint8]:
+    def draw(self, panels: Sequence[Sequence[Points]], time: float, layout: str = "rgba") -> NDArray[np.uint8]:
         """One frame from each panel's polygons (one ``(N, 2)`` per shape, in file order).
 
-        Returns straight RGBA ``(height, width, 4)``, reused by the next call.
+        Returns straight RGBA ``(height, width, 4)``, reused by the next call; with
+        ``layout="bgra"`` the surface's own premultiplied BGRA pixels, without a
+        copy (straight wherever the background is opaque).
         """
         raster = self.raster
         raster.clear(self.scene.background)
@@ -68,7 +70,7 @@ class Composer:
         for index in range(1, len(panels)):
             x = index * self.panel_width - 0.5
             raster.line((x, 0), (x, self.height), _DIVIDER, 1.0)
-        return raster.rgba()
+        return raster.bgra() if layout == "bgra" else raster.rgba()
 
     def draw_shapes(self, polygons: Sequence[Points], alpha: float = 1.0) -> None:
         for shape, polygon in zip(self.scene.shapes, polygons):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
+from pathlib import Path
 from typing import Any
 
 from ..errors import UsageError
@@ -87,3 +88,13 @@ def not_an_input(target: Any, *inputs: Any) -> None:
             continue
         if same:
             raise UsageError(f"-o {target}: is the input {source}; choose another output")
+
+
+def png_target(args: Any, kind: str, what: str) -> Path:
+    """``-o`` as a PNG path, or ``output/<scene stem>-<kind>.png``; ``what`` names it in errors."""
+    if args.output is None:
+        return Path("output") / f"{Path(args.scene).stem}-{kind}.png"
+    target = Path(args.output)
+    if target.suffix.lower() != ".png":
+        raise UsageError(f"-o {target}: {what} is a PNG; give a name ending in .png")
+    return target

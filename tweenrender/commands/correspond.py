@@ -6,9 +6,8 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from ..errors import UsageError
 from ..model import Scene
-from ._args import print_json
+from ._args import png_target, print_json
 from ._matching import add_matching_flags, matching_of
 
 
@@ -21,15 +20,6 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="where to draw the picture (default output/<stem>-correspond.png)")
     add_matching_flags(p)
     p.set_defaults(run=run)
-
-
-def _target(args: argparse.Namespace) -> Path:
-    if args.output is None:
-        return Path("output") / f"{Path(args.scene).stem}-correspond.png"
-    target = Path(args.output)
-    if target.suffix.lower() != ".png":
-        raise UsageError(f"-o {target}: the picture is a PNG; give a name ending in .png")
-    return target
 
 
 def _draw(scene: Scene, report: dict[str, Any], target: Path) -> Path:
@@ -45,7 +35,7 @@ def run(args: argparse.Namespace) -> int:
     from ..creport import correspond_dict, correspond_text
     from ..scenefile import load_scene
 
-    target = _target(args)
+    target = png_target(args, "correspond", "the picture")
     scene = load_scene(args.scene)
     report = correspond_dict(scene, matching_of(scene, args))
     report["scene"] = args.scene

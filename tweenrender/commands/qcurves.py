@@ -6,8 +6,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from ..errors import UsageError
-from ._args import print_json
+from ._args import png_target, print_json
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -17,15 +16,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("-o", "--output", metavar="PNG",
                    help="where to draw the plot (default output/<stem>-qcurves.png)")
     p.set_defaults(run=run)
-
-
-def _target(args: argparse.Namespace) -> Path:
-    if args.output is None:
-        return Path("output") / f"{Path(args.scene).stem}-qcurves.png"
-    target = Path(args.output)
-    if target.suffix.lower() != ".png":
-        raise UsageError(f"-o {target}: the plot is a PNG; give a name ending in .png")
-    return target
 
 
 def _plot(report: dict[str, Any], target: Path) -> Path:
@@ -41,7 +31,7 @@ def run(args: argparse.Namespace) -> int:
     from ..qreport import qcurves_dict, qcurves_text
     from ..scenefile import load_scene
 
-    target = _target(args)
+    target = png_target(args, "qcurves", "the plot")
     scene = load_scene(args.scene)
     report = qcurves_dict(scene)
     report["scene"] = args.scene

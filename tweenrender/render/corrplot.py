@@ -18,6 +18,7 @@ from numpy.typing import NDArray
 
 from ..model import Color, Scene
 from .fonts import font, wrap
+from .painter import Painter
 from .raster import Raster, paint_color
 from .view import Viewport
 
@@ -88,31 +89,10 @@ def _copies(indices: NDArray[np.intp], count: int) -> NDArray[np.intp]:
     return np.bincount(indices, minlength=count)
 
 
-class _Painter:
-    def __init__(self, raster: Raster, s: float) -> None:
-        self.raster, self.canvas, self.s = raster, raster.canvas, s
-        self.fill = skia.Paint(AntiAlias=True, Style=skia.Paint.kFill_Style)
-        self.stroke = skia.Paint(AntiAlias=True, Style=skia.Paint.kStroke_Style,
-                                 StrokeCap=skia.Paint.kRound_Cap, StrokeJoin=skia.Paint.kRound_Join)
-
-    def line(self, p: NDArray[np.float64], q: NDArray[np.float64], color: Color, width: float,
-             alpha: float = 1.0) -> None:
-        self.stroke.setColor(paint_color(color, alpha))
-        self.stroke.setStrokeWidth(width * self.s)
-        self.canvas.drawLine(float(p[0]), float(p[1]), float(q[0]), float(q[1]), self.stroke)
-
-    def dot(self, p: NDArray[np.float64], radius: float, color: Color) -> None:
-        self.fill.setColor(paint_color(color))
-        self.canvas.drawCircle(float(p[0]), float(p[1]), radius * self.s, self.fill)
-
-    def ring(self, p: NDArray[np.float64], radius: float, color: Color) -> None:
-        self.stroke.setColor(paint_color(color))
-        self.stroke.setStrokeWidth(1.6 * self.s)
-        self.canvas.drawCircle(float(p[0]), float(p[1]), radius * self.s, self.stroke)
-
+class _Painter(Painter):
     def text(self, words: str, x: float, y: float, size: float, color: Color = _INK,
              bold: bool = False, centred: bool = False) -> None:
-        size *= self.s
+        size *= self.scale
         if centred:
             wide = font(size, bold).measureText(words)
             # Kept inside the picture: labels of vertices at the edge would be cut off.
@@ -145,22 +125,22 @@ def _roomy(pix: NDArray[np.float64], s: float) -> NDArray[np.bool_]:
 
 def _key(p: _Painter, pix: NDArray[np.float64], color: Color, copies: NDArray[np.intp]) -> None:
     p.raster.polygon(pix, color, None, alpha=0.10)
-    p.raster.polygon(pix, None, color, 2.0 * p.s)
+    p.raster.polygon(pix, None, color, 2.0 * p.scale)
     out = _outward(pix)
-    labels = _roomy(pix, p.s)
+    labels = _roomy(pix, p.scale)
     for i, point in enumerate(pix):
         p.dot(point, 2.8, color)
         if copies[i] > 1:
             p.ring(point, 6.5, _INSERTED)
-            tag = point + out[i] * 15 * p.s
+            tag = point + out[i] * 15 * p.scale
             p.text(f"{i} (×{copies[i]})", float(tag[0]), float(tag[1]), 10, _INSERTED, bold=True, centred=True)
         elif labels[i]:
-            tag = point + out[i] * 12 * p.s
+            tag = point + out[i] * 12 * p.scale
             p.text(str(i), float(tag[0]), float(tag[1]), 9, _SOFT, centred=True)
 
 
 def _panel(p: _Painter, panel: CPanel, lay: _Layout, y: float, width: float) -> None:
-    s = p.s
+    s = p.scale
     p.text(panel.title, 14 * s, y + 22 * s, 15, bold=True)
     for k, line in enumerate(lay.lines):
         p.text(line, 14 * s, y + (40 + 16 * k) * s, 12, _SOFT)

@@ -19,6 +19,7 @@ from numpy.typing import NDArray
 
 from ..model import Color
 from .fonts import font, wrap
+from .painter import Painter
 from .raster import Raster, paint_color
 
 __all__ = ["QPanel", "PALETTE", "axis_range", "qcurves_picture", "report_panels", "report_picture"]
@@ -86,31 +87,7 @@ def _groups(pix: NDArray[np.float64], tol: float) -> list[list[int]]:
     return groups
 
 
-class _Painter:
-    def __init__(self, raster: Raster, scale: float) -> None:
-        self.raster, self.canvas, self.scale = raster, raster.canvas, scale
-        self.fill = skia.Paint(AntiAlias=True, Style=skia.Paint.kFill_Style)
-        self.stroke = skia.Paint(AntiAlias=True, Style=skia.Paint.kStroke_Style,
-                                 StrokeCap=skia.Paint.kRound_Cap, StrokeJoin=skia.Paint.kRound_Join)
-
-    def line(self, a: NDArray[np.float64], b: NDArray[np.float64], color: Color, width: float,
-             alpha: float = 1.0) -> None:
-        self.stroke.setColor(paint_color(color, alpha))
-        self.stroke.setStrokeWidth(width * self.scale)
-        self.canvas.drawLine(float(a[0]), float(a[1]), float(b[0]), float(b[1]), self.stroke)
-
-    def dot(self, p: NDArray[np.float64], radius: float, color: Color, hollow: bool = False) -> None:
-        r = radius * self.scale
-        if hollow:
-            self.fill.setColor(paint_color(_BACK))
-            self.canvas.drawCircle(float(p[0]), float(p[1]), r, self.fill)
-            self.stroke.setColor(paint_color(color))
-            self.stroke.setStrokeWidth(1.5 * self.scale)
-            self.canvas.drawCircle(float(p[0]), float(p[1]), r, self.stroke)
-        else:
-            self.fill.setColor(paint_color(color))
-            self.canvas.drawCircle(float(p[0]), float(p[1]), r, self.fill)
-
+class _Painter(Painter):
     def square(self, p: NDArray[np.float64], half: float, color: Color) -> None:
         h = half * self.scale
         self.fill.setColor(paint_color(color))

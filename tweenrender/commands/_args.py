@@ -98,3 +98,27 @@ def png_target(args: Any, kind: str, what: str) -> Path:
     if target.suffix.lower() != ".png":
         raise UsageError(f"-o {target}: {what} is a PNG; give a name ending in .png")
     return target
+
+
+def count(low: int, high: int, flag: str):  # type: ignore[no-untyped-def]
+    """An argparse converter for a whole number from ``low`` to ``high``."""
+
+    def convert(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise UsageError(f"{flag}: expected a whole number, found {text!r}") from None
+        if not low <= value <= high:
+            raise UsageError(f"{flag}: expected {low} to {high}, found {value}")
+        return value
+
+    return convert
+
+
+DEFAULT_MAX_FRAMES = 100_000
+
+
+def max_frames_flag(p: Any) -> None:
+    """``--max-frames N``: the guard against renders that would run for days."""
+    p.add_argument("--max-frames", type=count(1, 10**12, "--max-frames"), default=DEFAULT_MAX_FRAMES,
+                   metavar="N", help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")

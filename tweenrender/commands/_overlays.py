@@ -4,26 +4,11 @@ from __future__ import annotations
 
 import argparse
 
-from ..errors import UsageError
+from ._args import count
 
-__all__ = ["add_overlay_flags", "count", "MAX_ONION"]
+__all__ = ["add_overlay_flags", "MAX_ONION"]
 
 MAX_ONION = 20
-
-
-def count(low: int, high: int, flag: str):  # type: ignore[no-untyped-def]
-    """An argparse converter for a whole number from ``low`` to ``high``."""
-
-    def convert(text: str) -> int:
-        try:
-            value = int(text)
-        except ValueError:
-            raise UsageError(f"{flag}: expected a whole number, found {text!r}") from None
-        if not low <= value <= high:
-            raise UsageError(f"{flag}: expected {low} to {high}, found {value}")
-        return value
-
-    return convert
 
 
 def add_overlay_flags(p: argparse.ArgumentParser) -> None:

@@ -6,10 +6,9 @@ import argparse
 from pathlib import Path
 
 from ..errors import UsageError
-from ._args import fps, methods, size
+from ._args import count, fps, max_frames_flag, methods, size
 from ._matching import add_matching_flags, with_matching
-from ._overlays import MAX_ONION, count
-from .render import DEFAULT_MAX_FRAMES
+from ._overlays import MAX_ONION
 
 DEFAULT_SIZE = (1280, 720)
 DEFAULT_FPS = 24.0
@@ -29,8 +28,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="N ghosted inbetweens before and after each frame")
     add_matching_flags(p)
     p.add_argument("--plain", action="store_true", help="no vertex paths and no perimeter strip")
-    p.add_argument("--max-frames", type=int, default=DEFAULT_MAX_FRAMES, metavar="N",
-                   help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")
+    max_frames_flag(p)
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(run=run)
 

@@ -7,11 +7,10 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..model import METHODS
-from ._args import fps, method, methods, not_an_input, size
+from ._args import count, fps, max_frames_flag, method, methods, not_an_input, size
 from ._matching import add_matching_flags, with_matching
 from ._overlays import add_overlay_flags
 
-DEFAULT_MAX_FRAMES = 100_000
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -28,23 +27,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")
     add_overlay_flags(p)
     add_matching_flags(p)
-    p.add_argument("--max-frames", type=int, default=DEFAULT_MAX_FRAMES, metavar="N",
-                   help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")
-    p.add_argument("--workers", type=_workers, metavar="N",
+    max_frames_flag(p)
+    p.add_argument("--workers", type=count(1, 256, "--workers"), metavar="N",
                    help="processes drawing frames (default: 1 for video, whose encoder is the limit; "
                         "one per core for PNG frames of more than a second or so of 1080p)")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(run=run)
-
-
-def _workers(text: str) -> int:
-    try:
-        count = int(text)
-    except ValueError:
-        raise UsageError(f"--workers: expected a whole number of processes, found {text!r}") from None
-    if not 1 <= count <= 256:
-        raise UsageError(f"--workers: expected 1 to 256 processes, found {count}")
-    return count
 
 
 def _output_format(args: argparse.Namespace) -> tuple[str, Path]:

@@ -6,9 +6,8 @@ import argparse
 from pathlib import Path
 
 from ..errors import UsageError
-from ._args import methods, size
+from ._args import count, methods, size
 from ._matching import add_matching_flags, with_matching
-from ._overlays import count
 
 DEFAULT_COUNT = 7
 

@@ -12,7 +12,6 @@ from ._matching import add_matching_flags, with_matching
 from ._overlays import add_overlay_flags
 
 
-
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("render", help="render a scene to video or PNG frames")
     p.add_argument("scene", metavar="SCENE")

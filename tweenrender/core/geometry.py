@@ -10,7 +10,7 @@ from numpy.typing import NDArray
 
 __all__ = [
     "centroid", "edges", "edge_lengths", "perimeter", "signed_area", "area",
-    "best_fit_rotation", "rotate", "cross",
+    "best_fit_rotation", "spoke_rotation", "rotate", "cross",
 ]
 
 Array = NDArray[np.float64]
@@ -56,8 +56,12 @@ def best_fit_rotation(a: Array, b: Array) -> Array:
     ``a`` and ``b`` are ``(..., N, 2)`` with corresponding vertices. φ is 0 when
     the fit is undefined (all vertices at the center).
     """
-    u = a - centroid(a)[..., None, :]
-    v = b - centroid(b)[..., None, :]
+    return spoke_rotation(a - centroid(a)[..., None, :], b - centroid(b)[..., None, :])
+
+
+def spoke_rotation(u: Array, v: Array) -> Array:
+    """Angle φ ∈ (−π, π] that best turns offsets ``u`` onto offsets ``v``, both ``(..., N, 2)``,
+    about their common origin (0 when undefined)."""
     s = cross(u, v).sum(axis=-1)
     c = (u * v).sum(axis=(-2, -1))
     phi = np.arctan2(s, c)

@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import paths
-from .geometry import best_fit_rotation, cross, rotate
+from .geometry import best_fit_rotation, rotate
 
 __all__ = ["JointError", "PathFunction", "RULES", "validate_joints", "bodies", "pivoted", "misfit", "root_body",
            "jointed"]
@@ -27,9 +27,6 @@ __all__ = ["JointError", "PathFunction", "RULES", "validate_joints", "bodies", "
 Array = NDArray[np.float64]
 RULES = ("chain", "mean")
 """How bodies share their joint vertices; see :func:`jointed`."""
-
-# |mid offset| below this fraction of the body's size counts as "no direction" (SPEC §4).
-_DEGENERATE = 1e-9
 
 PathFunction = Callable[[Array, Array, ArrayLike], Array]
 """``f(k0 (N, 2), k1 (N, 2), t (T,)) -> (T, N, 2)``, like the functions of :mod:`paths`."""
@@ -115,23 +112,10 @@ def bodies(n: int, joints: Sequence[tuple[int, int]]) -> list[NDArray[np.intp]]:
 def pivoted(u0: Array, u1: Array, t: ArrayLike) -> Array:
     """The thesis's nonlinear paths for offsets ``(N, 2)`` that turn about a fixed origin: ``(T, N, 2)``.
 
-    SPEC §4 with both centers at the origin: the mid frame ``(u0 + u1)/2`` is
-    pushed back out to each offset's mean length. Near a half turn the mid frame
-    has no direction; the first key's offset turned by half the best-fit angle
-    about the origin is used instead, as :func:`paths.nonlinear_controls` does.
+    SPEC §4 with both centers at the origin (see :func:`paths.nonlinear_controls`).
     """
-    mid = 0.5 * (u0 + u1)
-    dist = 0.5 * (np.linalg.norm(u0, axis=-1) + np.linalg.norm(u1, axis=-1))  # (N,)
-    length = np.linalg.norm(mid, axis=-1)
-    flat = length <= _DEGENERATE * max(float(dist.max(initial=0.0)), 1e-300)
-    if np.any(flat):
-        phi = float(np.arctan2(cross(u0, u1).sum(), (u0 * u1).sum()))
-        spoke = np.where((np.linalg.norm(u0, axis=-1) > 0)[:, None], rotate(u0, phi / 2), rotate(u1, -phi / 2))
-        mid = np.where(flat[:, None], spoke, mid)
-        length = np.linalg.norm(mid, axis=-1)
-    unit = np.divide(mid, length[:, None], out=np.zeros_like(mid), where=length[:, None] > 0)
-    p1 = 2.0 * unit * dist[:, None] - 0.5 * (u0 + u1)
-    return paths.bezier2(u0, p1, u1, t)
+    origin = np.zeros(2)
+    return paths.bezier2(*paths.nonlinear_controls(u0, u1, centers=(origin, origin)), t)
 
 
 def _about_joint(f: PathFunction) -> PathFunction:

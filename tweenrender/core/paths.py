@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .geometry import best_fit_rotation, centroid, rotate
+from .geometry import best_fit_rotation, centroid, rotate, spoke_rotation
 
 __all__ = [
     "linear", "nonlinear", "nonlinear_controls", "rigid", "bezier2", "as_times",
@@ -39,14 +39,16 @@ def bezier2(p0: Array, p1: Array, p2: Array, t: ArrayLike) -> Array:
     return s * s * p0 + 2.0 * s * t * p1 + t * t * p2
 
 
-def nonlinear_controls(k0: Array, k1: Array) -> tuple[Array, Array, Array]:
+def nonlinear_controls(k0: Array, k1: Array,
+                       centers: tuple[Array, Array] | None = None) -> tuple[Array, Array, Array]:
     """The thesis's quadratic Bézier control points ``P0, P1, P2``, each ``(N, 2)`` (SPEC §4).
 
     The middle control point is placed so that the path passes at t = 0.5 through
     the linear midpoint frame pushed back out to each vertex's mean distance from
-    the center of mass.
+    the center of mass — or from ``centers`` ``(c0, c1)``, each ``(2,)``, when the
+    shape turns about some other point (a joint).
     """
-    c0, c1 = centroid(k0), centroid(k1)
+    c0, c1 = (centroid(k0), centroid(k1)) if centers is None else centers
     mid = 0.5 * (k0 + k1)
     cm = 0.5 * (c0 + c1)
     u0, u1 = k0 - c0, k1 - c1
@@ -60,7 +62,7 @@ def nonlinear_controls(k0: Array, k1: Array) -> tuple[Array, Array, Array]:
         # Near a 180° turn the midpoint frame collapses onto its center: turn the
         # first key's spoke by half the best-fit rotation instead (or the last key's
         # spoke back, for a vertex that starts at the center).
-        phi = float(best_fit_rotation(k0, k1))
+        phi = float(spoke_rotation(u0, u1))
         spoke = np.where(
             (np.linalg.norm(u0, axis=-1) > 0)[:, None], rotate(u0, phi / 2), rotate(u1, -phi / 2)
         )

@@ -5,10 +5,12 @@ from __future__ import annotations
 import json
 import sys
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable, TypeVar
 
 from ..errors import UsageError
 from ..model import METHODS
+
+Number = TypeVar("Number", int, float)
 
 __all__ = ["method", "methods", "size", "fps", "times", "print_json", "not_an_input"]
 
@@ -53,13 +55,7 @@ def fps(text: str) -> float:
     from ..scenefile import LIMITS
 
     low, high = LIMITS["fps"]
-    try:
-        fps = float(text)
-    except ValueError:
-        raise UsageError(f"--fps: expected a number of frames per second, found {text!r}") from None
-    if not low <= fps <= high:
-        raise UsageError(f"--fps: expected {low} to {high}, found {text}")
-    return fps
+    return _ranged(float, "a number of frames per second", low, high, "--fps")(text)
 
 
 def times(text: str) -> list[float]:
@@ -100,16 +96,27 @@ def png_target(args: Any, kind: str, what: str) -> Path:
     return target
 
 
-def count(low: int, high: int, flag: str):  # type: ignore[no-untyped-def]
+def count(low: int, high: int, flag: str) -> Callable[[str], int]:
     """An argparse converter for a whole number from ``low`` to ``high``."""
+    return _ranged(int, "a whole number", low, high, flag)
 
-    def convert(text: str) -> int:
+
+def _plain(number: float) -> str:
+    """``240`` rather than ``240.0``, and ``1000000000000`` rather than ``1e+12``."""
+    return str(int(number)) if float(number).is_integer() else f"{number:g}"
+
+
+def _ranged(parse: Callable[[str], Number], what: str, low: float, high: float,
+            flag: str) -> Callable[[str], Number]:
+    """A converter: ``parse(text)``, refused unless it lies from ``low`` to ``high``."""
+
+    def convert(text: str) -> Number:
         try:
-            value = int(text)
+            value = parse(text)
         except ValueError:
-            raise UsageError(f"{flag}: expected a whole number, found {text!r}") from None
+            raise UsageError(f"{flag}: expected {what}, found {text!r}") from None
         if not low <= value <= high:
-            raise UsageError(f"{flag}: expected {low} to {high}, found {value}")
+            raise UsageError(f"{flag}: expected {_plain(low)} to {_plain(high)}, found {text}")
         return value
 
     return convert

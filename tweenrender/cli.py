@@ -12,6 +12,7 @@ import signal
 import sys
 from typing import Iterator, Sequence
 
+from . import __version__
 from .commands import register_all
 from .errors import TweenrenderError, UsageError
 
@@ -24,6 +25,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Inbetween 2-D keyframe polygons (linear, nonlinear Bézier, rigid, jointed paths) "
                     "and render them to PNG frames or video.")
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of failures")
+    parser.add_argument("--version", action="version", version=f"tweenrender {__version__}")
     register_all(parser.add_subparsers(dest="command", required=True, metavar="COMMAND"))
     return parser
 

@@ -3,12 +3,12 @@
     PYTHONPATH=. /tmp/probe/bin/python benchmarks/joint_rules.py
 
 For a limb swinging about a hinge and for the hinge, roof-box and walk scenes,
-prints the worst edge-length error (DESIGN.md's ``edge_error``, over 101 t) of
+prints the worst edge-length error (the documented ``edge_error``, over 101 t) of
 every edge, and of each local body's outline (its edges and its joint chords,
 i.e. the width of each joint), under these rules:
 
 * ``mean``: each body's nonlinear paths about its own center of mass; a joint
-  vertex follows the mean of its bodies' paths (SPEC §5.1, the current rule).
+  vertex follows the mean of its bodies' paths (the first rule of maths §5.1).
 * ``mean-joint``: as ``mean``, but each body turns about the midpoint of its
   joint chords instead of its center of mass.
 * ``chain``: ``joints.jointed``'s default. The body with most vertices (the

@@ -1,4 +1,4 @@
-"""The command line: contracts of DESIGN.md, exit codes, output naming, untouched outputs on error."""
+"""The command line: the documented contracts, exit codes, output naming, untouched outputs on error."""
 
 from __future__ import annotations
 

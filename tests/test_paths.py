@@ -95,7 +95,7 @@ def test_nonlinear_keeps_rigid_motion_at_half(degrees: float) -> None:
 
 
 def test_nonlinear_dips_only_slightly_before_half() -> None:
-    # SPEC §4: for a 90° turn the quadratic path is only nearly circular; the
+    # maths §4: for a 90° turn the quadratic path is only nearly circular; the
     # ratio dips to about 0.989 in each half and is symmetric about t = 0.5.
     t = np.linspace(0, 1, 101)
     r = ratio(paths.nonlinear(SQUARE, SQUARE_TURNED, t), SQUARE, SQUARE_TURNED)

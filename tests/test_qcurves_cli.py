@@ -39,7 +39,7 @@ def test_json_contract_and_the_turning_square(cli, tmp_path: Path) -> None:
     for v in shape["vertices"]:
         assert {"index", "q0", "q1", "q2", "kind", "through_zero"} <= v.keys()
         # A 2x2 square turning 90 degrees: F·B = 0 and F×B = |F||B| = 4 at both keys,
-        # and Q1 = cos(90°)·Q0 = 0 (SPEC §3).
+        # and Q1 = cos(90°)·Q0 = 0 (maths §3).
         np.testing.assert_allclose([v["q0"], v["q1"], v["q2"]], [[0, 4], [0, 0], [0, 4]], atol=1e-12)
         assert v["kind"] == "rotation" and v["through_zero"] is False
 

@@ -36,7 +36,7 @@ def inserted(indices: NDArray[np.intp], count: int) -> list[int]:
 
 
 def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str, Any]:
-    """DESIGN.md's ``correspond --json``: one entry per shape and segment (static shapes have none).
+    """the documented ``correspond --json``: one entry per shape and segment (static shapes have none).
 
     ``matching`` defaults to the scene's ``[correspondence]``. ``work`` is the
     cost of the reported ``pairs`` under it (the sum of ``|A_i - B_j|`` after the

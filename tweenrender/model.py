@@ -60,11 +60,11 @@ class Shape:
 
 @dataclass(frozen=True, slots=True)
 class Matching:
-    """How keys with different vertex counts are put in correspondence (SPEC §2)."""
+    """How keys with different vertex counts are put in correspondence (maths §2)."""
 
     cost: str = "distance"
     align: str = "centroid"
-    # Sederberg–Greenwood constants (SPEC §2.1)
+    # Sederberg–Greenwood constants (maths §2.1)
     ks: float = 1.0
     cs: float = 0.5
     es: float = 2.0

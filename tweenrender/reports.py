@@ -34,7 +34,7 @@ def scene_dict(scene: Scene, view: Sequence[float]) -> dict[str, Any]:
 
 
 def stats_dict(scene: Scene, t: Sequence[float]) -> dict[str, Any]:
-    """The thesis's ch. 6 report for every shape and segment (DESIGN.md's ``stats --json``)."""
+    """The thesis's ch. 6 report for every shape and segment (the documented ``stats --json``)."""
     shapes = []
     for shape in scene.shapes:
         track = build_track(shape, scene.matching)

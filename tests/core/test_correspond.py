@@ -1,4 +1,4 @@
-"""Vertex correspondence (SPEC §2): the optimum is checked against an exhaustive
+"""Vertex correspondence (maths §2): the optimum is checked against an exhaustive
 enumeration of closed paths written here, and the fast search against the
 try-every-start reference."""
 

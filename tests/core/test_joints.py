@@ -1,4 +1,4 @@
-"""Joints, local bodies and jointed nonlinear paths (SPEC §5.1)."""
+"""Joints, local bodies and jointed nonlinear paths (maths §5.1)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Q-curves, motion classification and the auto method (SPEC §3), checked against
+"""Q-curves, motion classification and the auto method (maths §3), checked against
 facts computed directly from the polygons in each test."""
 
 from __future__ import annotations

@@ -52,7 +52,7 @@ def test_one_panel_per_method_at_the_asked_size(methods: tuple[str, ...], strip:
 
 
 def _bezier_midpoints() -> np.ndarray:
-    """SPEC §4 by hand: each vertex's nonlinear path at t = 0.5, ``Cm + (M - Cm)·d/|M - Cm|``."""
+    """maths §4 by hand: each vertex's nonlinear path at t = 0.5, ``Cm + (M - Cm)·d/|M - Cm|``."""
     c0, c1 = K0.mean(axis=0), K1.mean(axis=0)
     middle = (K0 + K1) / 2
     cm = (c0 + c1) / 2
@@ -84,7 +84,7 @@ def test_paths_are_drawn_where_each_method_moves_the_vertices() -> None:
     scene = _scene()
     plain = Frames(RenderJob(scene, ("linear", "nonlinear"), size=SIZE))(0).copy()
     traced = Frames(RenderJob(scene, ("linear", "nonlinear"), size=SIZE, paths=True))(0).copy()
-    assert np.allclose(_bezier_midpoints()[0], [3.5, 1.5 - np.sqrt(2)])  # SPEC §4 for vertex 0
+    assert np.allclose(_bezier_midpoints()[0], [3.5, 1.5 - np.sqrt(2)])  # maths §4 for vertex 0
     t = np.linspace(0.25, 0.75, 101)[:, None, None]
     straight = ((1 - t) * K0 + t * K1).reshape(-1, 2)  # points of the linear paths
     curved = _bezier(np.linspace(0.25, 0.75, 101)).reshape(-1, 2)  # points of the nonlinear paths

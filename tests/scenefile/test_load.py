@@ -1,4 +1,4 @@
-"""The scene loader: the format of DESIGN.md, and errors that name file, place and expectation."""
+"""The scene loader: the documented format, and errors that name file, place and expectation."""
 
 from __future__ import annotations
 

@@ -254,7 +254,7 @@ def every_start_search(w: np.ndarray) -> tuple[float, np.ndarray]:
 
 @_jit
 def stretch_work(l0: float, l1: float, ks: float, cs: float, es: float) -> float:
-    """Stretching work of an edge of length ``l0`` becoming ``l1`` (SPEC §2.1); 0 when equal."""
+    """Stretching work of an edge of length ``l0`` becoming ``l1`` (maths §2.1); 0 when equal."""
     if l0 == l1:
         return 0.0
     shorter, longer = min(l0, l1), max(l0, l1)
@@ -321,7 +321,7 @@ def angle_change(q0x: float, q0y: float, q1x: float, q1y: float,
     way round when the curve sweeps past 180°); ``Δθ*`` is how far θ(t) leaves
     the range between θ(0) and θ(1), above plus below; ``through_zero`` is whether
     ``Q(t)`` meets the positive x-axis for some 0 < t < 1 (the edges fold).
-    Exact: θ's extremes are at roots of ``d(t)`` (SPEC §3), and between the roots
+    Exact: θ's extremes are at roots of ``d(t)`` (maths §3), and between the roots
     of ``x(t)``, ``y(t)`` and ``d(t)`` the curve stays in one quadrant, where the
     angle between two of its points is their plain atan2 difference.
     """
@@ -372,7 +372,7 @@ def bend_work(b0x: float, b0y: float, f0x: float, f0y: float,
     """Bending work of a vertex with backward/forward edges ``B0, F0`` (key 0) and ``B1, F1`` (key 1).
 
     ``kb·(Δθ + mb·Δθ*)^eb``, plus ``pb`` if the angle passes through zero, over
-    the Q-curve of SPEC §3. A zero edge (a duplicated vertex) makes that key's
+    the Q-curve of maths §3. A zero edge (a duplicated vertex) makes that key's
     end of the Q-curve vanish: the vertex then counts as straight there, the end
     being replaced by ``(-r, 0)`` with ``r`` the other end's length (or ``|Q1|``
     when both ends vanish). No bending at all when ``Q0 = Q1 = Q2 = 0``.

@@ -1,4 +1,4 @@
-"""Vertex correspondence of two keys with different vertex counts (SPEC §2).
+"""Vertex correspondence of two keys with different vertex counts (maths §2).
 
 A correspondence is a closed monotone lattice path through the cyclic ``m × n``
 grid of vertex pairs ``(i, j)``: every step advances i, j or both by one (j by
@@ -11,17 +11,17 @@ cyclically (``p[L] = p[0]``, ``p[-1] = p[L-1]``), after the alignment of
 ``Matching.align`` (``"centroid"``: each polygon's vertex mean moved to the origin):
 
 ``distance``
-    ``Σ_k |a[i[k]] - b[j[k]]|``: each node once (SPEC §2, the thesis's work).
+    ``Σ_k |a[i[k]] - b[j[k]]|``: each node once (maths §2, the thesis's work).
 
 ``sg``
-    ``Σ_k stretch_k + Σ_k bend_k`` (Sederberg–Greenwood, SPEC §2.1) where
+    ``Σ_k stretch_k + Σ_k bend_k`` (Sederberg–Greenwood, maths §2.1) where
 
     * ``stretch_k = ks·|l1 - l0|^es / ((1 - cs)·min(l0, l1) + cs·max(l0, l1))``
       for the step ``p[k] → p[k+1]``, with ``l0 = |a[i[k+1]] - a[i[k]]|`` and
       ``l1 = |b[j[k+1]] - b[j[k]]|`` (0 for a polygon the step does not
       advance), and 0 when ``l0 = l1``: L terms;
     * ``bend_k = kb·(Δθ + mb·Δθ*)^eb``, plus ``pb`` if the angle passes through
-      zero, from the Q-curve (SPEC §3) of node k with ``B0 = a[i[k-1]] - a[i[k]]``,
+      zero, from the Q-curve (maths §3) of node k with ``B0 = a[i[k-1]] - a[i[k]]``,
       ``F0 = a[i[k+1]] - a[i[k]]`` and ``B1, F1`` likewise in b (zero vectors
       where a step does not advance that polygon): L terms. ``Δθ = |θ(1) - θ(0)|``
       for the continuous angle θ(t) of ``Q(t)``; ``Δθ*`` is how far θ leaves the

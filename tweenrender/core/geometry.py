@@ -22,7 +22,7 @@ def cross(a: Array, b: Array) -> Array:
 
 
 def centroid(points: Array) -> Array:
-    """Center of mass of unit-mass vertices (the vertex mean, SPEC §1): ``(..., 2)``."""
+    """Center of mass of unit-mass vertices (the vertex mean, maths §1): ``(..., 2)``."""
     return points.mean(axis=-2)
 
 

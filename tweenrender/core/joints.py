@@ -1,11 +1,11 @@
-"""Jointed nonlinear paths (SPEC §5.1, thesis ch. 7).
+"""Jointed nonlinear paths (maths §5.1, thesis ch. 7).
 
 A joint is a chord ``(a, b)`` between two vertices of a polygon. Non-crossing
 chords cut the polygon into *local bodies*, which form a tree joined by the
-chords. The body with most vertices leads: it gets the nonlinear paths of SPEC §4
+chords. The body with most vertices leads: it gets the nonlinear paths of maths §4
 around its own center of mass. Each other body turns about its joint, the
 midpoint of the chord to the body it hangs from, and that midpoint moves with
-the leading side, so the outline never cracks. (SPEC §5.1's first rule, every
+the leading side, so the outline never cracks. (maths §5.1's first rule, every
 body about its own center of mass and joint vertices on the mean of their bodies'
 paths, is kept as ``rule="mean"``; it bends a limb that swings about a hinge.)
 """
@@ -112,7 +112,7 @@ def bodies(n: int, joints: Sequence[tuple[int, int]]) -> list[NDArray[np.intp]]:
 def pivoted(u0: Array, u1: Array, t: ArrayLike) -> Array:
     """The thesis's nonlinear paths for offsets ``(N, 2)`` that turn about a fixed origin: ``(T, N, 2)``.
 
-    SPEC §4 with both centers at the origin (see :func:`paths.nonlinear_controls`).
+    maths §4 with both centers at the origin (see :func:`paths.nonlinear_controls`).
     """
     origin = np.zeros(2)
     return paths.bezier2(*paths.nonlinear_controls(u0, u1, centers=(origin, origin)), t)
@@ -164,7 +164,7 @@ def jointed(
     body. The chord itself turns with whichever of its two bodies is closer to
     rigid (:func:`misfit`), so the joint keeps its width. ``rule = "mean"``: every body turns about its
     own center of mass and a joint vertex follows the mean of its bodies' paths
-    (SPEC §5.1's first choice; see the README for what was measured).
+    (maths §5.1's first choice; see the README for what was measured).
     """
     k0 = np.asarray(k0, dtype=np.float64)
     k1 = np.asarray(k1, dtype=np.float64)

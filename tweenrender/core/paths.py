@@ -17,7 +17,7 @@ __all__ = [
 
 Array = NDArray[np.float64]
 
-# |M_i - Cm| below this fraction of the shape's size counts as "no direction" (SPEC §4).
+# |M_i - Cm| below this fraction of the shape's size counts as "no direction" (maths §4).
 _DEGENERATE = 1e-9
 
 
@@ -41,7 +41,7 @@ def bezier2(p0: Array, p1: Array, p2: Array, t: ArrayLike) -> Array:
 
 def nonlinear_controls(k0: Array, k1: Array,
                        centers: tuple[Array, Array] | None = None) -> tuple[Array, Array, Array]:
-    """The thesis's quadratic Bézier control points ``P0, P1, P2``, each ``(N, 2)`` (SPEC §4).
+    """The thesis's quadratic Bézier control points ``P0, P1, P2``, each ``(N, 2)`` (maths §4).
 
     The middle control point is placed so that the path passes at t = 0.5 through
     the linear midpoint frame pushed back out to each vertex's mean distance from
@@ -80,7 +80,7 @@ def nonlinear(k0: Array, k1: Array, t: ArrayLike) -> Array:
 
 
 def rigid(k0: Array, k1: Array, t: ArrayLike) -> Array:
-    """Exact rigid paths (SPEC §5.2): the center moves straight, the spokes turn by ``t·φ``.
+    """Exact rigid paths (maths §5.2): the center moves straight, the spokes turn by ``t·φ``.
 
     A rigid motion is reproduced at every t; a non-rigid change is blended
     linearly in the turning frame. Returns ``(T, N, 2)``.

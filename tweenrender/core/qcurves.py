@@ -1,4 +1,4 @@
-"""Q-curves (SPEC §3, thesis ch. 4), motion classification and the ``auto`` method.
+"""Q-curves (maths §3, thesis ch. 4), motion classification and the ``auto`` method.
 
 The Q-curve of a vertex follows ``(F·B, F×B)`` of its forward and backward edge
 vectors while both are interpolated linearly; it is a quadratic Bézier curve
@@ -139,7 +139,7 @@ def _constant_angle(q: QCurves, d0: Array, d1: Array, d2: Array) -> NDArray[np.b
 def non_monotonic(q: QCurves) -> NDArray[np.bool_]:
     """Whether the vertex angle turns back: ``d(t)`` changes sign in (0, 1): ``(N,)`` bool.
 
-    ``d0 = Q0×Q1``, ``d1 = (Q0×Q2)/2``, ``d2 = Q1×Q2`` (SPEC §3). A d(t) that only
+    ``d0 = Q0×Q1``, ``d1 = (Q0×Q2)/2``, ``d2 = Q1×Q2`` (maths §3). A d(t) that only
     touches zero pauses the angle without reversing it, and a rigid turn (d ≡ 0)
     keeps the angle constant: neither counts.
     """

@@ -1,7 +1,7 @@
-"""Keys → segments → polygons at any time (SPEC §5.3).
+"""Keys → segments → polygons at any time (maths §5.3).
 
 A shape's keys split its life into segments, one per consecutive pair of keys,
-each with its own correspondence (SPEC §2) and easing. Frame ``f`` is drawn at
+each with its own correspondence (maths §2) and easing. Frame ``f`` is drawn at
 ``time = f / fps``; before the first key a shape holds its first key, after its
 last key it holds the last one.
 """

@@ -36,7 +36,7 @@ def inserted(indices: NDArray[np.intp], count: int) -> list[int]:
 
 
 def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str, Any]:
-    """the documented ``correspond --json``: one entry per shape and segment (static shapes have none).
+    """The documented ``correspond --json``: one entry per shape and segment (static shapes have none).
 
     ``matching`` defaults to the scene's ``[correspondence]``. ``work`` is the
     cost of the reported ``pairs`` under it (the sum of ``|A_i - B_j|`` after the
@@ -70,6 +70,7 @@ def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str,
                 "minimal_work": float(minimal),
                 "cost": matching.cost,
                 "align": matching.align,
+                "equal_counts": matching.equal_counts,
                 "reversed": bool(reversed_),
                 "matched": matched,
                 "inserted": {"a": inserted(pairs[:, 0], len(a)), "b": inserted(pairs[:, 1], len(b))},
@@ -77,7 +78,7 @@ def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str,
                 **extra,
             })
     return {"scene": str(scene.path) if scene.path else None, "cost": matching.cost,
-            "align": matching.align, "shapes": shapes}
+            "align": matching.align, "equal_counts": matching.equal_counts, "shapes": shapes}
 
 
 def matching_words(cost: str, align: str) -> str:

@@ -10,7 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "Points", "Color", "METHODS", "EASES", "COSTS", "ALIGNS",
+    "Points", "Color", "METHODS", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
     "Key", "Joint", "Shape", "Matching", "Scene", "frozen_points",
 ]
 
@@ -25,6 +25,7 @@ METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "auto")
 EASES: tuple[str, ...] = ("linear", "in", "out", "in-out")
 COSTS: tuple[str, ...] = ("distance", "sg")
 ALIGNS: tuple[str, ...] = ("none", "centroid")
+EQUAL_COUNTS: tuple[str, ...] = ("drawn", "match")
 
 
 def frozen_points(points: object) -> Points:
@@ -64,6 +65,8 @@ class Matching:
 
     cost: str = "distance"
     align: str = "centroid"
+    # keys of equal vertex counts: keep the drawn order ("drawn") or search them too ("match")
+    equal_counts: str = "drawn"
     # Sederberg–Greenwood constants (maths §2.1)
     ks: float = 1.0
     cs: float = 0.5

@@ -67,7 +67,7 @@ def segment_dict(segment: Segment) -> dict[str, Any]:
 
 
 def qcurves_dict(scene: Scene) -> dict[str, Any]:
-    """the documented ``qcurves --json``: one entry per shape and segment (static shapes have none)."""
+    """The documented ``qcurves --json``: one entry per shape and segment (static shapes have none)."""
     shapes = []
     for shape in scene.shapes:
         track = build_track(shape, scene.matching)

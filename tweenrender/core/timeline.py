@@ -106,7 +106,7 @@ def build_track(shape: Shape, matching: Matching) -> Track:
     segments = []
     for before, after in zip(keys, keys[1:]):
         a, b = before.points, after.points
-        if len(a) == len(b):
+        if len(a) == len(b) and matching.equal_counts == "drawn":
             k0, k1, found, balanced_joints = a, b, None, joints
             carried = joints
         else:

@@ -18,7 +18,7 @@ from typing import Any, Callable
 import numpy as np
 
 from ..errors import SceneError
-from ..model import (ALIGNS, COSTS, EASES, METHODS, Color, Key, Matching, Scene, Shape,
+from ..model import (ALIGNS, COSTS, EASES, EQUAL_COUNTS, METHODS, Color, Key, Matching, Scene, Shape,
                      frozen_points)
 from .locate import json_line_of, line_of
 
@@ -43,7 +43,7 @@ _TOP = ("title", "size", "fps", "background", "view", "method", "compare", "corr
 _SHAPE = ("name", "fill", "stroke", "stroke_width", "method", "joints", "key")
 _KEY = ("time", "points", "ease")
 _SVG = ("svg", "id", "tolerance")
-_MATCHING = ("cost", "align", "ks", "cs", "es", "kb", "eb", "mb", "pb")
+_MATCHING = ("cost", "align", "equal_counts", "ks", "cs", "es", "kb", "eb", "mb", "pb")
 
 
 _KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a pipe (FIFO)"), (stat.S_ISCHR, "a character device"),
@@ -272,16 +272,17 @@ class _Reader:
         title = self.string(top["title"], "title") if "title" in top else None
         background = self.color(top.get("background", "#ffffff"), "background")
         matching = self.matching(top.get("correspondence", {}))
-        self.matching_effort(shapes, matching.cost)
+        self.matching_effort(shapes, matching)
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
                      method=method, compare=compare, matching=matching, path=self.path)
 
-    def matching_effort(self, shapes: tuple[Shape, ...], cost: str) -> None:
+    def matching_effort(self, shapes: tuple[Shape, ...], matching: Matching) -> None:
         """Refuse key pairs whose correspondence search would run for minutes (see ``LIMITS``)."""
+        cost = matching.cost
         for i, shape in enumerate(shapes):
             for k in range(1, len(shape.keys)):
                 m, n = len(shape.keys[k - 1].points), len(shape.keys[k].points)
-                if m == n:
+                if m == n and matching.equal_counts == "drawn":
                     continue  # equal counts keep the drawn order: no search
                 effort, limit = (m * n * max(m, n), LIMITS["match_sg"]) if cost == "sg" else \
                                 (m * n, LIMITS["match_cells"])
@@ -309,7 +310,10 @@ class _Reader:
             fields["cost"] = self.choice(table["cost"], "correspondence.cost", COSTS, "cost")
         if "align" in table:
             fields["align"] = self.choice(table["align"], "correspondence.align", ALIGNS, "alignment")
-        for name in _MATCHING[2:]:
+        if "equal_counts" in table:
+            fields["equal_counts"] = self.choice(table["equal_counts"], "correspondence.equal_counts",
+                                                 EQUAL_COUNTS, "rule for equal counts")
+        for name in _MATCHING[3:]:
             if name in table:
                 fields[name] = self.number(table[name], f"correspondence.{name}", 0.0, 1e6, "a constant")
         return Matching(**fields)

@@ -149,9 +149,11 @@ class FFmpegVideo:
         self.temporary = sibling(target, "." + fmt)
         command = ffmpeg_command(fmt, width, height, fps, "pipe:0", str(self.temporary), pixel_format)
         self.log = tempfile.TemporaryFile()
-        # unbuffered: Python's 8 KiB buffer would only add a copy of every frame
+        # unbuffered: Python's 8 KiB buffer would only add a copy of every frame. Its own
+        # session: a terminal's Ctrl-C reaches only this process, which then stops ffmpeg
+        # itself (abort), instead of racing ffmpeg's own shutdown.
         self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                        stderr=self.log, bufsize=0)
+                                        stderr=self.log, bufsize=0, start_new_session=True)
         _grow_pipe(self.process.stdin)
         self.count = 0
 

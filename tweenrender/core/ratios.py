@@ -35,8 +35,7 @@ def perimeter_ratio(tracks: Sequence[Track], methods: Sequence[str], times: Arra
     for track, method in zip(tracks, methods):
         if not track.segments:
             continue
-        starts = np.array([s.start for s in track.segments])
-        index = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, len(track.segments) - 1)
+        index = track.segment_index(times)
         means = np.array([0.5 * (perimeter(s.k0) + perimeter(s.k1)) for s in track.segments])
         inbetween += np.array([perimeter(p) for p in track.at(times, method)], dtype=np.float64)
         reference += means[index]

@@ -78,6 +78,11 @@ class Track:
     segments: tuple[Segment, ...]
     still: Points  # the only key of a static shape (unused when there are segments)
 
+    def segment_index(self, times: Array) -> NDArray[np.intp]:
+        """The segment each of ``times (F,)`` seconds falls in: ``(F,)`` (the first before, the last after)."""
+        starts = np.array([s.start for s in self.segments])
+        return np.clip(np.searchsorted(starts, times, side="right") - 1, 0, len(self.segments) - 1)
+
     def at(self, times: Array, method: str) -> list[Points]:
         """The shape's polygon at each of ``times (F,)`` seconds: a list of ``(N_f, 2)`` arrays.
 
@@ -87,8 +92,7 @@ class Track:
         times = np.atleast_1d(np.asarray(times, dtype=np.float64))
         if not self.segments:
             return [self.still] * len(times)
-        starts = np.array([s.start for s in self.segments])
-        index = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, len(self.segments) - 1)
+        index = self.segment_index(times)
         out: list[Points] = [self.still] * len(times)
         for s in np.unique(index):
             seg = self.segments[s]

@@ -27,7 +27,7 @@ from ..core.methods import interpolate
 from ..core.ratios import perimeter_ratio
 from ..core.timeline import Track, frame_count
 from ..model import Color, Points, Scene
-from .raster import paint_color
+from .raster import paint_color, polygon_path
 from .view import Viewport
 
 __all__ = ["PanelOverlays", "onion_step", "path_polylines", "strip_box", "skia_path", "stroke_paint",
@@ -93,7 +93,7 @@ def skia_path(lines: Sequence[NDArray[np.float64]], closed: bool) -> skia.Path:
     path = skia.Path()
     for line in lines:
         if len(line) >= 2 and np.all(np.isfinite(line)):
-            path.addPoly([skia.Point(x, y) for x, y in line.tolist()], closed)
+            path.addPath(polygon_path(line, closed))
     return path
 
 

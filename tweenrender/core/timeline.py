@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Sequence
 
 import numpy as np
 from numpy.typing import NDArray
@@ -19,7 +18,7 @@ from ..model import Matching, Points, Shape
 from .correspond import Correspondence, correspond
 from .methods import interpolate
 
-__all__ = ["ease", "frame_count", "frame_times", "Segment", "Track", "build_track"]
+__all__ = ["ease", "frame_count", "Segment", "Track", "build_track"]
 
 Array = NDArray[np.float64]
 
@@ -43,11 +42,6 @@ def ease(t: Array, kind: str) -> Array:
 def frame_count(duration: float, fps: float) -> int:
     """Frames from time 0 to ``duration`` inclusive: ``floor(duration · fps) + 1``."""
     return math.floor(duration * fps + 1e-9) + 1
-
-
-def frame_times(frames: NDArray[np.int64] | Sequence[int], fps: float) -> Array:
-    """Seconds of each frame index: ``frames / fps``, ``(F,)``."""
-    return np.asarray(frames, dtype=np.float64) / fps
 
 
 @dataclass(frozen=True, slots=True)

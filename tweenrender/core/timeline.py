@@ -122,6 +122,6 @@ def build_track(shape: Shape, matching: Matching) -> Track:
 def _first_occurrence(indices: NDArray[np.intp], count: int) -> NDArray[np.intp]:
     """For each value 0..count-1, the first position where it occurs in ``indices``."""
     first = np.full(count, -1, dtype=np.intp)
-    for position in range(len(indices) - 1, -1, -1):
-        first[indices[position]] = position
+    values, positions = np.unique(indices, return_index=True)
+    first[values] = positions
     return first

@@ -8,19 +8,21 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Callable, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Iterable, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .core.timeline import Track, build_track, frame_count
-from .errors import RenderError, UsageError
+from .errors import UsageError
 from .model import Points, Scene
 
 if TYPE_CHECKING:
     from concurrent.futures import Executor
 
-__all__ = ["RenderJob", "Frames", "render", "total_frames", "parse_frames", "scene_view"]
+    from .encode.sinks import Sink
+
+__all__ = ["RenderJob", "Frames", "render", "stream_into", "total_frames", "parse_frames", "scene_view"]
 
 Box = tuple[float, float, float, float]
 _BLOCK = 32  # frames whose polygons are evaluated in one vectorised call
@@ -181,17 +183,24 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     sink = open_sink(fmt, target, width, height, job.rate, len(indices), pixel_format=layout)
     elsewhere = fmt == "png" and not here
     stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None, layout=layout)
+    write = sink.write_encoded if elsewhere else sink.write  # type: ignore[attr-defined]
     try:
-        for done, picture in enumerate(stream, start=1):
-            if elsewhere:
-                sink.write_encoded(picture)  # type: ignore[attr-defined]
-            else:
-                sink.write(picture)
+        return stream_into(sink, stream, len(indices), progress, write)
+    finally:
+        stream.close()  # now, not when the traceback lets go: stops a pool of workers at once
+
+
+def stream_into(sink: Sink, pictures: Iterable[Any], total: int, progress: Progress | None = None,
+                write: Callable[[Any], None] | None = None) -> Path:
+    """Hand every picture to ``sink`` (through ``write``, default ``sink.write``), report progress,
+    and close it; on any failure the sink is aborted, so its target stays as it was."""
+    write = write or sink.write
+    try:
+        for done, picture in enumerate(pictures, start=1):
+            write(picture)
             if progress is not None:
-                progress(done, len(indices))
+                progress(done, total)
         return sink.close()
     except BaseException:
         sink.abort()
         raise
-    finally:
-        stream.close()  # now, not when the traceback lets go: stops a pool of workers at once

@@ -20,7 +20,7 @@ from numpy.typing import NDArray
 
 from .errors import RenderError
 from .model import Scene
-from .pipeline import Frames, RenderJob
+from .pipeline import Frames, RenderJob, stream_into
 
 __all__ = ["CARD_SECONDS", "ReelPart", "plan_reel", "reel_frames", "write_reel", "panel_fit", "grid_cells",
            "band_height"]
@@ -153,12 +153,4 @@ def write_reel(parts: Sequence[ReelPart], fmt: str, target: Path, size: tuple[in
 
     total = sum(part.frames for part in parts)
     sink = open_sink(fmt, target, size[0], size[1], fps, total)
-    try:
-        for done, picture in enumerate(reel_frames(parts, size), start=1):
-            sink.write(picture)
-            if progress is not None:
-                progress(done, total)
-        return sink.close()
-    except BaseException:
-        sink.abort()
-        raise
+    return stream_into(sink, reel_frames(parts, size), total, progress)

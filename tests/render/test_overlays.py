@@ -8,7 +8,6 @@ import pytest
 from tweenrender.core.ratios import perimeter_ratio
 from tweenrender.model import Key, Scene, Shape, frozen_points
 from tweenrender.pipeline import Frames, RenderJob, tracks_of
-from tweenrender.render.view import Viewport
 
 K0 = np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float)
 K1 = np.array([[7, 1], [7, 3], [5, 3], [5, 1]], dtype=float)  # K0 turned 90° and moved

@@ -13,13 +13,12 @@ from dataclasses import dataclass
 from typing import Any, Sequence
 
 import numpy as np
-import skia
 from numpy.typing import NDArray
 
 from ..model import Color, Scene
 from .fonts import font, wrap
 from .painter import Painter
-from .raster import Raster, paint_color
+from .raster import Raster
 from .view import Viewport
 
 __all__ = ["CPanel", "placed_apart", "correspond_picture", "report_panels", "report_picture"]

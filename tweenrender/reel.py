@@ -20,6 +20,7 @@ from numpy.typing import NDArray
 
 from .errors import RenderError
 from .model import Scene
+from .parallel import draw_frame
 from .pipeline import Frames, RenderJob, stream_into
 
 __all__ = ["CARD_SECONDS", "ReelPart", "plan_reel", "reel_frames", "write_reel", "panel_fit", "grid_cells",
@@ -137,9 +138,9 @@ def reel_frames(parts: Sequence[ReelPart], size: tuple[int, int]) -> Iterator[ND
         pw, ph = job.panel_size
         for index in job.frame_range:
             try:
-                comparison = frames(index)
-            except (ValueError, FloatingPointError, RuntimeError) as error:
-                raise RenderError(f"{part.name}: frame {index}: {error}") from error
+                comparison = draw_frame(frames, index)
+            except RenderError as error:
+                raise RenderError(f"{part.name}: {error}") from error
             for panel, (x, y) in enumerate(part.cells):
                 picture[y:y + ph, x:x + pw, :3] = comparison[:, panel * pw:(panel + 1) * pw, :3]
                 picture[y:y + ph, x:x + pw, 3] = 255

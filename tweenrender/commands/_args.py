@@ -129,3 +129,21 @@ def max_frames_flag(p: Any) -> None:
     """``--max-frames N``: the guard against renders that would run for days."""
     p.add_argument("--max-frames", type=count(1, 10**12, "--max-frames"), default=DEFAULT_MAX_FRAMES,
                    metavar="N", help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")
+
+
+def check_frame_count(frames: int, limit: int, what: str) -> None:
+    """Refuse ``frames`` over ``--max-frames``; ``what`` says whose frames (a scene, the reel)."""
+    if frames > limit:
+        raise UsageError(f"{what}: {frames} frames is more than --max-frames {limit}; "
+                         "raise --max-frames to render it anyway")
+
+
+def format_of(target: Path) -> str | None:
+    """The format an output name asks for: its video extension, ``png`` for a name without one
+    (a folder of frames), ``None`` for any other extension."""
+    from ..encode import FORMATS
+
+    suffix = target.suffix.lower().lstrip(".")
+    if suffix in FORMATS and suffix != "png":
+        return suffix
+    return "png" if suffix == "" else None

@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 
 from ..errors import UsageError
-from ._args import count, fps, max_frames_flag, methods, size
+from ._args import check_frame_count, count, format_of, fps, max_frames_flag, methods, size
 from ._matching import add_matching_flags, with_matching
 from ._overlays import MAX_ONION
 
@@ -34,15 +34,11 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _output_format(text: str) -> tuple[str, Path]:
-    from ..encode import FORMATS
-
     target = Path(text)
-    suffix = target.suffix.lower().lstrip(".")
-    if suffix in FORMATS and suffix != "png":
-        return suffix, target
-    if suffix == "":
-        return "png", target
-    raise UsageError(f"-o {target}: cannot tell the format from .{suffix}; use a .mp4, .webm or .gif name, "
+    fmt = format_of(target)
+    if fmt is not None:
+        return fmt, target
+    raise UsageError(f"-o {target}: cannot tell the format from {target.suffix}; use a .mp4, .webm or .gif name, "
                      "or a folder name without extension for PNG frames")
 
 
@@ -57,9 +53,7 @@ def run(args: argparse.Namespace) -> int:
     parts = plan_reel(scenes, names, args.size, args.fps, args.methods, paths=not args.plain,
                       onion=args.onion, strip=not args.plain)
     frames = sum(part.frames for part in parts)
-    if frames > args.max_frames:
-        raise UsageError(f"the reel would have {frames} frames, more than --max-frames {args.max_frames}; "
-                         "raise --max-frames to render it anyway")
+    check_frame_count(frames, args.max_frames, "the reel")
     bar = ProgressBar(target.name, enabled=False if args.quiet else None)
     print(write_reel(parts, fmt, target, args.size, args.fps, bar))
     return 0

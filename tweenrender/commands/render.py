@@ -7,7 +7,8 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..model import METHODS
-from ._args import count, fps, max_frames_flag, method, methods, not_an_input, size
+from ._args import (check_frame_count, count, format_of, fps, max_frames_flag, method, methods, not_an_input,
+                    size)
 from ._matching import add_matching_flags, with_matching
 from ._overlays import add_overlay_flags
 
@@ -47,10 +48,9 @@ def _output_format(args: argparse.Namespace) -> tuple[str, Path]:
         if suffix in FORMATS and suffix != args.format and args.format != "png":
             raise UsageError(f"-o {target} ends in .{suffix} but --format is {args.format}")
         return args.format, target
-    if suffix in FORMATS and suffix != "png":
-        return suffix, target
-    if suffix == "":
-        return "png", target
+    fmt = format_of(target)
+    if fmt is not None:
+        return fmt, target
     raise UsageError(f"-o {target}: cannot tell the format from .{suffix}; "
                      f"use --format {'|'.join(FORMATS)} or a .mp4/.webm/.gif name")
 
@@ -72,9 +72,7 @@ def run(args: argparse.Namespace) -> int:
     rate = args.fps or scene.fps
     total = total_frames(scene, rate)
     frames = parse_frames(args.frames, total) if args.frames else range(total)
-    if len(frames) > args.max_frames:
-        raise UsageError(f"{args.scene}: {len(frames)} frames is more than --max-frames {args.max_frames}; "
-                         "raise --max-frames to render it anyway")
+    check_frame_count(len(frames), args.max_frames, args.scene)
     width, height = args.size or scene.size
     if width * len(panels) > LIMITS["canvas"]:
         raise UsageError(f"{len(panels)} panels of {width} px make a {width * len(panels)} px wide "

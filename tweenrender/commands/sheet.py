@@ -3,10 +3,8 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
-from ..errors import UsageError
-from ._args import count, methods, size
+from ._args import count, methods, png_target, size
 from ._matching import add_matching_flags, with_matching
 
 DEFAULT_COUNT = 7
@@ -34,9 +32,7 @@ def run(args: argparse.Namespace) -> int:
 
     scene = with_matching(load_scene(args.scene), args)
     rows = args.methods or scene.compare
-    target = Path(args.output) if args.output else Path("output") / f"{Path(args.scene).stem}-sheet.png"
-    if target.suffix.lower() != ".png":
-        raise UsageError(f"-o {target}: a sheet is a PNG; use a name ending in .png")
+    target = png_target(args, "sheet", "a sheet")
     tracks = tracks_of(scene)
     view = scene_view(scene, tracks, rows)
     print(write_sheet(scene, tracks, rows, view, target, args.count, args.size, args.paths))

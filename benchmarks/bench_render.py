@@ -103,8 +103,8 @@ def prerender_raw(scene: Path, raw: Path) -> tuple[int, float]:
     """Every frame of ``scene`` as raw RGB in ``raw``: (frames, seconds spent drawing)."""
     import numpy as np
 
-    from tweenrender.parallel import frame_stream
-    from tweenrender.pipeline import RenderJob
+    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.pipeline.workers import frame_stream
     from tweenrender.scenefile import load_scene
 
     job = RenderJob(load_scene(scene))
@@ -152,8 +152,8 @@ def target_ratio(folder: Path, rounds: int) -> None:
 
 
 def frame_rates(folder: Path, quick: bool) -> None:
-    from tweenrender.parallel import frame_stream
-    from tweenrender.pipeline import RenderJob
+    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.pipeline.workers import frame_stream
     from tweenrender.scenefile import load_scene
 
     scene = write_scene(folder, 5.0, "busy.toml")

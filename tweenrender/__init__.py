@@ -1,11 +1,17 @@
-"""tweenrender: inbetweening of 2-D shapes after Slinker (1992).
+"""tweenrender: inbetweening of 2-D shapes after Slinker (1992), and beyond.
 
-Keyframe polygons from a scene file are put in correspondence, interpolated
+Keyframe outlines from a scene file are put in correspondence, interpolated
 along linear, nonlinear (quadratic Bézier), rigid or jointed vertex paths, and
-rendered with skia to PNG frames or video.
+rendered with skia to PNG frames or video::
+
+    import tweenrender as tr
+    scene = tr.load_scene("scenes/square.toml")
+    img = tr.frame(scene, 1.0, size=(640, 360))      # (360, 640, 4) uint8, straight RGBA
+    tr.write(scene, "output/square.mp4", compare=["linear", "nonlinear"])
 
 Names are imported on first use, so ``import tweenrender`` (and the command
-line's start-up) stays light.
+line's start-up) stays light. No module of the package is named like a public
+name, so importing any submodule never changes what these names are.
 """
 
 from __future__ import annotations
@@ -14,17 +20,18 @@ from importlib import import_module
 from typing import Any
 
 __all__ = [
-    "load_scene", "parse_scene", "interpolate", "render", "RenderJob", "Frames",
-    "Scene", "Shape", "Key", "Matching",
-    "TweenrenderError", "SceneError", "UsageError", "RenderError", "EncodeError",
+    "load_scene", "frame", "frames", "outlines", "write",
+    "parse_scene", "interpolate", "Scene", "Shape", "Key", "Matching",
+    "TweenrenderError", "SceneError", "OptionError", "GeometryError", "RenderError", "EncodeError",
 ]
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 _HOME = {
-    "load_scene": "scenefile", "parse_scene": "scenefile", "interpolate": "core.methods",
-    "render": "pipeline", "RenderJob": "pipeline", "Frames": "pipeline",
+    "load_scene": "pipeline.library", "frame": "pipeline.library", "frames": "pipeline.library",
+    "outlines": "pipeline.library", "write": "pipeline.library",
+    "parse_scene": "scenefile", "interpolate": "core.methods",
     "Scene": "model", "Shape": "model", "Key": "model", "Matching": "model",
-    "TweenrenderError": "errors", "SceneError": "errors", "UsageError": "errors",
+    "TweenrenderError": "errors", "SceneError": "errors", "OptionError": "errors", "GeometryError": "errors",
     "RenderError": "errors", "EncodeError": "errors",
 }
 
@@ -33,3 +40,7 @@ def __getattr__(name: str) -> Any:
     if name in _HOME:
         return getattr(import_module(f".{_HOME[name]}", __name__), name)
     raise AttributeError(f"module 'tweenrender' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

@@ -1,14 +1,26 @@
-"""One error hierarchy; the CLI turns each into a one-line message and an exit code."""
+"""One error hierarchy: every refusal is a :class:`TweenrenderError`, whose message is the line the CLI prints.
+
+::
+
+    TweenrenderError                 exit code 1 unless the subclass says otherwise
+    ├── SceneError(path, where)      bad input in a scene file or a drawing (exit 2)
+    ├── OptionError                  an option a call cannot honour: format, size, frames (exit 2)
+    │   └── UsageError               bad command-line usage; raised by ``tweenrender.cli`` only
+    ├── GeometryError (ValueError)   keys or arguments the core cannot work with (exit 2)
+    ├── RenderError                  a failure while computing or drawing frames (exit 1)
+    └── EncodeError                  a failure while writing an output (exit 1)
+"""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-__all__ = ["TweenrenderError", "SceneError", "UsageError", "RenderError", "EncodeError"]
+__all__ = ["TweenrenderError", "SceneError", "OptionError", "UsageError", "GeometryError", "RenderError",
+           "EncodeError"]
 
 
 class TweenrenderError(Exception):
-    """Base of every error tweenrender raises on purpose."""
+    """Base of every error tweenrender raises on purpose; ``exit_code`` is what the CLI returns."""
 
     exit_code: int = 1
 
@@ -32,9 +44,22 @@ class SceneError(TweenrenderError):
         place = ": ".join(p for p in (self.path, self.where) if p)
         return f"{place}: {self.message}" if place else self.message
 
+    def __reduce__(self) -> tuple[type[SceneError], tuple[str | None, str | None, str]]:
+        return type(self), (self.path, self.where, self.message)
 
-class UsageError(TweenrenderError):
-    """Bad command-line usage (a flag's value, an impossible combination)."""
+
+class OptionError(TweenrenderError):
+    """An option a library call cannot honour (an unknown format, an odd size for H.264, no frames)."""
+
+    exit_code = 2
+
+
+class UsageError(OptionError):
+    """Bad command-line usage (a flag's value, an impossible combination); raised by the CLI only."""
+
+
+class GeometryError(TweenrenderError, ValueError):
+    """Keys or arguments the interpolation core cannot work with (wrong shapes, bad joints, unknown names)."""
 
     exit_code = 2
 

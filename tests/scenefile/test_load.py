@@ -12,7 +12,7 @@ from tweenrender.errors import SceneError
 from tweenrender.scenefile import load_scene, parse_scene
 from tweenrender.scenefile.locate import line_of
 
-from ..conftest import SCENES, SQUARE
+from tests.helpers import SCENES, SQUARE
 
 FULL = """title = "t"
 size = [640, 360]

@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 from tweenrender.errors import SceneError, TweenrenderError
 from tweenrender.scenefile import LIMITS, load_scene, parse_scene
 
-from ..conftest import SCENES, SQUARE
+from tests.helpers import SCENES, SQUARE
 
 SECOND_KEY = "[[7, 1], [7, 3], [5, 3], [5, 1]]"
 

@@ -45,6 +45,7 @@ from types import ModuleType
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..errors import GeometryError
 from ..model import ALIGNS, COSTS, Matching, Points
 from .geometry import centroid, signed_area
 
@@ -117,11 +118,11 @@ def path_work(a: Points, b: Points, pairs: ArrayLike, matching: Matching = _DEFA
     a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
     path = np.asarray(pairs)
     if path.ndim != 2 or path.shape[1] != 2 or len(path) == 0:
-        raise ValueError(f"pairs should have shape (L, 2) with L ≥ 1, not {path.shape}")
+        raise GeometryError(f"pairs should have shape (L, 2) with L ≥ 1, not {path.shape}")
     if not np.issubdtype(path.dtype, np.integer):
-        raise ValueError(f"pairs should be integer indices, not {path.dtype}")
+        raise GeometryError(f"pairs should be integer indices, not {path.dtype}")
     if path.min() < 0 or path[:, 0].max() >= len(a) or path[:, 1].max() >= len(b):
-        raise ValueError(f"pairs should index {len(a)} × {len(b)} vertices, "
+        raise GeometryError(f"pairs should index {len(a)} × {len(b)} vertices, "
                          f"not range over {path.min(axis=0).tolist()}..{path.max(axis=0).tolist()}")
     return _aligned_work(a, b, path.astype(np.intp), matching)
 
@@ -204,16 +205,16 @@ def _as_polygon(points: Points, name: str) -> NDArray[np.float64]:
     """
     array = np.array(points, dtype=np.float64, order="C", copy=True)
     if array.ndim != 2 or array.shape[1] != 2:
-        raise ValueError(f"polygon {name} should have shape (N, 2), not {array.shape}")
+        raise GeometryError(f"polygon {name} should have shape (N, 2), not {array.shape}")
     if array.shape[0] < 2:
-        raise ValueError(f"polygon {name} should have at least 2 vertices, not {array.shape[0]}")
+        raise GeometryError(f"polygon {name} should have at least 2 vertices, not {array.shape[0]}")
     if not np.all(np.isfinite(array)):
-        raise ValueError(f"polygon {name} has non-finite coordinates")
+        raise GeometryError(f"polygon {name} has non-finite coordinates")
     return array
 
 
 def _check_matching(matching: Matching) -> None:
     if matching.cost not in COSTS:
-        raise ValueError(f"matching cost should be one of {', '.join(COSTS)}, not {matching.cost!r}")
+        raise GeometryError(f"matching cost should be one of {', '.join(COSTS)}, not {matching.cost!r}")
     if matching.align not in ALIGNS:
-        raise ValueError(f"matching align should be one of {', '.join(ALIGNS)}, not {matching.align!r}")
+        raise GeometryError(f"matching align should be one of {', '.join(ALIGNS)}, not {matching.align!r}")

@@ -18,6 +18,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..errors import GeometryError
 from . import paths
 from .geometry import best_fit_rotation, rotate
 
@@ -32,7 +33,7 @@ PathFunction = Callable[[Array, Array, ArrayLike], Array]
 """``f(k0 (N, 2), k1 (N, 2), t (T,)) -> (T, N, 2)``, like the functions of :mod:`paths`."""
 
 
-class JointError(ValueError):
+class JointError(GeometryError):
     """A joint that cannot split the polygon; ``index`` is its position in the joint list."""
 
     def __init__(self, index: int, message: str) -> None:
@@ -169,9 +170,9 @@ def jointed(
     k0 = np.asarray(k0, dtype=np.float64)
     k1 = np.asarray(k1, dtype=np.float64)
     if k0.shape != k1.shape or k0.ndim != 2 or k0.shape[1] != 2:
-        raise ValueError(f"keys must both be (N, 2), found {k0.shape} and {k1.shape}")
+        raise GeometryError(f"keys must both be (N, 2), found {k0.shape} and {k1.shape}")
     if rule not in RULES:
-        raise ValueError(f"unknown joint rule {rule!r}; expected chain or mean")
+        raise GeometryError(f"unknown joint rule {rule!r}; expected chain or mean")
     t = paths.as_times(t)
     n = k0.shape[0]
     parts = bodies(n, joints)
@@ -179,7 +180,7 @@ def jointed(
         body_paths = paths.nonlinear
     functions = [body_paths] * len(parts) if callable(body_paths) else list(body_paths)
     if len(functions) != len(parts):
-        raise ValueError(
+        raise GeometryError(
             f"{len(parts)} bodies need {len(parts)} path functions, found {len(functions)}"
         )
     if rule == "mean":

@@ -7,6 +7,7 @@ from typing import Callable, Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..errors import GeometryError
 from . import paths
 from .joints import jointed
 from .qcurves import auto
@@ -46,7 +47,10 @@ def interpolate(k0: Array, k1: Array, t: ArrayLike, method: str, joints: Joints 
     try:
         fn = _METHODS[method]
     except KeyError:
-        raise ValueError(f"unknown method {method!r}; expected one of {', '.join(_METHODS)}") from None
+        raise GeometryError(f"unknown method {method!r}; expected one of {', '.join(_METHODS)}") from None
+    k0, k1 = np.asarray(k0, dtype=np.float64), np.asarray(k1, dtype=np.float64)
+    if k0.ndim != 2 or k0.shape[-1:] != (2,) or k0.shape != k1.shape:
+        raise GeometryError(f"keys must both be (N, 2) with the same N, found {k0.shape} and {k1.shape}")
     t = paths.as_times(t)
     frames = fn(k0, k1, t, joints)
     frames[t == 0.0] = k0

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..errors import GeometryError
 from . import joints as _joints
 from . import paths
 from .geometry import best_fit_rotation, cross, edge_lengths
@@ -43,7 +44,7 @@ def _keys(k0: ArrayLike, k1: ArrayLike) -> tuple[Array, Array]:
     k0 = np.asarray(k0, dtype=np.float64)
     k1 = np.asarray(k1, dtype=np.float64)
     if k0.ndim != 2 or k0.shape[1] != 2 or k0.shape != k1.shape:
-        raise ValueError(
+        raise GeometryError(
             f"keys must both be (N, 2) with the same N, found {k0.shape} and {k1.shape}"
         )
     return k0, k1

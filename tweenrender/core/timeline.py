@@ -8,12 +8,12 @@ last key it holds the last one.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
 
+from ..errors import GeometryError
 from ..model import Matching, Points, Shape
 from .correspond import Correspondence, correspond
 from .methods import interpolate
@@ -36,12 +36,15 @@ def ease(t: Array, kind: str) -> Array:
         return 1.0 - (1.0 - t) ** 2
     if kind == "in-out":
         return t * t * (3.0 - 2.0 * t)
-    raise ValueError(f"unknown easing {kind!r}")
+    raise GeometryError(f"unknown easing {kind!r}")
 
 
 def frame_count(duration: float, fps: float) -> int:
-    """Frames from time 0 to ``duration`` inclusive: ``floor(duration · fps) + 1``."""
-    return math.floor(duration * fps + 1e-9) + 1
+    """Frames from time 0 to the frame nearest ``duration``, both included: ``round(duration · fps) + 1``.
+
+    The last frame is the last key's (or lies within half a frame of it, holding the last key).
+    """
+    return round(duration * fps) + 1
 
 
 @dataclass(frozen=True, slots=True)

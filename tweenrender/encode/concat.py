@@ -7,7 +7,7 @@ import tempfile
 from pathlib import Path
 from typing import Sequence
 
-from ..errors import EncodeError, UsageError
+from ..errors import EncodeError, OptionError
 from .atomic import commit_file, discard, prepare_folder, sibling
 
 __all__ = ["concat", "CONCAT_FORMATS"]
@@ -37,12 +37,12 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
     paths = [Path(p) for p in parts]
     fmt = target.suffix.lower().lstrip(".")
     if fmt not in CONCAT_FORMATS:
-        raise UsageError(f"{target}: can join {' or '.join(CONCAT_FORMATS)} parts only, not .{fmt}")
+        raise OptionError(f"{target}: can join {' or '.join(CONCAT_FORMATS)} parts only, not .{fmt}")
     if not paths:
-        raise UsageError(f"{target}: no parts to join")
+        raise OptionError(f"{target}: no parts to join")
     for path in paths:
         if not path.is_file():
-            raise UsageError(f"{path}: part to join does not exist")
+            raise OptionError(f"{path}: part to join does not exist")
     prepare_folder(target)
     temporary = sibling(target, "." + fmt)
     with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as listing:

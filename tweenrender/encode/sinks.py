@@ -14,7 +14,7 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
-from ..errors import EncodeError, UsageError
+from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 
 __all__ = ["FORMATS", "PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
@@ -62,9 +62,9 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     sinks; PNG frames are always straight RGBA).
     """
     if fmt not in FORMATS:
-        raise UsageError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
+        raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
     if fmt in ("mp4", "webm") and (width % 2 or height % 2):
-        raise UsageError(f"{fmt} video in yuv420p needs an even width and height, found {width}x{height}")
+        raise OptionError(f"{fmt} video in yuv420p needs an even width and height, found {width}x{height}")
     prepare_folder(target)
     if fmt == "png":
         return PngSequence(target, frames)
@@ -77,7 +77,7 @@ def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, o
     import imageio_ffmpeg
 
     if pixel_format not in PIXEL_FORMATS:
-        raise UsageError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)}")
+        raise OptionError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)}")
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
             "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}",
             "-i", source, "-an", *_CODECS[fmt], output]

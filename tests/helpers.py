@@ -1,0 +1,77 @@
+"""Helpers shared by the tests: paths, a scene to start from, running the CLI, decoding videos."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+SCENES = ROOT / "scenes"
+GOLDEN = Path(__file__).resolve().parent / "golden"
+DATA = Path(__file__).resolve().parent / "data"
+
+
+def run_module(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
+    """Run ``python -m tweenrender ARGS`` as a separate process."""
+    return subprocess.run([sys.executable, "-m", "tweenrender", *map(str, args)], capture_output=True,
+                          text=True, cwd=cwd, timeout=600)
+
+
+def decode(path: Path) -> tuple[dict, list[np.ndarray]]:
+    """A video's metadata and every frame as RGB ``(H, W, 3)`` uint8, decoded by ffmpeg."""
+    import imageio_ffmpeg
+
+    reader = imageio_ffmpeg.read_frames(str(path))
+    meta = next(reader)
+    width, height = meta["size"]
+    frames = [np.frombuffer(raw, np.uint8).reshape(height, width, 3) for raw in reader]
+    return meta, frames
+
+
+def write_scene(folder: Path, text: str, name: str = "scene.toml") -> Path:
+    path = folder / name
+    path.write_text(text)
+    return path
+
+
+SQUARE = """size = [320, 240]
+view = [-2, -2, 10, 7]
+[[shape]]
+name = "sq"
+[[shape.key]]
+time = 0
+points = [[0, 0], [2, 0], [2, 2], [0, 2]]
+[[shape.key]]
+time = 2
+points = [[7, 1], [7, 3], [5, 3], [5, 1]]
+"""
+"""The thesis's square (ch. 6): 2 × 2, translated and turned 90° in 2 s, in a 320 × 240 frame."""
+
+
+def read_png(path: Path) -> np.ndarray:
+    import imageio.v3 as iio
+
+    return np.asarray(iio.imread(path))
+
+
+def assert_close_to_golden(picture: np.ndarray, name: str, update: bool) -> None:
+    """Compare ``picture`` with ``tests/golden/NAME`` within antialiasing noise.
+
+    With ``--update-golden`` the golden image is rewritten and the test *skips*: a test
+    that writes its own expectation proves nothing in that run.
+    """
+    import imageio.v3 as iio
+    import pytest
+
+    golden = GOLDEN / name
+    if update:
+        iio.imwrite(golden, picture)
+        pytest.skip(f"rewrote {golden.name}; run again without --update-golden to compare")
+    expected = read_png(golden)
+    assert picture.shape == expected.shape, f"{name}: {picture.shape} against {expected.shape}"
+    difference = np.abs(picture.astype(int) - expected.astype(int))
+    assert difference.mean() < 0.5 and np.percentile(difference, 99.9) < 64, \
+        f"{name}: mean difference {difference.mean():.3f}, 99.9th percentile {np.percentile(difference, 99.9)}"

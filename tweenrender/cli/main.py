@@ -1,0 +1,114 @@
+"""The ``tweenrender`` command: parses arguments, runs a command, maps errors to exit codes.
+
+Exit codes: 0 done, 1 a failure while rendering or encoding, 2 bad input or usage.
+Commands live beside this module, one module each (see :data:`COMMANDS`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import signal
+import sys
+from importlib import import_module
+from typing import Iterator, Sequence
+
+from .. import __version__
+from ..errors import TweenrenderError, UsageError
+
+__all__ = ["COMMANDS", "main", "build_parser"]
+
+COMMANDS = ("render", "check", "stats", "correspond", "qcurves", "sheet", "reel")
+"""The commands, in the order ``--help`` lists them; each is the module of that name beside this one."""
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="tweenrender",
+        description="Inbetween 2-D keyframe polygons (linear, nonlinear Bézier, rigid, jointed paths) "
+                    "and render them to PNG frames or video.")
+    parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of failures")
+    parser.add_argument("--version", action="version", version=f"tweenrender {__version__}")
+    subparsers = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name in COMMANDS:
+        import_module(f"{__package__}.{name}").register(subparsers)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the exit code (0 done, 1 failure, 2 bad input, 130 interrupted)."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except UsageError as error:  # raised by a type= converter
+        print(f"tweenrender: error: {error}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return _interrupted()
+    try:
+        with _terminate_cleanly():
+            return args.run(args)
+    except KeyboardInterrupt:
+        return _interrupted()
+    except BrokenPipeError:
+        # the reader of stdout went away (``| head``): nothing left to say, and nowhere to say it
+        _silence_stdout()
+        return 1
+    except TweenrenderError as error:
+        _explain(args.verbose)
+        print(f"tweenrender: error: {_one_line(str(error))}", file=sys.stderr)
+        return error.exit_code
+    except Exception as error:  # noqa: BLE001 - the last line of defence against tracebacks
+        _explain(args.verbose)
+        print(f"tweenrender: error: unexpected {type(error).__name__}: {_one_line(str(error))} "
+              "(run with -v for details)", file=sys.stderr)
+        return 1
+
+
+@contextlib.contextmanager
+def _terminate_cleanly() -> Iterator[None]:
+    """Turn SIGTERM (``kill``, ``timeout``, a container stopping) into ``SystemExit(143)``.
+
+    Python's default SIGTERM ends the process on the spot; as an exception it
+    unwinds through the sinks, which remove their temporaries.
+    """
+    def stop(signum: int, frame: object) -> None:
+        raise SystemExit(128 + signum)
+
+    try:
+        previous = signal.signal(signal.SIGTERM, stop)
+    except ValueError:  # not the main thread: leave signals alone
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _interrupted() -> int:
+    # outputs go through temporaries, and the sinks remove theirs on the way out
+    print("tweenrender: interrupted; no output was changed", file=sys.stderr)
+    return 130
+
+
+def _explain(verbose: bool) -> None:
+    """With ``-v``, the traceback of the error being handled, before its one-line message."""
+    if verbose:
+        import traceback
+
+        traceback.print_exc(file=sys.stderr)
+
+
+def _one_line(text: str) -> str:
+    return " | ".join(line.strip() for line in text.splitlines() if line.strip()) or "no message"
+
+
+def _silence_stdout() -> None:
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass

@@ -1,0 +1,69 @@
+"""``tweenrender render SCENE ...``: frames to video or PNG, one panel per method with ``--compare``.
+
+Parses the flags and calls :func:`tweenrender.write`, which writes exactly what this command writes.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..errors import UsageError
+from ..model import METHODS
+from .args import check_frame_count, count, fps, max_frames_flag, method, methods, size
+from .matching_flags import add_matching_flags
+from .overlay_flags import add_overlay_flags
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    from ..encode import FORMATS
+
+    p = sub.add_parser("render", help="render a scene to video or PNG frames")
+    p.add_argument("scene", metavar="SCENE")
+    p.add_argument("-o", "--output", metavar="OUT",
+                   help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png)")
+    p.add_argument("--method", type=method, metavar="M", help=f"one method for every shape: {', '.join(METHODS)}")
+    p.add_argument("--compare", nargs="?", const="", metavar="M,M..",
+                   help="one labelled panel per method, side by side (default: the scene's compare list)")
+    p.add_argument("--format", choices=FORMATS)
+    p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (of each panel)")
+    p.add_argument("--fps", type=fps, metavar="N")
+    p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")
+    add_overlay_flags(p)
+    add_matching_flags(p)
+    max_frames_flag(p)
+    p.add_argument("--workers", type=count(1, 256, "--workers"), metavar="N",
+                   help="processes drawing frames (default: 1 for video, whose encoder is the limit; "
+                        "one per core for PNG frames of more than a second or so of 1080p)")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(run=run)
+
+
+def default_target(scene_path: str, fmt: str | None, compare: bool) -> Path:
+    """``output/<stem>.<fmt>`` (``<stem>-compare`` for comparisons; a folder ``output/<stem>`` for png)."""
+    stem = Path(scene_path).stem + ("-compare" if compare else "")
+    fmt = fmt or "mp4"
+    return Path("output") / (stem if fmt == "png" else f"{stem}.{fmt}")
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..pipeline.job import pick_frames, total_frames
+    from ..pipeline.library import output_format, write
+    from ..scenefile import load_scene
+    from .progress import ProgressBar
+
+    if args.method and args.compare is not None:
+        raise UsageError("--method and --compare do not go together: list the methods in --compare")
+    compare = None if args.compare is None else (methods(args.compare) if args.compare else True)
+    target = Path(args.output) if args.output is not None else default_target(args.scene, args.format,
+                                                                               compare is not None)
+    output_format(target, args.format)  # a name the format cannot be told from is refused before loading
+    scene = load_scene(args.scene)
+    frames = pick_frames(args.frames, total_frames(scene, args.fps))
+    check_frame_count(len(frames), args.max_frames, args.scene)
+    bar = ProgressBar(target.name, enabled=False if args.quiet else None)
+    print(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
+                fps=args.fps, frames=frames, paths=args.paths, onion=args.onion, strip=args.strip,
+                cost=args.cost, align=args.align, equal_counts=args.equal_counts, workers=args.workers,
+                progress=bar))
+    return 0

@@ -1,0 +1,49 @@
+"""Marks for diagrams (plots, correspondence pictures) on a :class:`Raster`, sized by one scale."""
+
+from __future__ import annotations
+
+import numpy as np
+import skia
+from numpy.typing import NDArray
+
+from ..model import Color
+from .fonts import font
+from .surface import Raster, paint_color
+
+__all__ = ["Painter"]
+
+_WHITE: Color = (255, 255, 255, 255)
+
+
+class Painter:
+    """Lines, dots, rings and text in pixels; every width and size is multiplied by ``scale``."""
+
+    def __init__(self, raster: Raster, scale: float) -> None:
+        self.raster, self.canvas, self.scale = raster, raster.canvas, scale
+        self.fill = skia.Paint(AntiAlias=True, Style=skia.Paint.kFill_Style)
+        self.stroke = skia.Paint(AntiAlias=True, Style=skia.Paint.kStroke_Style,
+                                 StrokeCap=skia.Paint.kRound_Cap, StrokeJoin=skia.Paint.kRound_Join)
+
+    def line(self, a: NDArray[np.float64], b: NDArray[np.float64], color: Color, width: float,
+             alpha: float = 1.0) -> None:
+        self.stroke.setColor(paint_color(color, alpha))
+        self.stroke.setStrokeWidth(width * self.scale)
+        self.canvas.drawLine(float(a[0]), float(a[1]), float(b[0]), float(b[1]), self.stroke)
+
+    def dot(self, p: NDArray[np.float64], radius: float, color: Color, hollow: bool = False) -> None:
+        """A filled dot, or a ring on white when ``hollow``."""
+        if hollow:
+            self.dot(p, radius, _WHITE)
+            self.ring(p, radius, color, 1.5)
+            return
+        self.fill.setColor(paint_color(color))
+        self.canvas.drawCircle(float(p[0]), float(p[1]), radius * self.scale, self.fill)
+
+    def ring(self, p: NDArray[np.float64], radius: float, color: Color, width: float = 1.6) -> None:
+        self.stroke.setColor(paint_color(color))
+        self.stroke.setStrokeWidth(width * self.scale)
+        self.canvas.drawCircle(float(p[0]), float(p[1]), radius * self.scale, self.stroke)
+
+    def text_width(self, words: str, size: float, bold: bool = False) -> float:
+        """Pixels ``words`` take at ``size`` (before scaling)."""
+        return font(size * self.scale, bold).measureText(words)

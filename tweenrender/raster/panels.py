@@ -1,0 +1,84 @@
+"""Compose a frame: the scene's shapes in one panel, or one labelled panel per method."""
+
+from __future__ import annotations
+
+from typing import Protocol, Sequence
+
+import numpy as np
+import skia
+from numpy.typing import NDArray
+
+from ..model import Color, Points, Scene
+from .surface import Raster
+from .view import Box, Viewport
+
+__all__ = ["Composer", "Layer"]
+
+_LABEL: Color = (30, 34, 45, 255)
+_LABEL_SOFT: Color = (30, 34, 45, 150)
+_DIVIDER: Color = (30, 34, 45, 70)
+
+
+class Layer(Protocol):
+    """Something drawn in every panel, behind (``under``) or in front of (``over``) the shapes."""
+
+    def under(self, canvas: skia.Canvas, panel: int, width: int, height: int, time: float) -> None: ...
+
+    def over(self, canvas: skia.Canvas, panel: int, width: int, height: int, time: float) -> None: ...
+
+
+class Composer:
+    """Draws frames of ``len(labels)`` side-by-side panels, each ``width × height``.
+
+    ``labels`` holds each panel's caption (the method's name) or ``None`` for a
+    plain render, which draws the scene and nothing else.
+    """
+
+    def __init__(self, scene: Scene, labels: Sequence[str | None], width: int, height: int, view: Box) -> None:
+        self.scene = scene
+        self.labels = tuple(labels)
+        self.panel_width, self.height = width, height
+        self.width = width * len(self.labels)
+        self.viewport = Viewport(view, width, height)
+        self.raster = Raster(self.width, height)
+        # extras per panel (see raster.overlays): ``under``/``over`` hooks called with
+        # (canvas, panel index, panel width, height, time), the canvas in panel pixels
+        self.layers: list[Layer] = []
+
+    def draw(self, panels: Sequence[Sequence[Points]], time: float, layout: str = "rgba") -> NDArray[np.uint8]:
+        """One frame from each panel's polygons (one ``(N, 2)`` per shape, in file order).
+
+        Returns straight RGBA ``(height, width, 4)``, reused by the next call; with
+        ``layout="bgra"`` the surface's own premultiplied BGRA pixels, without a
+        copy (straight wherever the background is opaque).
+        """
+        raster = self.raster
+        raster.clear(self.scene.background)
+        for index, polygons in enumerate(panels):
+            raster.canvas.save()
+            raster.canvas.translate(index * self.panel_width, 0)
+            raster.canvas.clipRect(skia.Rect.MakeWH(self.panel_width, self.height))
+            for layer in self.layers:
+                layer.under(raster.canvas, index, self.panel_width, self.height, time)
+            self.draw_shapes(polygons)
+            for layer in self.layers:
+                layer.over(raster.canvas, index, self.panel_width, self.height, time)
+            label = self.labels[index]
+            if label is not None:
+                self.draw_label(label, time)
+            raster.canvas.restore()
+        for index in range(1, len(panels)):
+            x = index * self.panel_width - 0.5
+            raster.line((x, 0), (x, self.height), _DIVIDER, 1.0)
+        return raster.bgra() if layout == "bgra" else raster.rgba()
+
+    def draw_shapes(self, polygons: Sequence[Points], alpha: float = 1.0) -> None:
+        for shape, polygon in zip(self.scene.shapes, polygons):
+            self.raster.polygon(self.viewport.to_pixels(polygon), shape.fill, shape.stroke,
+                                shape.stroke_width, alpha)
+
+    def draw_label(self, label: str, time: float) -> None:
+        size = max(11.0, self.height / 24)
+        pad = size * 0.8
+        self.raster.text(label, pad, pad + size, size, _LABEL, bold=True)
+        self.raster.text(f"{time:5.2f} s", pad, pad + 2.1 * size, size * 0.75, _LABEL_SOFT)

@@ -1,0 +1,1 @@
+"""Diagrams, one module each: the correspondence picture, the Q-curve plot, the storyboard sheet."""

@@ -1,1 +1,0 @@
-"""Rasterising with skia: world → pixel mapping, fills, strokes, labels, panels."""

@@ -1,4 +1,9 @@
-"""The scene as loaded: frozen dataclasses over read-only float64 arrays."""
+"""The scene as loaded: frozen dataclasses over read-only float64 arrays.
+
+A :class:`Scene` holds :class:`Shape` s painted in order. A shape lives through its
+:class:`Key` s; each key is one or more :class:`Contour` s (outer outlines, holes,
+open strokes) and the :class:`Paint` they are drawn with at that time.
+"""
 
 from __future__ import annotations
 
@@ -10,12 +15,12 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "Points", "Color", "METHODS", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
-    "Key", "Joint", "Shape", "Matching", "Scene", "frozen_points",
+    "Points", "Color", "METHODS", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS", "FILL_RULES", "CAPS", "JOINS",
+    "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching", "Scene", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
-"""A polygon: shape ``(N, 2)``, float64, world units, y up, closed implicitly."""
+"""A contour: shape ``(N, 2)``, float64, world units, y up; closed implicitly unless said open."""
 
 Color = tuple[int, int, int, int]
 """Straight (unpremultiplied) RGBA, each 0..255."""
@@ -26,6 +31,13 @@ EASES: tuple[str, ...] = ("linear", "in", "out", "in-out")
 COSTS: tuple[str, ...] = ("distance", "sg")
 ALIGNS: tuple[str, ...] = ("none", "centroid")
 EQUAL_COUNTS: tuple[str, ...] = ("drawn", "match")
+FILL_RULES: tuple[str, ...] = ("nonzero", "evenodd")
+CAPS: tuple[str, ...] = ("butt", "round", "square")
+JOINS: tuple[str, ...] = ("miter", "round", "bevel")
+UNMATCHED: tuple[str, ...] = ("grow", "fade")
+"""What a contour or element without a partner in the next key does: grow from (shrink to) a point, or fade."""
+
+DEFAULT_FILL: Color = (59, 111, 216, 255)
 
 
 def frozen_points(points: object) -> Points:
@@ -36,12 +48,61 @@ def frozen_points(points: object) -> Points:
 
 
 @dataclass(frozen=True, slots=True)
+class Contour:
+    """One outline of a key: ``points (N, 2)``; ``closed`` joins the last vertex to the first.
+
+    An open contour is stroked as a polyline; filled (as SVG does) as if closed.
+    """
+
+    points: Points
+    closed: bool = True
+
+
+@dataclass(frozen=True, slots=True)
+class Paint:
+    """How a key is drawn: fill and stroke colours (``None``: not drawn), stroke width, opacity.
+
+    ``stroke_width`` is in pixels, or in world units for shapes whose ``stroke_scales``
+    (drawings: widths scale with the view, as in the SVG). ``opacity`` multiplies both.
+    """
+
+    fill: Color | None = DEFAULT_FILL
+    stroke: Color | None = None
+    stroke_width: float = 2.0
+    opacity: float = 1.0
+
+    @property
+    def visible(self) -> bool:
+        """Whether anything would be drawn with this paint."""
+        fills = self.fill is not None and self.fill[3] > 0
+        strokes = self.stroke is not None and self.stroke[3] > 0 and self.stroke_width > 0
+        return self.opacity > 0 and (fills or strokes)
+
+
+@dataclass(frozen=True, slots=True)
 class Key:
-    """A keyframe: its time in seconds, its polygon and the easing of the segment it starts."""
+    """A keyframe: its time in seconds, its contours, the easing of the segment it starts, its paint.
+
+    ``hidden`` marks where an element appearing in the next key grows from (or one
+    leaving after the previous key shrinks to): it is interpolated towards, never
+    drawn on its own.
+    """
 
     time: float
-    points: Points
+    contours: tuple[Contour, ...]
     ease: str = "linear"
+    paint: Paint = field(default_factory=Paint)
+    hidden: bool = False
+
+    @property
+    def points(self) -> Points:
+        """The first contour's points: the whole outline of a one-contour key."""
+        return self.contours[0].points
+
+    @classmethod
+    def outline(cls, time: float, points: object, ease: str = "linear", paint: Paint | None = None) -> Key:
+        """A key of one closed outline ``points (N, 2)``."""
+        return cls(time, (Contour(frozen_points(points)),), ease, paint or Paint())
 
 
 Joint = tuple[int, int]
@@ -50,13 +111,35 @@ Joint = tuple[int, int]
 
 @dataclass(frozen=True, slots=True)
 class Shape:
+    """A named element of the scene and its keys (strictly increasing times).
+
+    ``method`` ``None`` is the scene's method; ``balance`` ``None`` the scene's;
+    ``unmatched`` ``None`` the scene's rule for contours without a partner.
+    """
+
     name: str
     keys: tuple[Key, ...]
-    fill: Color = (59, 111, 216, 255)
-    stroke: Color | None = None
-    stroke_width: float = 2.0
-    method: str | None = None  # None: the scene's method
+    method: str | None = None
     joints: tuple[Joint, ...] = ()
+    fill_rule: str = "nonzero"
+    cap: str = "round"
+    join: str = "round"
+    miter_limit: float = 4.0
+    stroke_scales: bool = False  # True: stroke widths are world units (drawings), else pixels
+    unmatched: str | None = None
+
+    @property
+    def paint(self) -> Paint:
+        """The first key's paint."""
+        return self.keys[0].paint
+
+    @property
+    def fill(self) -> Color | None:
+        return self.keys[0].paint.fill
+
+    @property
+    def stroke(self) -> Color | None:
+        return self.keys[0].paint.stroke
 
 
 @dataclass(frozen=True, slots=True)
@@ -89,6 +172,7 @@ class Scene:
     compare: tuple[str, ...] = ("linear", "nonlinear")
     matching: Matching = field(default_factory=Matching)
     path: Path | None = None
+    unmatched: str = "grow"
 
     @property
     def duration(self) -> float:
@@ -97,3 +181,6 @@ class Scene:
 
     def method_of(self, shape: Shape) -> str:
         return shape.method or self.method
+
+    def unmatched_of(self, shape: Shape) -> str:
+        return shape.unmatched or self.unmatched

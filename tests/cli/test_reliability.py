@@ -276,7 +276,7 @@ def test_degenerate_shapes_render(cli, tmp_path: Path, case: str, method: str) -
 
     frames_of = Frames(RenderJob(load_scene(scene)))
     for time_ in np.linspace(0.0, 1.0, 21):
-        assert all(np.isfinite(p).all() for p in frames_of.polygons(method, float(time_)))
+        assert all(np.isfinite(c).all() for at in frames_of.shapes_at(method, float(time_)) for c in at.contours)
 
 
 def test_shapes_off_the_view_render_blank(cli, tmp_path: Path) -> None:

@@ -21,7 +21,7 @@ def _mid_frame_area_ratio(scene_path: Path, equal_counts: str) -> float:
     scene = load_scene(scene_path)
     shape = scene.shapes[0]
     track = build_track(shape, replace(scene.matching, equal_counts=equal_counts))
-    mid = track.at(np.array([0.5 * (shape.keys[0].time + shape.keys[1].time)]), "linear")[0]
+    mid = track.at(np.array([0.5 * (shape.keys[0].time + shape.keys[1].time)]), "linear")[0].contours[0]
     keys = 0.5 * (area(shape.keys[0].points) + area(shape.keys[1].points))
     return float(area(mid) / keys)
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from tweenrender.model import Key, Scene, Shape, frozen_points
+from tweenrender.model import Key, Paint, Scene, Shape, frozen_points
 from tweenrender.pipeline.job import Frames, RenderJob
 from tweenrender.raster.view import Viewport, fit_box
 
@@ -15,7 +15,7 @@ from tests.helpers import GOLDEN, SCENES, assert_close_to_golden, read_png
 
 def _square_scene(background=(255, 255, 255, 255), fill=(200, 40, 10, 255)) -> Scene:
     square = frozen_points([[1, 1], [3, 1], [3, 3], [1, 3]])
-    shape = Shape("sq", (Key(0.0, square), Key(1.0, square)), fill=fill)
+    shape = Shape("sq", (Key.outline(0.0, square, paint=Paint(fill)), Key.outline(1.0, square, paint=Paint(fill))))
     return Scene((shape,), size=(200, 100), view=(0, 0, 8, 4), background=background)
 
 
@@ -45,7 +45,7 @@ def test_plain_frame_is_the_exact_square_and_nothing_else() -> None:
 
 def test_antialiased_edge_has_fractional_coverage() -> None:
     square = frozen_points([[1.1, 1], [3.1, 1], [3.1, 3], [1.1, 3]])  # x edges at 27.5 and 77.5 px
-    shape = Shape("sq", (Key(0.0, square),), fill=(0, 0, 0, 255))
+    shape = Shape("sq", (Key.outline(0.0, square, paint=Paint((0, 0, 0, 255))),))
     frame = Frames(RenderJob(Scene((shape,), size=(200, 100), view=(0, 0, 8, 4))))(0)
     coverage = 1.0 - frame[50, :, 0].astype(float) / 255.0
     assert coverage.sum() == pytest.approx(50.0, abs=0.05)  # area is kept across the edge pixels

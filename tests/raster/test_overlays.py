@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from tweenrender.core.ratios import perimeter_ratio
-from tweenrender.model import Key, Scene, Shape, frozen_points
+from tweenrender.model import Key, Paint, Scene, Shape, frozen_points
 from tweenrender.pipeline.job import Frames, RenderJob, tracks_of
 
 K0 = np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float)
@@ -17,7 +17,7 @@ WHITE = np.array([255, 255, 255])
 
 
 def _scene(fill=(200, 40, 10, 255), fps: float = 24.0) -> Scene:
-    shape = Shape("sq", (Key(0.0, frozen_points(K0)), Key(2.0, frozen_points(K1))), fill=fill, stroke=None)
+    shape = Shape("sq", (Key.outline(0.0, K0, paint=Paint(fill)), Key.outline(2.0, K1, paint=Paint(fill))))
     return Scene((shape,), size=SIZE, view=VIEW, fps=fps)
 
 
@@ -168,8 +168,8 @@ def test_perimeter_ratio_closed_forms() -> None:
     assert np.allclose(perimeter_ratio(tracks, ["rigid"], np.linspace(0, 2, 9)), 1.0)
     assert perimeter_ratio(tracks, ["nonlinear"], [1.0])[0] == pytest.approx(1.0)
     # a still shape adds nothing; two moving shapes add perimeters: a 2x2 (8) and a 4x4 (16) square
-    still = Shape("still", (Key(0.0, frozen_points(K0 * 3)),))
-    big = Shape("big", (Key(0.0, frozen_points(K0 * 2)), Key(2.0, frozen_points(K1 * 2))))
+    still = Shape("still", (Key.outline(0.0, K0 * 3),))
+    big = Shape("big", (Key.outline(0.0, K0 * 2), Key.outline(2.0, K1 * 2)))
     both = Scene((scene.shapes[0], still, big), view=VIEW)
     mid = perimeter_ratio(tracks_of(both), ["linear", "linear", "rigid"], [1.0])[0]
     assert mid == pytest.approx((8 * np.cos(np.pi / 4) + 16) / 24)

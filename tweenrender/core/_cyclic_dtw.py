@@ -25,7 +25,7 @@ from numba import njit
 __all__ = [
     "STEP_B", "STEP_AB", "STEP_A",
     "distance_matrix", "maes_search", "every_start_search",
-    "sg_tables", "sg_search", "sg_path_energy", "stretch_work", "bend_work", "angle_change",
+    "sg_tables", "sg_search", "sg_path_energy", "stretch_work", "bend_work", "angle_change", "open_search",
 ]
 
 STEP_B, STEP_AB, STEP_A = 0, 1, 2
@@ -529,3 +529,51 @@ def sg_path_energy(a: np.ndarray, b: np.ndarray, pairs: np.ndarray, ks: float, c
                            b[pj, 0] - b[j, 0], b[pj, 1] - b[j, 1],
                            b[nj, 0] - b[j, 0], b[nj, 1] - b[j, 1], kb, eb, mb, pb)
     return total
+
+
+# --------------------------------------------------------------------------- open curves
+
+
+@_jit
+def open_search(w: np.ndarray) -> tuple[float, np.ndarray]:
+    """Cheapest monotone path from ``(0, 0)`` to ``(m - 1, n - 1)`` of ``w (m, n)``: its cost (every
+    node paid once) and its nodes ``(L, 2)``, start first. Plain dynamic time warping, O(mn);
+    ties prefer STEP_AB, then STEP_B, then STEP_A."""
+    m, n = w.shape
+    cost = np.empty((m, n))
+    moves = np.empty((m, n), np.uint8)
+    for i in range(m):
+        for j in range(n):
+            if i == 0 and j == 0:
+                cost[0, 0] = w[0, 0]
+                moves[0, 0] = STEP_AB
+                continue
+            best = np.inf
+            move = STEP_AB
+            if i > 0 and j > 0 and cost[i - 1, j - 1] < best:
+                best = cost[i - 1, j - 1]
+                move = STEP_AB
+            if j > 0 and cost[i, j - 1] < best:
+                best = cost[i, j - 1]
+                move = STEP_B
+            if i > 0 and cost[i - 1, j] < best:
+                best = cost[i - 1, j]
+                move = STEP_A
+            cost[i, j] = best + w[i, j]
+            moves[i, j] = move
+    path = np.empty((m + n, 2), np.int64)
+    i, j, count = m - 1, n - 1, 0
+    while True:
+        path[count, 0], path[count, 1] = i, j
+        count += 1
+        if i == 0 and j == 0:
+            break
+        move = moves[i, j]
+        if move != STEP_A:
+            j -= 1
+        if move != STEP_B:
+            i -= 1
+    out = np.empty((count, 2), np.int64)
+    for k in range(count):
+        out[k, 0], out[k, 1] = path[count - 1 - k, 0], path[count - 1 - k, 1]
+    return cost[m - 1, n - 1], out

@@ -39,7 +39,7 @@ memory — fine for the hundred-odd vertices of hand-drawn keys.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import ModuleType
 
 import numpy as np
@@ -51,7 +51,7 @@ from .geometry import centroid, signed_area
 
 __all__ = [
     "Correspondence", "work_matrix", "correspond", "naive_correspond", "path_work",
-    "is_cyclic_monotone",
+    "is_cyclic_monotone", "correspond_open", "is_open_monotone",
 ]
 
 Pairs = NDArray[np.intp]
@@ -112,9 +112,12 @@ def naive_correspond(a: Points, b: Points, matching: Matching = _DEFAULT) -> Cor
     return _correspond(a, b, matching, exhaustive=True)
 
 
-def path_work(a: Points, b: Points, pairs: ArrayLike, matching: Matching = _DEFAULT) -> float:
-    """Cost of any closed path ``pairs (L, 2)`` under ``matching``: what ``correspond`` minimises."""
+def path_work(a: Points, b: Points, pairs: ArrayLike, matching: Matching = _DEFAULT, closed: bool = True) -> float:
+    """Cost of any path ``pairs (L, 2)`` under ``matching``: what ``correspond`` (``closed``) or
+    ``correspond_open`` minimises (open curves always cost distance)."""
     _check_matching(matching)
+    if not closed and matching.cost != "distance":
+        matching = replace(matching, cost="distance")
     a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
     path = np.asarray(pairs)
     if path.ndim != 2 or path.shape[1] != 2 or len(path) == 0:
@@ -146,6 +149,46 @@ def is_cyclic_monotone(pairs: ArrayLike, m: int, n: int, reversed: bool = False)
     dj = ((j - np.roll(j, -1)) if reversed else (np.roll(j, -1) - j)) % n
     steps_ok = bool(np.all(di <= 1) and np.all(dj <= 1) and np.all(di + dj >= 1))
     return steps_ok and int(di.sum()) == m and int(dj.sum()) == n
+
+
+def correspond_open(a: Points, b: Points, matching: Matching = _DEFAULT) -> Correspondence:
+    """The least-work correspondence of open curves ``a (m, 2)`` and ``b (n, 2)`` (maths §5.7).
+
+    The closed search without its cyclic shift: ends pair with ends, and the path
+    is monotone from ``(0, 0)`` to ``(m - 1, n - 1)``. ``b`` is also tried walked
+    backwards (``reversed``: ``b``'s last vertex pairs with ``a``'s first), and the
+    cheaper is kept. The work is the distance cost after ``matching.align``
+    (the Sederberg–Greenwood energy is for closed outlines; ``cost = "sg"`` uses
+    distance here too).
+    """
+    _check_matching(matching)
+    matching = replace(matching, cost="distance")
+    a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
+    kernels = _kernels()
+    best: Correspondence | None = None
+    for backwards in (False, True):
+        walk = np.arange(len(b))[::-1] if backwards else np.arange(len(b))
+        work, nodes = kernels.open_search(kernels.distance_matrix(a, np.ascontiguousarray(b[walk])))
+        pairs = np.column_stack([nodes[:, 0], walk[nodes[:, 1]]]).astype(np.intp)
+        pairs.flags.writeable = False
+        if best is None or work < best.work - 1e-12 * max(1.0, abs(best.work)):
+            best = Correspondence(pairs, float(work), backwards)
+    assert best is not None
+    return best
+
+
+def is_open_monotone(pairs: ArrayLike, m: int, n: int, reversed: bool = False) -> bool:
+    """Whether ``pairs (L, 2)`` runs from one end of both curves to the other, each step advancing
+    i by 0 or 1 and j by 0 or 1 (by 0 or -1 when ``reversed``), never by nothing."""
+    path = np.asarray(pairs)
+    if path.ndim != 2 or path.shape[1:] != (2,) or len(path) == 0 or not np.issubdtype(path.dtype, np.integer):
+        return False
+    i, j = path[:, 0], path[:, 1]
+    if reversed:
+        j = (n - 1) - j
+    di, dj = np.diff(i), np.diff(j)
+    ends = i[0] == 0 and j[0] == 0 and i[-1] == m - 1 and j[-1] == n - 1
+    return bool(ends and np.all((di >= 0) & (di <= 1) & (dj >= 0) & (dj <= 1) & (di + dj >= 1)))
 
 
 def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> Correspondence:

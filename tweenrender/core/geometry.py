@@ -5,12 +5,14 @@ A polygon is ``(..., N, 2)`` float64, closed implicitly; results drop the last t
 
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
     "centroid", "edges", "edge_lengths", "perimeter", "signed_area", "area",
-    "best_fit_rotation", "spoke_rotation", "rotate", "cross",
+    "best_fit_rotation", "spoke_rotation", "rotate", "cross", "outline_length",
 ]
 
 Array = NDArray[np.float64]
@@ -39,6 +41,14 @@ def edge_lengths(points: Array) -> Array:
 def perimeter(points: Array) -> Array:
     """Sum of edge lengths: ``(...)``."""
     return edge_lengths(points).sum(axis=-1)
+
+
+def outline_length(contours: Sequence[Array], closed: Sequence[bool]) -> float:
+    """Total length of contours ``(N_i, 2)``: perimeters of the closed ones, lengths of the open ones."""
+    total = 0.0
+    for points, shut in zip(contours, closed):
+        total += float(perimeter(points)) if shut else float(np.linalg.norm(np.diff(points, axis=0), axis=1).sum())
+    return total
 
 
 def signed_area(points: Array) -> Array:

@@ -25,7 +25,7 @@ from .geometry import best_fit_rotation, cross, edge_lengths
 __all__ = [
     "control_points", "evaluate", "angle_at", "passes_through_zero", "non_monotonic",
     "sweeps_over_180", "Motion", "vertex_kinds", "classify", "AutoChoice", "auto_choice",
-    "auto",
+    "auto_choice_contours", "auto",
 ]
 
 Array = NDArray[np.float64]
@@ -286,6 +286,22 @@ def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = ()) -> AutoChoice
     methods = tuple(_method(m) for m in motions)
     method = "jointed" if "nonlinear" in methods else "linear"
     return AutoChoice(method, "bodies: " + " / ".join(_short(m) for m in motions), methods)
+
+
+def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike]) -> AutoChoice:
+    """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys:
+    nonlinear when every contour turns rigidly by the same angle (within 1°), else linear."""
+    motions = [classify(a, b) for a, b in zip(k0s, k1s)]
+    if not motions:
+        return AutoChoice("linear", "no closed contour moves", ("linear",))
+    turns = [m.rotation_deg for m in motions if m.kind == "rotation"]
+    if len(turns) == len(motions) and max(turns) - min(turns) <= 1.0:
+        why = f"rigid rotation of {turns[0]:.1f} degrees ({len(motions)} contours)"
+        return AutoChoice("nonlinear", why, ("nonlinear",))
+    if all(m.kind == "translation" for m in motions):
+        return AutoChoice("linear", f"pure translation ({len(motions)} contours)", ("linear",))
+    return AutoChoice("linear", "contours change or move differently: " + " / ".join(_short(m) for m in motions),
+                      ("linear",))
 
 
 _PATHS = {"nonlinear": paths.nonlinear, "linear": paths.linear}

@@ -16,7 +16,7 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .geometry import perimeter
+from .geometry import outline_length
 from .timeline import Track
 
 __all__ = ["perimeter_ratio", "segment_midpoints"]
@@ -36,8 +36,10 @@ def perimeter_ratio(tracks: Sequence[Track], methods: Sequence[str], times: Arra
         if not track.segments:
             continue
         index = track.segment_index(times)
-        means = np.array([0.5 * (perimeter(s.k0) + perimeter(s.k1)) for s in track.segments])
-        inbetween += np.array([perimeter(p) for p in track.at(times, method)], dtype=np.float64)
+        means = np.array([0.5 * (outline_length([p.k0 for p in s.pairs], [p.closed for p in s.pairs])
+                                 + outline_length([p.k1 for p in s.pairs], [p.closed for p in s.pairs]))
+                          for s in track.segments])
+        inbetween += np.array([outline_length(at.contours, at.closed) for at in track.at(times, method)])
         reference += means[index]
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = inbetween / reference

@@ -1,24 +1,35 @@
-"""Keys → segments → polygons at any time (maths §5.3).
+"""Keys → segments → shapes at any time (maths §5.3, §5.7, §5.8).
 
-A shape's keys split its life into segments, one per consecutive pair of keys,
-each with its own correspondence (maths §2) and easing. Frame ``f`` is drawn at
-``time = f / fps``; before the first key a shape holds its first key, after its
-last key it holds the last one.
+A shape's keys split its life into segments, one per consecutive pair of keys.
+In each segment the contours of the two keys are paired (:mod:`.contours`),
+each pair is balanced to one vertex count (:mod:`.correspond`), and the pairs
+move together under the segment's method: all the pairs' vertices are
+interpolated as one point set, so a shape with holes or pieces turns about one
+center of mass. A contour without a partner grows from (or shrinks to) its
+anchor along straight paths. Paint blends in OKLab (:mod:`.paint`).
+
+Frame ``f`` is drawn at ``time = f / fps``; before the first key a shape holds
+its first key, after its last key the last one. A *hidden* key (where an element
+grows from or shrinks to) is reached, never shown.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import GeometryError
-from ..model import Matching, Points, Shape
-from .correspond import Correspondence, correspond
+from ..model import Contour, Key, Matching, Paint, Points, Shape
+from .contours import anchor, pair_contours
+from .correspond import Correspondence, correspond, correspond_open
 from .methods import interpolate
+from .paint import blend_paints
 
-__all__ = ["ease", "frame_count", "Segment", "Track", "build_track"]
+__all__ = ["ease", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
+           "evaluate_segment"]
 
 Array = NDArray[np.float64]
 
@@ -48,23 +59,77 @@ def frame_count(duration: float, fps: float) -> int:
 
 
 @dataclass(frozen=True, slots=True)
+class Pair:
+    """One contour through a segment: ``k0``, ``k1`` are ``(L, 2)`` after balancing.
+
+    ``source`` is the contour's index in each key (``None``: it has no partner there and
+    grows from, or shrinks to, a point); ``counts`` the two contours' vertex counts as
+    drawn; ``correspondence`` the balancing path (``None`` where the drawn order is kept).
+    """
+
+    k0: Points
+    k1: Points
+    closed: bool
+    counts: tuple[int, int]
+    correspondence: Correspondence | None
+    source: tuple[int | None, int | None]
+
+    @property
+    def moving(self) -> bool:
+        """Whether the contour is in both keys (not growing or shrinking)."""
+        return None not in self.source
+
+
+@dataclass(frozen=True, slots=True)
 class Segment:
-    """Two corresponding keys: ``k0``, ``k1`` are ``(L, 2)`` after balancing."""
+    """Two consecutive keys in correspondence: their contour pairs, paints and easing."""
 
     start: float
     end: float
-    k0: Points
-    k1: Points
     ease: str
-    joints: tuple[tuple[int, int], ...]  # in balanced vertex indices
-    counts: tuple[int, int]  # vertex counts of the two keys as drawn
-    correspondence: Correspondence | None  # None when the counts agree (the drawn order is kept)
+    pairs: tuple[Pair, ...]
+    joints: tuple[tuple[int, int], ...]  # in balanced vertex indices (one-contour shapes only)
+    paints: tuple[Paint, Paint]
+    shown: tuple[bool, bool]  # False for a hidden key
 
     def local_t(self, times: Array) -> Array:
         """Eased parameter in [0, 1] of ``times (T,)`` seconds within this segment."""
         span = self.end - self.start
         t = np.clip((times - self.start) / span, 0.0, 1.0)
         return ease(t, self.ease)
+
+    @property
+    def k0(self) -> Points:
+        """The balanced first key of a one-contour segment: ``(L, 2)``."""
+        return self._only().k0
+
+    @property
+    def k1(self) -> Points:
+        """The balanced second key of a one-contour segment: ``(L, 2)``."""
+        return self._only().k1
+
+    @property
+    def counts(self) -> tuple[int, int]:
+        return self._only().counts
+
+    @property
+    def correspondence(self) -> Correspondence | None:
+        return self._only().correspondence
+
+    def _only(self) -> Pair:
+        if len(self.pairs) != 1:
+            raise GeometryError(f"a segment of {len(self.pairs)} contours has no single pair of keys")
+        return self.pairs[0]
+
+
+@dataclass(frozen=True, slots=True)
+class ShapeAt:
+    """A shape as drawn at one time: its contours ``(N_i, 2)``, which are closed, its paint."""
+
+    contours: tuple[Points, ...]
+    closed: tuple[bool, ...]
+    paint: Paint
+    visible: bool = True
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,53 +138,139 @@ class Track:
 
     name: str
     segments: tuple[Segment, ...]
-    still: Points  # the only key of a static shape (unused when there are segments)
+    still: ShapeAt  # the only key of a static shape (unused when there are segments)
 
     def segment_index(self, times: Array) -> NDArray[np.intp]:
         """The segment each of ``times (F,)`` seconds falls in: ``(F,)`` (the first before, the last after)."""
         starts = np.array([s.start for s in self.segments])
         return np.clip(np.searchsorted(starts, times, side="right") - 1, 0, len(self.segments) - 1)
 
-    def at(self, times: Array, method: str) -> list[Points]:
-        """The shape's polygon at each of ``times (F,)`` seconds: a list of ``(N_f, 2)`` arrays.
+    def at(self, times: Array, method: str) -> list[ShapeAt]:
+        """The shape at each of ``times (F,)`` seconds under ``method``: one :class:`ShapeAt` each.
 
-        Frames are grouped by segment so each segment's paths are evaluated in
-        one vectorised call.
+        Frames are grouped by segment so each segment's paths are evaluated in one vectorised call.
         """
         times = np.atleast_1d(np.asarray(times, dtype=np.float64))
         if not self.segments:
             return [self.still] * len(times)
         index = self.segment_index(times)
-        out: list[Points] = [self.still] * len(times)
+        out: list[ShapeAt] = [self.still] * len(times)
         for s in np.unique(index):
-            seg = self.segments[s]
+            segment = self.segments[s]
             picked = np.flatnonzero(index == s)
-            polygons = interpolate(seg.k0, seg.k1, seg.local_t(times[picked]), method, seg.joints)
-            for slot, polygon in zip(picked, polygons):
-                out[slot] = polygon
+            for slot, shape in zip(picked, evaluate_segment(segment, segment.local_t(times[picked]), method)):
+                out[slot] = shape
         return out
+
+    def outlines(self, times: Array, method: str) -> list[tuple[Points, ...]]:
+        """Only the contours of :meth:`at`: a tuple of ``(N_i, 2)`` arrays per time."""
+        return [shape.contours for shape in self.at(times, method)]
+
+
+def segment_method(segment: Segment, method: str) -> str:
+    """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its closed
+    contours when it has several (a one-contour segment keeps ``auto``, which decides per body)."""
+    moving = [p for p in segment.pairs if p.moving]
+    if method != "auto" or len(moving) <= 1:
+        return method
+    from .qcurves import auto_choice_contours
+
+    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed]).method
+
+
+def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
+    """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t."""
+    pairs = segment.pairs
+    frames: list[Array | None] = [None] * len(pairs)  # each (T, L_i, 2)
+    moving = [i for i, p in enumerate(pairs) if p.moving]
+    if moving:
+        k0 = np.concatenate([pairs[i].k0 for i in moving])
+        k1 = np.concatenate([pairs[i].k1 for i in moving])
+        together = interpolate(k0, k1, t, segment_method(segment, method), segment.joints)
+        cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
+        for i, part in zip(moving, np.split(together, cuts, axis=1)):
+            frames[i] = part
+    for i, pair in enumerate(pairs):
+        if frames[i] is None:  # growing or shrinking: straight paths to or from its anchor
+            frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
+    closed = tuple(p.closed for p in pairs)
+    paints = blend_paints(*segment.paints, t)
+    out = []
+    for k, (x, paint) in enumerate(zip(t.tolist(), paints)):
+        visible = segment.shown[0] if x == 0.0 else segment.shown[1] if x == 1.0 else True
+        contours = tuple(f[k] for f in frames)  # type: ignore[index]
+        out.append(ShapeAt(contours, closed, paint, visible and paint.visible))
+    return out
+
+
+def _still(key: Key) -> ShapeAt:
+    return ShapeAt(tuple(c.points for c in key.contours), tuple(c.closed for c in key.contours), key.paint,
+                   not key.hidden and key.paint.visible)
 
 
 def build_track(shape: Shape, matching: Matching) -> Track:
-    """Balance every consecutive pair of ``shape``'s keys and carry its joints through."""
+    """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through."""
     keys = shape.keys
     joints = tuple(shape.joints)  # indices into the current key's vertices
     segments = []
     for before, after in zip(keys, keys[1:]):
-        a, b = before.points, after.points
-        if len(a) == len(b) and matching.equal_counts == "drawn":
-            k0, k1, found, balanced_joints = a, b, None, joints
-            carried = joints
-        else:
-            found = correspond(a, b, matching)
-            k0, k1 = found.apply(a, b)
-            first_of = _first_occurrence(found.pairs[:, 0], len(a))
-            balanced_joints = tuple((int(first_of[i]), int(first_of[j])) for i, j in joints)
-            carried = tuple((int(found.pairs[p, 1]), int(found.pairs[q, 1])) for p, q in balanced_joints)
-        segments.append(Segment(before.time, after.time, k0, k1, before.ease,
-                                balanced_joints, (len(a), len(b)), found))
-        joints = carried
-    return Track(shape.name, tuple(segments), keys[0].points)
+        pairs = _pairs(before, after, shape.fill_rule, matching)
+        balanced_joints: tuple[tuple[int, int], ...] = ()
+        if joints and len(pairs) == 1:
+            found = pairs[0].correspondence
+            if found is None:
+                balanced_joints = carried = joints
+            else:
+                first_of = _first_occurrence(found.pairs[:, 0], pairs[0].counts[0])
+                balanced_joints = tuple((int(first_of[i]), int(first_of[j])) for i, j in joints)
+                carried = tuple((int(found.pairs[p, 1]), int(found.pairs[q, 1])) for p, q in balanced_joints)
+            joints = carried
+        segments.append(Segment(before.time, after.time, before.ease, pairs, balanced_joints,
+                                (before.paint, after.paint), (not before.hidden, not after.hidden)))
+    return Track(shape.name, tuple(segments), _still(keys[0]))
+
+
+def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching) -> tuple[Pair, ...]:
+    a, b = before.contours, after.contours
+    if before.hidden or after.hidden:
+        # a hidden key is made contour by contour from its neighbour: pair them in order
+        links: list[tuple[int | None, int | None]] = [(i, i) for i in range(min(len(a), len(b)))]
+    else:
+        links = pair_contours([c.points for c in a], [c.closed for c in a],
+                              [c.points for c in b], [c.closed for c in b])
+    pairs = []
+    for i, j in links:
+        if i is not None and j is not None:
+            pairs.append(_balanced(a[i], b[j], (i, j), matching))
+            continue
+        # a contour without a partner: it shrinks to (i) or grows from (j) a point of the other key
+        alone, others = (a[i], b) if i is not None else (b[j], a)  # type: ignore[index]
+        point = anchor(alone.points, [c.points for c in others], [c.closed for c in others], fill_rule)
+        collapsed = np.broadcast_to(point, alone.points.shape)
+        k0, k1 = (alone.points, collapsed) if i is not None else (collapsed, alone.points)
+        n = len(alone.points)
+        pairs.append(Pair(_frozen(k0), _frozen(k1), alone.closed, (n, n), None, (i, j)))
+    return tuple(pairs)
+
+
+def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matching) -> Pair:
+    closed = a.closed and b.closed
+    m, n = len(a.points), len(b.points)
+    if m == n and matching.equal_counts == "drawn":
+        return Pair(a.points, b.points, closed, (m, n), None, source)
+    if m < 2 or n < 2:  # a single point: every vertex of the other pairs with it
+        k0 = np.broadcast_to(a.points[0], (max(m, n), 2)) if m == 1 else a.points
+        k1 = np.broadcast_to(b.points[0], (max(m, n), 2)) if n == 1 else b.points
+        return Pair(_frozen(k0), _frozen(k1), closed, (m, n), None, source)
+    found = correspond(a.points, b.points, matching) if closed else correspond_open(a.points, b.points, matching)
+    k0, k1 = found.apply(a.points, b.points)
+    return Pair(_frozen(k0), _frozen(k1), closed, (m, n), found, source)
+
+
+def _frozen(points: Array) -> Points:
+    array = np.array(points, dtype=np.float64)
+    array.flags.writeable = False
+    return array
 
 
 def _first_occurrence(indices: NDArray[np.intp], count: int) -> NDArray[np.intp]:
@@ -128,3 +279,4 @@ def _first_occurrence(indices: NDArray[np.intp], count: int) -> NDArray[np.intp]
     values, positions = np.unique(indices, return_index=True)
     first[values] = positions
     return first
+

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Callable, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.timeline import Track, build_track, frame_count
+from ..core.timeline import ShapeAt, Track, build_track, frame_count
 from ..errors import OptionError
 from ..model import Points, Scene
 
@@ -67,13 +67,14 @@ def scene_view(scene: Scene, tracks: Sequence[Track], methods: Sequence[str | No
 
     if scene.view is not None:
         return scene.view
-    outlines: list[Points] = [key.points for shape in scene.shapes for key in shape.keys]
+    outlines: list[Points] = [c.points for shape in scene.shapes for key in shape.keys if not key.hidden
+                              for c in key.contours]
     samples = np.linspace(0.0, 1.0, 17)
     for track, shape in zip(tracks, scene.shapes):
         for segment in track.segments:
             times = segment.start + samples * (segment.end - segment.start)
             for method in methods:
-                outlines.extend(track.at(times, method or scene.method_of(shape)))
+                outlines.extend(c for at in track.at(times, method or scene.method_of(shape)) for c in at.contours)
     return fit_box(outlines)
 
 
@@ -117,8 +118,8 @@ class Frames:
     layout: str = "rgba"  # "bgra": the surface's own premultiplied pixels (opaque backgrounds only)
     _tracks: tuple[Track, ...] | None = field(default=None, init=False, repr=False)
     _composer: Composer | None = field(default=None, init=False, repr=False)
-    _blocks: dict[str | None, tuple[int, list[list[Points]]]] = field(default_factory=dict, init=False,
-                                                                      repr=False)
+    _blocks: dict[str | None, tuple[int, list[list[ShapeAt]]]] = field(default_factory=dict, init=False,
+                                                                       repr=False)
 
     @property
     def tracks(self) -> tuple[Track, ...]:
@@ -126,14 +127,14 @@ class Frames:
             self._tracks = tracks_of(self.job.scene)
         return self._tracks
 
-    def polygons(self, method: str | None, time: float) -> list[Points]:
-        """Every shape's polygon at ``time`` seconds under ``method`` (``None``: the shape's own)."""
+    def shapes_at(self, method: str | None, time: float) -> list[ShapeAt]:
+        """Every shape as it is at ``time`` seconds under ``method`` (``None``: the shape's own)."""
         scene = self.job.scene
         return [track.at(np.array([time]), method or scene.method_of(shape))[0]
                 for track, shape in zip(self.tracks, scene.shapes)]
 
-    def frame_polygons(self, method: str | None, index: int) -> list[Points]:
-        """Every shape's polygon at frame ``index``: ``polygons(method, index / fps)``, but evaluated
+    def frame_shapes(self, method: str | None, index: int) -> list[ShapeAt]:
+        """Every shape at frame ``index``: ``shapes_at(method, index / fps)``, but evaluated
         for a block of ``_BLOCK`` frames at once, so the per-call cost of numpy is paid once a block."""
         block = index // _BLOCK
         cached = self._blocks.get(method)
@@ -161,21 +162,21 @@ class Frames:
                 if job.strip:
                     self._composer.viewport = above_strip(self._composer.viewport)
                 self._composer.layers.append(PanelOverlays(
-                    job.scene, self.tracks, job.methods, self._composer.viewport, job.rate, self.polygons,
+                    job.scene, self.tracks, job.methods, self._composer.viewport, job.rate, self.shapes_at,
                     paths=job.paths, onion=job.onion, strip=job.strip))
         return self._composer
 
     def __call__(self, index: int) -> NDArray[np.uint8]:
         """Frame ``index`` as straight RGBA ``(height, width, 4)`` (a buffer reused by the next call),
         or as the surface's premultiplied BGRA when ``layout`` is ``"bgra"``."""
-        panels = [self.frame_polygons(method, index) for method in self.job.methods]
+        panels = [self.frame_shapes(method, index) for method in self.job.methods]
         return self._draw(panels, index / self.job.rate)
 
     def at_time(self, time: float) -> NDArray[np.uint8]:
         """The picture at any ``time`` in seconds, on or between frames; reused like ``self(index)``."""
-        return self._draw([self.polygons(method, time) for method in self.job.methods], time)
+        return self._draw([self.shapes_at(method, time) for method in self.job.methods], time)
 
-    def _draw(self, panels: list[list[Points]], time: float) -> NDArray[np.uint8]:
+    def _draw(self, panels: list[list[ShapeAt]], time: float) -> NDArray[np.uint8]:
         return self.composer.draw(panels, time, self.layout)
 
 

@@ -71,10 +71,18 @@ def frames(scene: Scene, *, method: str | None = None, size: tuple[int, int] | N
 
 
 def outlines(scene: Scene, time: float, *, method: str | None = None) -> list[Points]:
-    """Every shape's outline at ``time`` seconds under ``method`` (default each shape's own):
-    a list of fresh ``(N, 2)`` float64 arrays in scene units, y up, shapes in paint order."""
+    """Every drawn contour at ``time`` seconds under ``method`` (default each shape's own): a list of
+    fresh ``(N, 2)`` float64 arrays in scene units, y up — shapes in paint order, a shape's contours
+    in order, at the balanced vertex count. A closed contour does not repeat its first point; an
+    open one is not closed. Shapes not drawn at that time (before they appear, after they go,
+    fully transparent) are left out; contours that are growing or shrinking are in while they have size."""
     drawer = _frames_for(scene, method, None, None)
-    return [np.array(polygon, dtype=np.float64) for polygon in drawer.polygons(method, _finite_time(time))]
+    out = []
+    for at in drawer.shapes_at(method, _finite_time(time)):
+        if not at.visible:
+            continue
+        out += [np.array(c, dtype=np.float64) for c in at.contours if np.ptp(c, axis=0).max(initial=0.0) > 0]
+    return out
 
 
 def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = None,

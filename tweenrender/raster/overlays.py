@@ -4,7 +4,7 @@ A :class:`PanelOverlays` is a layer of a :class:`~tweenrender.raster.panels.Comp
 its ``under`` draws behind the shapes (paths, keys, ghosts), its ``over`` in
 front of them (the strip).
 
-* paths: each vertex's trajectory sampled densely with ``core.methods.interpolate``
+* paths: each vertex's trajectory sampled densely with ``core.timeline.evaluate_segment``
   (the Bézier, the rigid arc or the straight line that method really follows),
   thin and light, with every key outlined in dashes;
 * onion ``N``: ``N`` inbetweens before and ``N`` after the current frame, every
@@ -23,11 +23,10 @@ import numpy as np
 import skia
 from numpy.typing import NDArray
 
-from ..core.methods import interpolate
 from ..core.ratios import perimeter_ratio
-from ..core.timeline import Track, frame_count
-from ..model import Color, Points, Scene
-from .surface import paint_color, polygon_path
+from ..core.timeline import ShapeAt, Track, evaluate_segment, frame_count
+from ..model import Color, Scene
+from .surface import contours_path, paint_color, polygon_path
 from .view import Viewport
 
 __all__ = ["PanelOverlays", "onion_step", "path_polylines", "strip_box", "skia_path", "stroke_paint",
@@ -46,7 +45,7 @@ _STRIP_TEXT: Color = (30, 34, 45, 255)
 _CURVE: Color = (30, 34, 45, 230)
 _NOW: Color = (214, 69, 65, 255)
 
-Polygons = Callable[[str | None, float], Sequence[Points]]
+ShapesAt = Callable[[str | None, float], Sequence[ShapeAt]]
 
 
 def onion_step(fps: float) -> int:
@@ -62,8 +61,8 @@ def path_polylines(track: Track, method: str, samples: int = PATH_SAMPLES) -> li
     t = np.linspace(0.0, 1.0, samples)
     lines: list[NDArray[np.float64]] = []
     for segment in track.segments:
-        frames = interpolate(segment.k0, segment.k1, t, method, segment.joints)  # (S, N, 2)
-        lines.extend(np.transpose(frames, (1, 0, 2)))
+        stacked = np.stack([np.concatenate(at.contours) for at in evaluate_segment(segment, t, method)])  # (S, N, 2)
+        lines.extend(np.transpose(stacked, (1, 0, 2)))
     return lines
 
 
@@ -114,15 +113,15 @@ class PanelOverlays:
     """The overlays of a comparison: one instance serves every panel of a frame.
 
     ``methods`` holds each panel's method (``None``: each shape's own);
-    ``polygons(method, time)`` gives every shape's ``(N, 2)`` polygon at ``time``.
+    ``shapes_at(method, time)`` gives every shape as it is at ``time``.
     """
 
     def __init__(self, scene: Scene, tracks: Sequence[Track], methods: Sequence[str | None],
-                 viewport: Viewport, fps: float, polygons: Polygons, *, paths: bool = False,
+                 viewport: Viewport, fps: float, shapes_at: ShapesAt, *, paths: bool = False,
                  onion: int = 0, strip: bool = False) -> None:
         self.scene, self.tracks, self.viewport, self.fps = scene, tuple(tracks), viewport, fps
         self.methods = tuple(methods)
-        self.polygons = polygons
+        self.shapes_at = shapes_at
         self.onion = max(0, int(onion))
         self.step = onion_step(fps)
         self.duration = scene.duration
@@ -149,12 +148,17 @@ class PanelOverlays:
         to_pixels = self.viewport.to_pixels
         curves: list[NDArray[np.float64]] = []
         keys: list[NDArray[np.float64]] = []
+        opened: list[NDArray[np.float64]] = []
         for track, shape, method in zip(self.tracks, self.scene.shapes, shape_methods):
             if not track.segments:
                 continue
             curves.extend(to_pixels(line) for line in path_polylines(track, method))
-            keys.extend(to_pixels(key.points) for key in shape.keys)
-        return skia_path(curves, closed=False), skia_path(keys, closed=True)
+            keys.extend(to_pixels(c.points) for key in shape.keys if not key.hidden for c in key.contours if c.closed)
+            opened.extend(to_pixels(c.points) for key in shape.keys if not key.hidden for c in key.contours
+                          if not c.closed)
+        keys_path = skia_path(keys, closed=True)
+        keys_path.addPath(skia_path(opened, closed=False))
+        return skia_path(curves, closed=False), keys_path
 
     # -- layer hooks -------------------------------------------------------------------------
 
@@ -185,10 +189,13 @@ class PanelOverlays:
                 other = frame + sign * k * self.step
                 if not 0 <= other <= last:
                     continue
-                polygons = self.polygons(method, other / self.fps)
-                for shape, polygon in zip(self.scene.shapes, polygons):
-                    path = skia_path([self.viewport.to_pixels(polygon)], closed=True)
-                    canvas.drawPath(path, fill_paint(shape.fill, 0.25 * fade))
+                for shape, at in zip(self.scene.shapes, self.shapes_at(method, other / self.fps)):
+                    if not at.visible:
+                        continue
+                    pixels = [self.viewport.to_pixels(c) for c in at.contours]
+                    path = contours_path(pixels, at.closed, shape.fill_rule)
+                    if at.paint.fill is not None:
+                        canvas.drawPath(path, fill_paint(at.paint.fill, 0.25 * fade * at.paint.opacity))
                     canvas.drawPath(path, stroke_paint(tint, 1.2, 0.8 * fade))
 
     def _strip(self, canvas: skia.Canvas, panel: int, width: int, height: int, time: float) -> None:

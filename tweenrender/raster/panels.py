@@ -8,11 +8,12 @@ import numpy as np
 import skia
 from numpy.typing import NDArray
 
-from ..model import Color, Points, Scene
-from .surface import Raster
+from ..core.timeline import ShapeAt
+from ..model import Color, Scene, Shape
+from .surface import Raster, StrokeStyle, contours_path
 from .view import Box, Viewport
 
-__all__ = ["Composer", "Layer"]
+__all__ = ["Composer", "Layer", "draw_shape"]
 
 _LABEL: Color = (30, 34, 45, 255)
 _LABEL_SOFT: Color = (30, 34, 45, 150)
@@ -45,8 +46,8 @@ class Composer:
         # (canvas, panel index, panel width, height, time), the canvas in panel pixels
         self.layers: list[Layer] = []
 
-    def draw(self, panels: Sequence[Sequence[Points]], time: float, layout: str = "rgba") -> NDArray[np.uint8]:
-        """One frame from each panel's polygons (one ``(N, 2)`` per shape, in file order).
+    def draw(self, panels: Sequence[Sequence[ShapeAt]], time: float, layout: str = "rgba") -> NDArray[np.uint8]:
+        """One frame from each panel's shapes (one :class:`ShapeAt` per shape of the scene, in paint order).
 
         Returns straight RGBA ``(height, width, 4)``, reused by the next call; with
         ``layout="bgra"`` the surface's own premultiplied BGRA pixels, without a
@@ -72,13 +73,28 @@ class Composer:
             raster.line((x, 0), (x, self.height), _DIVIDER, 1.0)
         return raster.bgra() if layout == "bgra" else raster.rgba()
 
-    def draw_shapes(self, polygons: Sequence[Points], alpha: float = 1.0) -> None:
-        for shape, polygon in zip(self.scene.shapes, polygons):
-            self.raster.polygon(self.viewport.to_pixels(polygon), shape.fill, shape.stroke,
-                                shape.stroke_width, alpha)
+    def draw_shapes(self, shapes: Sequence[ShapeAt], alpha: float = 1.0) -> None:
+        """Every shape of the scene as it is at one time, in paint order."""
+        for shape, at in zip(self.scene.shapes, shapes):
+            draw_shape(self.raster, self.viewport, shape, at, alpha)
 
     def draw_label(self, label: str, time: float) -> None:
         size = max(11.0, self.height / 24)
         pad = size * 0.8
         self.raster.text(label, pad, pad + size, size, _LABEL, bold=True)
         self.raster.text(f"{time:5.2f} s", pad, pad + 2.1 * size, size * 0.75, _LABEL_SOFT)
+
+
+def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, alpha: float = 1.0) -> None:
+    """Draw ``shape`` as it is at one time (``at``) through ``viewport``; non-finite contours are skipped."""
+    if not at.visible:
+        return
+    pixels = [viewport.to_pixels(c) for c in at.contours]
+    kept = [(p, shut) for p, shut in zip(pixels, at.closed) if len(p) >= 2 and np.all(np.isfinite(p))]
+    if not kept:
+        return
+    paint = at.paint
+    width = paint.stroke_width * (viewport.scale if shape.stroke_scales else 1.0)
+    path = contours_path([p for p, _ in kept], [shut for _, shut in kept], shape.fill_rule)
+    raster.draw_path(path, paint.fill, paint.stroke, width, StrokeStyle(shape.cap, shape.join, shape.miter_limit),
+                     paint.opacity * alpha)

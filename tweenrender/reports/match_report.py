@@ -15,9 +15,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.correspond import correspond, path_work
-from ..core.timeline import build_track
+from ..core.correspond import correspond, correspond_open, path_work
 from ..model import Matching, Scene
+from .segments import entries
 
 if TYPE_CHECKING:
     from ..raster.plots.match_picture import CPanel
@@ -51,37 +51,40 @@ def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str,
     """
     matching = matching or scene.matching
     shapes = []
-    for shape in scene.shapes:
-        track = build_track(shape, matching)
-        for index, segment in enumerate(track.segments):
-            a, b = shape.keys[index].points, shape.keys[index + 1].points
-            found = segment.correspondence
-            if found is None:  # equal counts: the renderer keeps the animator's order
-                pairs = np.column_stack([np.arange(len(a)), np.arange(len(b))]).astype(np.intp)
-                work, reversed_, matched = path_work(a, b, pairs, matching), False, DRAWN
-                best = correspond(a, b, matching)
-                minimal, extra = best.work, {"minimal_pairs": best.pairs.tolist(),
-                                             "minimal_reversed": best.reversed}
-            else:
-                pairs, work, reversed_, matched = found.pairs, found.work, found.reversed, MINIMAL
-                minimal, extra = found.work, {}
-            shapes.append({
-                "name": shape.name,
-                "segment": index,
-                "times": [segment.start, segment.end],
-                "counts": [len(a), len(b)],
-                "balanced": int(len(pairs)),
-                "work": float(work),
-                "minimal_work": float(minimal),
-                "cost": matching.cost,
-                "align": matching.align,
-                "equal_counts": matching.equal_counts,
-                "reversed": bool(reversed_),
-                "matched": matched,
-                "inserted": {"a": inserted(pairs[:, 0], len(a)), "b": inserted(pairs[:, 1], len(b))},
-                "pairs": pairs.tolist(),
-                **extra,
-            })
+    for entry in entries(scene, matching):
+        index, (i, j) = entry.index, entry.pair.source
+        a = entry.shape.keys[index].contours[i].points  # type: ignore[index]
+        b = entry.shape.keys[index + 1].contours[j].points  # type: ignore[index]
+        closed = entry.pair.closed
+        found = entry.pair.correspondence
+        if len(a) < 2 or len(b) < 2:  # a single point pairs with every vertex of the other
+            continue
+        if found is None:  # equal counts: the renderer keeps the animator's order
+            pairs = np.column_stack([np.arange(len(a)), np.arange(len(b))]).astype(np.intp)
+            work, reversed_, matched = path_work(a, b, pairs, matching, closed), False, DRAWN
+            best = correspond(a, b, matching) if closed else correspond_open(a, b, matching)
+            minimal, extra = best.work, {"minimal_pairs": best.pairs.tolist(),
+                                         "minimal_reversed": best.reversed}
+        else:
+            pairs, work, reversed_, matched = found.pairs, found.work, found.reversed, MINIMAL
+            minimal, extra = found.work, {}
+        shapes.append({
+            **entry.head(),
+            "key_contours": [i, j],
+            "closed": closed,
+            "counts": [len(a), len(b)],
+            "balanced": int(len(pairs)),
+            "work": float(work),
+            "minimal_work": float(minimal),
+            "cost": matching.cost,
+            "align": matching.align,
+            "equal_counts": matching.equal_counts,
+            "reversed": bool(reversed_),
+            "matched": matched,
+            "inserted": {"a": inserted(pairs[:, 0], len(a)), "b": inserted(pairs[:, 1], len(b))},
+            "pairs": pairs.tolist(),
+            **extra,
+        })
     return {"scene": str(scene.path) if scene.path else None, "cost": matching.cost,
             "align": matching.align, "equal_counts": matching.equal_counts, "shapes": shapes}
 
@@ -145,7 +148,9 @@ def report_panels(scene: Scene, report: dict[str, Any]) -> list[CPanel]:
             words = f"minimal work {e['work']:.4g} ({how})"
             if e["reversed"]:
                 words += "; b winds the other way and is walked backwards"
-        a, b = np.asarray(keys[e["segment"]].points), np.asarray(keys[e["segment"] + 1].points)
+        i, j = e.get("key_contours", (0, 0))
+        a = np.asarray(keys[e["segment"]].contours[i].points)
+        b = np.asarray(keys[e["segment"] + 1].contours[j].points)
         panels.append(_CPanel(title, words, a, b, np.asarray(e["pairs"], dtype=np.intp).reshape(-1, 2)))
         if "minimal_pairs" in e:
             # Shown beside the drawn order so the two can be compared; rendering keeps the drawn order.

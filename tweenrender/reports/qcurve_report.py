@@ -15,8 +15,9 @@ import numpy as np
 from ..core import qcurves
 from ..core.geometry import edge_lengths
 from ..core.joints import bodies
-from ..core.timeline import Segment, build_track
+from ..core.timeline import Pair, Segment
 from ..model import Scene
+from .segments import entries
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -41,16 +42,18 @@ def _motion(k0: np.ndarray, k1: np.ndarray) -> dict[str, Any]:
     return {"motion": motion.kind, "rotation_deg": motion.rotation_deg, "why": motion.why}
 
 
-def segment_dict(segment: Segment) -> dict[str, Any]:
-    """One segment's report: motion, auto's choice, per-body motion and per-vertex Q-curves."""
-    k0, k1 = np.asarray(segment.k0), np.asarray(segment.k1)
+def segment_dict(segment: Segment, pair: Pair | None = None) -> dict[str, Any]:
+    """One segment's report (of ``pair``, default its only contour): motion, auto's choice,
+    per-body motion and per-vertex Q-curves."""
+    pair = pair or segment.pairs[0]
+    k0, k1 = np.asarray(pair.k0), np.asarray(pair.k1)
     q = qcurves.control_points(k0, k1)
     kinds = qcurves.vertex_kinds(q, _tolerance(k0, k1))
     through = qcurves.passes_through_zero(q)
     turning_back = qcurves.non_monotonic(q)
     over = qcurves.sweeps_over_180(q)
     choice = qcurves.auto_choice(k0, k1, segment.joints)
-    pairs = (segment.correspondence.pairs.tolist() if segment.correspondence is not None
+    pairs = (pair.correspondence.pairs.tolist() if pair.correspondence is not None
              else [[i, i] for i in range(len(k0))])
     out: dict[str, Any] = {
         "times": [segment.start, segment.end],
@@ -76,10 +79,8 @@ def segment_dict(segment: Segment) -> dict[str, Any]:
 def qcurves_dict(scene: Scene) -> dict[str, Any]:
     """The documented ``qcurves --json``: one entry per shape and segment (static shapes have none)."""
     shapes = []
-    for shape in scene.shapes:
-        track = build_track(shape, scene.matching)
-        for index, segment in enumerate(track.segments):
-            shapes.append({"name": shape.name, "segment": index, **segment_dict(segment)})
+    for entry in entries(scene, closed_only=True):
+        shapes.append({**entry.head(), **segment_dict(entry.segment, entry.pair)})
     return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
 
 
@@ -97,7 +98,8 @@ def qcurves_text(report: dict[str, Any]) -> str:
     lines = [f"{report['scene']}"]
     for entry in report["shapes"]:
         start, end = entry["times"]
-        lines += ["", f"{entry['name']}, segment {entry['segment']} ({start:g} s to {end:g} s): "
+        contour = f", contour {entry['contour']}" if "contour" in entry else ""
+        lines += ["", f"{entry['name']}, segment {entry['segment']}{contour} ({start:g} s to {end:g} s): "
                       f"{motion_words(entry)}"]
         for k, body in enumerate(entry.get("bodies", [])):
             lines.append(f"  body {k} (vertices {', '.join(map(str, body['vertices']))}): "

@@ -6,8 +6,8 @@ from typing import Any, Sequence
 
 from ..core.measures import report
 from ..core.qcurves import auto_choice
-from ..core.timeline import build_track
 from ..model import Scene
+from .segments import entries
 
 __all__ = ["stats_dict", "stats_text", "STATS_METHODS"]
 
@@ -17,20 +17,17 @@ STATS_METHODS = ("linear", "nonlinear", "rigid")
 def stats_dict(scene: Scene, t: Sequence[float]) -> dict[str, Any]:
     """The thesis's ch. 6 report for every shape and segment (the documented ``stats --json``)."""
     shapes = []
-    for shape in scene.shapes:
-        track = build_track(shape, scene.matching)
-        for index, segment in enumerate(track.segments):
-            methods = STATS_METHODS + (("jointed",) if segment.joints else ())
-            choice = auto_choice(segment.k0, segment.k1, segment.joints)
-            shapes.append({
-                "name": shape.name,
-                "segment": index,
-                "times": [segment.start, segment.end],
-                "vertices": list(segment.counts),
-                "balanced": len(segment.k0),
-                "auto": {"method": choice.method, "why": choice.why},
-                "methods": {m: report(segment.k0, segment.k1, m, t, segment.joints).as_dict() for m in methods},
-            })
+    for entry in entries(scene, closed_only=True):
+        pair, joints = entry.pair, entry.segment.joints
+        methods = STATS_METHODS + (("jointed",) if joints else ())
+        choice = auto_choice(pair.k0, pair.k1, joints)
+        shapes.append({
+            **entry.head(),
+            "vertices": list(pair.counts),
+            "balanced": len(pair.k0),
+            "auto": {"method": choice.method, "why": choice.why},
+            "methods": {m: report(pair.k0, pair.k1, m, t, joints).as_dict() for m in methods},
+        })
     return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
 
 
@@ -40,7 +37,8 @@ def stats_text(stats: dict[str, Any]) -> str:
     for shape in stats["shapes"]:
         start, end = shape["times"]
         m, n = shape["vertices"]
-        lines += ["", f"SHAPE {shape['name']}, segment {shape['segment']} ({start:g} s to {end:g} s), "
+        contour = f", contour {shape['contour']}" if "contour" in shape else ""
+        lines += ["", f"SHAPE {shape['name']}, segment {shape['segment']}{contour} ({start:g} s to {end:g} s), "
                       f"{m} and {n} vertices, {shape['balanced']} after balancing",
                   f"auto chooses {shape['auto']['method']}: {shape['auto']['why']}"]
         for method, r in shape["methods"].items():

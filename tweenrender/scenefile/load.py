@@ -18,8 +18,8 @@ from typing import Any, Callable
 import numpy as np
 
 from ..errors import SceneError
-from ..model import (ALIGNS, COSTS, EASES, EQUAL_COUNTS, METHODS, Color, Key, Matching, Scene, Shape,
-                     frozen_points)
+from ..model import (ALIGNS, CAPS, COSTS, DEFAULT_FILL, EASES, EQUAL_COUNTS, FILL_RULES, JOINS, METHODS, UNMATCHED,
+                     Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
 from .locate import json_line_of, line_of
 
 __all__ = ["load_scene", "parse_scene", "LIMITS"]
@@ -39,9 +39,10 @@ LIMITS = {
     "match_sg": 100_000_000,      # m·n·max(m, n), cost "sg"
 }
 
-_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "correspondence", "shape")
-_SHAPE = ("name", "fill", "stroke", "stroke_width", "method", "joints", "key")
-_KEY = ("time", "points", "ease")
+_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "correspondence", "unmatched", "shape")
+_PAINT = ("fill", "stroke", "stroke_width", "opacity")
+_SHAPE = ("name", *_PAINT, "method", "joints", "fill_rule", "closed", "cap", "join", "unmatched", "key")
+_KEY = ("time", "points", "contours", "ease", *_PAINT)
 _SVG = ("svg", "id", "tolerance")
 _MATCHING = ("cost", "align", "equal_counts", "ks", "cs", "es", "kb", "eb", "mb", "pb")
 
@@ -273,16 +274,19 @@ class _Reader:
         background = self.color(top.get("background", "#ffffff"), "background")
         matching = self.matching(top.get("correspondence", {}))
         self.matching_effort(shapes, matching)
+        unmatched = self.choice(top.get("unmatched", "grow"), "unmatched", UNMATCHED, "rule for unmatched contours")
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
-                     method=method, compare=compare, matching=matching, path=self.path)
+                     method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched)
 
     def matching_effort(self, shapes: tuple[Shape, ...], matching: Matching) -> None:
         """Refuse key pairs whose correspondence search would run for minutes (see ``LIMITS``)."""
         cost = matching.cost
         for i, shape in enumerate(shapes):
             for k in range(1, len(shape.keys)):
-                m, n = len(shape.keys[k - 1].points), len(shape.keys[k].points)
-                if m == n and matching.equal_counts == "drawn":
+                counts_a = [len(c.points) for c in shape.keys[k - 1].contours]
+                counts_b = [len(c.points) for c in shape.keys[k].contours]
+                m, n = max(counts_a), max(counts_b)
+                if len(counts_a) == len(counts_b) == 1 and m == n and matching.equal_counts == "drawn":
                     continue  # equal counts keep the drawn order: no search
                 effort, limit = (m * n * max(m, n), LIMITS["match_sg"]) if cost == "sg" else \
                                 (m * n, LIMITS["match_cells"])
@@ -321,26 +325,57 @@ class _Reader:
     def shape(self, value: Any, where: str, index: int) -> Shape:
         table = self.table(value, where, _SHAPE)
         name = self.string(table["name"], f"{where}.name") if "name" in table else f"shape{index + 1}"
+        closed = self.boolean(table.get("closed", True), f"{where}.closed")
+        defaults = self.paint(table, where, Paint(DEFAULT_FILL if closed else None, None, 2.0, 1.0))
+        if not closed and "fill" in table:
+            raise self.fail(f"{where}.fill", "expected no fill on an open shape (closed = false): "
+                                             "open strokes are drawn with stroke, never filled")
         if "key" not in table:
             raise self.fail(where, "expected at least one [[shape.key]], found none")
         keys_raw = self.listing(table["key"], f"{where}.key", "a list of [[shape.key]] tables")
         if not keys_raw:
             raise self.fail(f"{where}.key", "expected at least one [[shape.key]], found none")
-        keys = tuple(self.key(raw, f"{where}.key[{k}]") for k, raw in enumerate(keys_raw))
+        keys = tuple(self.key(raw, f"{where}.key[{k}]", closed, defaults) for k, raw in enumerate(keys_raw))
         for k in range(1, len(keys)):
             if keys[k].time <= keys[k - 1].time:
                 raise self.fail(f"{where}.key[{k}].time", f"expected a time after {keys[k - 1].time:.15g} "
                                                           f"(times strictly increase), found {keys[k].time:.15g}")
+        if not closed and not any(key.paint.stroke is not None for key in keys):
+            raise self.fail(where, "expected a stroke on an open shape (closed = false), found none: "
+                                   "add stroke = \"#rrggbb\"")
         method = None
         if "method" in table:
             method = self.choice(table["method"], f"{where}.method", METHODS, "method")
-        joints = self.joints(table.get("joints", []), f"{where}.joints", len(keys[0].points))
-        stroke = self.color(table["stroke"], f"{where}.stroke") if "stroke" in table else None
-        fill = self.color(table.get("fill", "#3b6fd8"), f"{where}.fill")
-        width = self.number(table.get("stroke_width", 2.0), f"{where}.stroke_width", 0.0, 1000.0,
-                            "a width in pixels")
-        return Shape(name=name, keys=keys, fill=fill, stroke=stroke, stroke_width=width,
-                     method=method, joints=joints)
+        joints: tuple[tuple[int, int], ...] = ()
+        if "joints" in table:
+            several = [k for k, key in enumerate(keys) if len(key.contours) != 1 or not key.contours[0].closed]
+            if several:
+                raise self.fail(f"{where}.joints", f"expected keys of one closed outline for joints, found "
+                                                   f"{len(keys[several[0]].contours)} contours in key {several[0]}")
+            joints = self.joints(table["joints"], f"{where}.joints", len(keys[0].points))
+        fill_rule = self.choice(table.get("fill_rule", "nonzero"), f"{where}.fill_rule", FILL_RULES, "fill rule")
+        cap = self.choice(table.get("cap", "round"), f"{where}.cap", CAPS, "line cap")
+        join = self.choice(table.get("join", "round"), f"{where}.join", JOINS, "line join")
+        unmatched = None
+        if "unmatched" in table:
+            unmatched = self.choice(table["unmatched"], f"{where}.unmatched", UNMATCHED, "rule for unmatched contours")
+        return Shape(name=name, keys=keys, method=method, joints=joints, fill_rule=fill_rule, cap=cap, join=join,
+                     unmatched=unmatched)
+
+    def paint(self, table: dict[str, Any], where: str, base: Paint) -> Paint:
+        """``base`` with the ``fill``, ``stroke``, ``stroke_width`` and ``opacity`` that ``table`` gives."""
+        fill, stroke = base.fill, base.stroke
+        if "fill" in table:
+            fill = self.color_or_none(table["fill"], f"{where}.fill")
+        if "stroke" in table:
+            stroke = self.color_or_none(table["stroke"], f"{where}.stroke")
+        width = base.stroke_width
+        if "stroke_width" in table:
+            width = self.number(table["stroke_width"], f"{where}.stroke_width", 0.0, 1000.0, "a width in pixels")
+        opacity = base.opacity
+        if "opacity" in table:
+            opacity = self.number(table["opacity"], f"{where}.opacity", 0.0, 1.0, "an opacity")
+        return Paint(fill, stroke, width, opacity)
 
     def joints(self, value: Any, where: str, vertices: int) -> tuple[tuple[int, int], ...]:
         from ..core.joints import JointError, validate_joints
@@ -359,21 +394,47 @@ class _Reader:
             raise self.fail(f"{where}[{error.index}]", str(error)) from None
         return tuple(joints)  # type: ignore[arg-type]
 
-    def key(self, value: Any, where: str) -> Key:
+    def key(self, value: Any, where: str, closed: bool = True, defaults: Paint = Paint()) -> Key:
         table = self.table(value, where, _KEY)
         if "time" not in table:
             raise self.fail(where, "expected a time (seconds), found none")
         time = self.number(table["time"], f"{where}.time", 0.0, LIMITS["time"], "a time in seconds")
-        if "points" not in table:
-            raise self.fail(where, "expected points = [[x, y], ...], found none")
-        points = self.points(table["points"], f"{where}.points")
+        if "points" in table and "contours" in table:
+            raise self.fail(f"{where}.contours", "expected either points or contours in a key, found both")
+        if "points" in table:
+            contours = self.outline(table["points"], f"{where}.points", closed)
+        elif "contours" in table:
+            items = self.listing(table["contours"], f"{where}.contours", "a list of contours, each a list of [x, y]")
+            if not items:
+                raise self.fail(f"{where}.contours", "expected at least one contour, found an empty list")
+            contours = tuple(Contour(self.points(c, f"{where}.contours[{i}]", closed), closed)
+                             for i, c in enumerate(items))
+        else:
+            raise self.fail(where, "expected points = [[x, y], ...] or contours = [[[x, y], ...], ...], found neither")
         ease = self.choice(table.get("ease", "linear"), f"{where}.ease", EASES, "easing")
-        return Key(time=time, points=points, ease=ease)
+        if not closed and "fill" in table:
+            raise self.fail(f"{where}.fill", "expected no fill on an open shape (closed = false)")
+        return Key(time=time, contours=contours, ease=ease, paint=self.paint(table, where, defaults))
 
-    def points(self, value: Any, where: str) -> np.ndarray:
+    def outline(self, value: Any, where: str, closed: bool) -> tuple[Contour, ...]:
+        """``points``: a list of [x, y] (one contour) or ``{ svg, id }`` (every contour of that element)."""
         if isinstance(value, dict):
-            return self.svg_points(value, where)
-        what = "a list of at least 3 [x, y] pairs"
+            return tuple(Contour(p, closed) for p in self.svg_contours(value, where))
+        return (Contour(self.points(value, where, closed), closed),)
+
+    def boolean(self, value: Any, where: str) -> bool:
+        if not isinstance(value, bool):
+            raise self.fail(where, f"expected true or false, found {_describe(value)}")
+        return value
+
+    def color_or_none(self, value: Any, where: str) -> Color | None:
+        if isinstance(value, str) and value.strip().lower() == "none":
+            return None
+        return self.color(value, where)
+
+    def points(self, value: Any, where: str, closed: bool = True) -> np.ndarray:
+        least = 3 if closed else 2
+        what = f"a list of at least {least} [x, y] pairs"
         items = self.listing(value, where, what + " or { svg = ..., id = ... }")
         if len(items) > LIMITS["vertices"]:
             raise self.fail(where, f"expected at most {LIMITS['vertices']} vertices, found {len(items)}")
@@ -384,11 +445,11 @@ class _Reader:
                 raise self.fail(f"{where}[{i}]", f"expected an [x, y] pair, found {_describe(item)}")
             coords.append([self.number(v, f"{where}[{i}][{j}]", -limit, limit, "a coordinate")
                            for j, v in enumerate(item)])
-        if len(coords) < 3:
+        if len(coords) < least:
             raise self.fail(where, f"expected {what}, found {len(coords)}")
         return frozen_points(coords)
 
-    def svg_points(self, value: dict[str, Any], where: str) -> np.ndarray:
+    def svg_contours(self, value: dict[str, Any], where: str) -> list[np.ndarray]:
         from .svg import DEFAULT_TOLERANCE, SvgError, load_svg_points
 
         table = self.table(value, where, _SVG)
@@ -407,7 +468,7 @@ class _Reader:
         if len(points) > LIMITS["vertices"] or not np.all(np.abs(points) <= limit):
             raise self.fail(where, f"the drawing gives {len(points)} vertices; expected at most "
                                    f"{LIMITS['vertices']} within ±{limit:g}")
-        return frozen_points(points)
+        return [frozen_points(points)]
 
 
 def parse_color(text: str, fail: Callable[[str], Exception]) -> Color:

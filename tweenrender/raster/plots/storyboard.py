@@ -16,9 +16,9 @@ from numpy.typing import NDArray
 
 from ...core.ratios import perimeter_ratio, segment_midpoints
 from ...core.timeline import Track
-from ...model import Color, Scene
+from ...model import Color, Paint, Scene
 from ..overlays import path_polylines, skia_path, stroke_paint
-from ..surface import Raster
+from ..surface import Raster, contours_path
 from ..view import Box, Viewport
 
 __all__ = ["SheetLayout", "sheet_layout", "draw_sheet", "inbetween_times"]
@@ -105,16 +105,26 @@ def draw_sheet(scene: Scene, tracks: Sequence[Track], methods: Sequence[str], vi
         for when in times:
             for track, shape in zip(tracks, scene.shapes):
                 if track.segments:
-                    polygon = track.at(np.array([when]), method)[0]
-                    raster.polygon(port.to_pixels(polygon), shape.fill, None, 0.0, alpha=0.07)
-                    raster.polygon(port.to_pixels(polygon), None, shape.fill, 1.1, alpha=0.9)
+                    at = track.at(np.array([when]), method)[0]
+                    if at.visible:
+                        _outline(raster, port, shape.fill_rule, at.contours, at.closed, at.paint, 0.07, 1.1, 0.9)
         for shape in scene.shapes:
-            edge = shape.stroke or _INK
             for key in shape.keys:
-                raster.polygon(port.to_pixels(key.points), shape.fill, None, 0.0, alpha=0.2)
-                raster.polygon(port.to_pixels(key.points), None, edge, 2.6)
+                if not key.hidden:
+                    _outline(raster, port, shape.fill_rule, [c.points for c in key.contours],
+                             [c.closed for c in key.contours], key.paint, 0.2, 2.6, 1.0, key.paint.stroke or _INK)
         canvas.restore()
     return raster.rgba().copy()
+
+
+def _outline(raster: Raster, port: Viewport, fill_rule: str, contours: Sequence[NDArray[np.float64]],
+             closed: Sequence[bool], paint: Paint, fill_alpha: float, width: float, edge_alpha: float,
+             edge: Color | None = None) -> None:
+    """A light fill and a thin outline of contours in the colour they are painted (keys: a stronger edge)."""
+    color = paint.fill or paint.stroke or _INK
+    path = contours_path([port.to_pixels(c) for c in contours], closed, fill_rule)
+    raster.draw_path(path, color if paint.fill is not None else None, None, 0.0, opacity=fill_alpha)
+    raster.draw_path(path, None, edge or color, width, opacity=edge_alpha)
 
 
 def _key_times(scene: Scene) -> list[float]:

@@ -1,0 +1,169 @@
+"""Contours of a key: which are holes, which contour of one key goes with which of the next (maths §5.7).
+
+A closed contour inside an odd number of other closed contours is a *hole*,
+else an *outer* outline (nesting decides, whatever the fill rule); an open
+contour is a stroke. Contours of consecutive keys are paired by a minimum-cost
+assignment within each role — outer with outer, hole with hole, open with
+open — on where they sit in their shape and how large they are, never by
+drawing order. A contour left without a partner grows from (or shrinks to) an
+*anchor*: the nearest point of the partner key's drawing.
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .geometry import signed_area
+
+__all__ = ["ROLES", "inside", "roles", "pair_contours", "nearest_point", "anchor", "contour_size"]
+
+Array = NDArray[np.float64]
+ROLES = ("outer", "hole", "open")
+
+_SIZE_WEIGHT = 0.7
+
+
+def inside(points: Array, polygon: Array) -> NDArray[np.bool_]:
+    """Whether each of ``points (P, 2)`` lies inside the closed ``polygon (N, 2)`` (even-odd rule): ``(P,)``."""
+    x, y = points[:, 0:1], points[:, 1:2]  # (P, 1)
+    x0, y0 = polygon[:, 0], polygon[:, 1]  # (N,)
+    x1, y1 = np.roll(x0, -1), np.roll(y0, -1)
+    crosses = (y0 > y) != (y1 > y)  # (P, N)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        at = x0 + (y - y0) * (x1 - x0) / (y1 - y0)
+    return ((crosses & (x < at)).sum(axis=1) % 2).astype(bool)
+
+
+def roles(contours: Sequence[Array], closed: Sequence[bool]) -> list[str]:
+    """``"outer"``, ``"hole"`` or ``"open"`` for each contour ``(N_i, 2)`` of one key."""
+    out = []
+    shut = [i for i, c in enumerate(closed) if c and len(contours[i]) >= 3]
+    for i, points in enumerate(contours):
+        if not closed[i]:
+            out.append("open")
+            continue
+        probe = _probe(points)
+        depth = sum(int(inside(probe[None], contours[j])[0]) for j in shut if j != i)
+        out.append("hole" if depth % 2 else "outer")
+    return out
+
+
+def _probe(points: Array) -> Array:
+    """A point just inside the contour near its first edge (not on another contour's boundary by chance)."""
+    if len(points) < 3 or signed_area(points) == 0:
+        return points.mean(axis=0)
+    a, b = points[0], points[1]
+    mid = 0.5 * (a + b)
+    edge = b - a
+    normal = np.array([-edge[1], edge[0]])  # left of the edge: inside for counter-clockwise
+    if signed_area(points) < 0:
+        normal = -normal
+    span = float(np.ptp(points, axis=0).max())
+    length = float(np.hypot(*normal))
+    if length == 0:
+        return points.mean(axis=0)
+    step = normal / length * min(1e-6 * span, 0.25 * length)
+    return mid + step
+
+
+def contour_size(points: Array, closed: bool) -> float:
+    """A length that measures the contour: √|area| for a closed one, its length for an open one,
+    at least its bounding box's diagonal / 100 so that flat contours still compare."""
+    diag = float(np.hypot(*np.ptp(points, axis=0))) if len(points) else 0.0
+    if closed and len(points) >= 3:
+        measure = float(np.sqrt(abs(signed_area(points))))
+    else:
+        measure = float(np.linalg.norm(np.diff(points, axis=0), axis=1).sum())
+    return max(measure, diag / 100.0, 1e-300)
+
+
+def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Array],
+                  b_closed: Sequence[bool]) -> list[tuple[int | None, int | None]]:
+    """Which contour of key a goes with which of key b: ``(i, j)`` pairs, ``None`` for no partner.
+
+    Within a role as many contours are paired as the smaller key has, at the least total
+    cost; the rest have no partner. The cost of a pair is the distance between the
+    contours' centres, each taken relative to its own key's centre and divided by the keys'
+    size, plus how much their sizes differ (``0.7 · |ln(size_a / size_b)|``). Pairs are
+    sorted by ``i`` (contours of a in order), then the new contours of b by ``j``.
+    """
+    role_a, role_b = roles(a, a_closed), roles(b, b_closed)
+    centre_a, centre_b = _key_centre(a), _key_centre(b)
+    scale = max(_key_scale(a), _key_scale(b), 1e-300)
+    pairs: list[tuple[int | None, int | None]] = []
+    for role in ROLES:
+        ia = [i for i, r in enumerate(role_a) if r == role]
+        jb = [j for j, r in enumerate(role_b) if r == role]
+        if not ia or not jb:
+            pairs += [(i, None) for i in ia] + [(None, j) for j in jb]
+            continue
+        if len(ia) == len(jb) == 1:
+            pairs.append((ia[0], jb[0]))
+            continue
+        pa = np.array([a[i].mean(axis=0) - centre_a for i in ia])
+        pb = np.array([b[j].mean(axis=0) - centre_b for j in jb])
+        sa = np.log([contour_size(a[i], a_closed[i]) for i in ia])
+        sb = np.log([contour_size(b[j], b_closed[j]) for j in jb])
+        cost = (np.linalg.norm(pa[:, None] - pb[None], axis=-1) / scale
+                + _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))
+        from scipy.optimize import linear_sum_assignment
+
+        rows, cols = linear_sum_assignment(cost)
+        pairs += [(ia[r], jb[c]) for r, c in zip(rows, cols)]
+        pairs += [(i, None) for k, i in enumerate(ia) if k not in set(rows.tolist())]
+        pairs += [(None, j) for k, j in enumerate(jb) if k not in set(cols.tolist())]
+    matched = sorted((p for p in pairs if p[0] is not None), key=lambda p: p[0])  # type: ignore[arg-type, return-value]
+    new = sorted((p for p in pairs if p[0] is None), key=lambda p: p[1])  # type: ignore[arg-type, return-value]
+    return matched + new
+
+
+def _key_centre(contours: Sequence[Array]) -> Array:
+    return np.concatenate(contours).mean(axis=0)
+
+
+def _key_scale(contours: Sequence[Array]) -> float:
+    every = np.concatenate(contours)
+    return float(np.hypot(*np.ptp(every, axis=0)))
+
+
+def nearest_point(point: Array, contours: Sequence[Array], closed: Sequence[bool]) -> Array:
+    """The point of the contours' outlines (open ones not closed) nearest to ``point (2,)``: ``(2,)``."""
+    best, best_d = point, np.inf
+    for points, shut in zip(contours, closed):
+        if len(points) == 1:
+            starts, ends = points, points
+        else:
+            starts = points if shut else points[:-1]
+            ends = np.roll(points, -1, axis=0) if shut else points[1:]
+        edge = ends - starts
+        length2 = (edge * edge).sum(axis=1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s = np.where(length2 > 0, ((point - starts) * edge).sum(axis=1) / length2, 0.0)
+        foot = starts + np.clip(s, 0.0, 1.0)[:, None] * edge
+        d = np.hypot(*(foot - point).T)
+        k = int(np.argmin(d))
+        if d[k] < best_d:
+            best, best_d = foot[k], float(d[k])
+    return np.asarray(best, dtype=np.float64)
+
+
+def anchor(contour: Array, partner: Sequence[Array], partner_closed: Sequence[bool], fill_rule: str) -> Array:
+    """Where a contour without a partner grows from or shrinks to: its centre if that lies in the
+    partner key's filled region, else the nearest point of the partner's outlines: ``(2,)``."""
+    centre = contour.mean(axis=0)
+    shut = [p for p, c in zip(partner, partner_closed) if c and len(p) >= 3]
+    if shut:
+        hits = np.array([int(inside(centre[None], p)[0]) for p in shut])
+        if fill_rule == "evenodd":
+            filled = hits.sum() % 2 == 1
+        else:
+            winding = np.array([np.sign(signed_area(p)) for p in shut])
+            filled = (hits * winding).sum() != 0
+        if filled:
+            return centre
+    if not partner:
+        return centre
+    return nearest_point(centre, partner, partner_closed)

@@ -61,7 +61,7 @@ def test_every_field_is_read(tmp_path: Path) -> None:
     assert scene.matching.cost == "sg" and scene.matching.align == "none" and scene.matching.kb == 2.5
     a, b = scene.shapes
     assert a.fill == (0xAA, 0xBB, 0xCC, 255) and a.stroke == (0x11, 0x22, 0x33, 0x44)
-    assert a.stroke_width == 3.5 and a.method == "linear" and b.method is None
+    assert a.paint.stroke_width == 3.5 and a.method == "linear" and b.method is None
     assert [k.time for k in a.keys] == [0.5, 2.0] and a.keys[0].ease == "in-out"
     assert a.keys[1].points.dtype == np.float64 and a.keys[1].points.shape == (4, 2)
     assert scene.duration == 2.0 and scene.method_of(b) == "rigid"

@@ -16,7 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tweenrender.errors import SceneError
-from tweenrender.scenefile import svg
+from tweenrender.scenefile import svg, svg_document
 from tweenrender.scenefile.svg import DEFAULT_TOLERANCE, SvgError, load_svg_points
 
 SCENES = Path(__file__).resolve().parents[2] / "scenes" / "svg"
@@ -357,7 +357,6 @@ def test_fewer_than_three_vertices(tmp_path: Path, body: str) -> None:
     ('<text id="x" x="0" y="0">hi</text>', "<text>"),
     ('<g id="x"><rect width="1" height="1"/></g>', "<g>"),
     ('<image id="x" width="1" height="1" href="a.png"/>', "<image>"),
-    ('<line id="x" x1="0" y1="0" x2="1" y2="1"/>', "<line>"),
 ])
 def test_unsupported_elements(tmp_path: Path, body: str, kind: str) -> None:
     with pytest.raises(SvgError, match=f"#x: expected one of <path>.*found {kind}"):
@@ -397,7 +396,7 @@ def test_internal_dtd_subset_is_refused_but_a_plain_doctype_is_not(tmp_path: Pat
 
 def test_oversized_file_is_refused_before_parsing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     path = drawing(tmp_path, '<polygon id="p" points="0,0 1,0 1,1"/>' + " " * 500)
-    monkeypatch.setattr(svg, "MAX_FILE_BYTES", 256)
+    monkeypatch.setattr(svg_document, "MAX_FILE_BYTES", 256)
     with pytest.raises(SvgError, match="#p: expected a drawing of at most 256 bytes, found"):
         load_svg_points(path, "p")
 
@@ -473,3 +472,21 @@ def test_error_survives_pickling(tmp_path: Path) -> None:
         load_svg_points(tmp_path / "nowhere.svg", "body")
     copy = pickle.loads(pickle.dumps(caught.value))
     assert str(copy) == str(caught.value) and copy.element_id == "body"
+
+
+def test_a_line_is_an_open_contour(tmp_path: Path) -> None:
+    path = drawing(tmp_path, '<line id="x" x1="1" y1="2" x2="7" y2="5"/>')
+    ((points, closed),) = svg.load_svg_contours(path, "x")
+    assert not closed
+    np.testing.assert_array_equal(points, flip([[1, 2], [7, 5]]))
+    with pytest.raises(SvgError, match="#x: .*3 distinct vertices"):
+        load_svg_points(path, "x")
+
+
+def test_holes_and_pieces_are_contours(tmp_path: Path) -> None:
+    path = drawing(tmp_path, '<path id="o" d="M 0 0 H 10 V 10 H 0 Z M 2 2 V 8 H 8 V 2 Z M 20 0 L 30 0"/>')
+    contours = svg.load_svg_contours(path, "o")
+    assert [closed for _, closed in contours] == [True, True, False]
+    np.testing.assert_array_equal(contours[0][0], flip([[0, 0], [10, 0], [10, 10], [0, 10]]))
+    np.testing.assert_array_equal(contours[1][0], flip([[2, 2], [2, 8], [8, 8], [8, 2]]))
+    np.testing.assert_array_equal(contours[2][0], flip([[20, 0], [30, 0]]))

@@ -419,7 +419,7 @@ class _Reader:
     def outline(self, value: Any, where: str, closed: bool) -> tuple[Contour, ...]:
         """``points``: a list of [x, y] (one contour) or ``{ svg, id }`` (every contour of that element)."""
         if isinstance(value, dict):
-            return tuple(Contour(p, closed) for p in self.svg_contours(value, where))
+            return tuple(Contour(p, closed and shut) for p, shut in self.svg_contours(value, where))
         return (Contour(self.points(value, where, closed), closed),)
 
     def boolean(self, value: Any, where: str) -> bool:
@@ -449,8 +449,8 @@ class _Reader:
             raise self.fail(where, f"expected {what}, found {len(coords)}")
         return frozen_points(coords)
 
-    def svg_contours(self, value: dict[str, Any], where: str) -> list[np.ndarray]:
-        from .svg import DEFAULT_TOLERANCE, SvgError, load_svg_points
+    def svg_contours(self, value: dict[str, Any], where: str) -> list[tuple[np.ndarray, bool]]:
+        from .svg import DEFAULT_TOLERANCE, SvgError, load_svg_contours
 
         table = self.table(value, where, _SVG)
         if "svg" not in table or "id" not in table:
@@ -461,14 +461,15 @@ class _Reader:
         tolerance = self.number(table.get("tolerance", DEFAULT_TOLERANCE), f"{where}.tolerance",
                                 1e-9, 1e6, "a tolerance in world units")
         try:
-            points = load_svg_points(self.path.parent / file, element, tolerance)
+            contours = load_svg_contours(self.path.parent / file, element, tolerance)
         except SvgError as error:
             raise self.fail(where, str(error)) from None
+        count = sum(len(points) for points, _ in contours)
         limit = LIMITS["coordinate"]
-        if len(points) > LIMITS["vertices"] or not np.all(np.abs(points) <= limit):
-            raise self.fail(where, f"the drawing gives {len(points)} vertices; expected at most "
+        if count > LIMITS["vertices"] or not all(np.all(np.abs(points) <= limit) for points, _ in contours):
+            raise self.fail(where, f"the drawing gives {count} vertices; expected at most "
                                    f"{LIMITS['vertices']} within ±{limit:g}")
-        return [frozen_points(points)]
+        return [(frozen_points(points), closed) for points, closed in contours]
 
 
 def parse_color(text: str, fail: Callable[[str], Exception]) -> Color:

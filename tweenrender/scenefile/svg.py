@@ -1,134 +1,171 @@
-"""Keyframe polygons from SVG drawings: one element, its curves flattened, in world units.
-
-A scene key may take its points from a drawing: ``points = { svg = "bird0.svg",
-id = "body" }``. :func:`load_svg_points` finds the element with that id, applies
-every transform above it (groups and its own), flips y, and flattens its curves
-into a polygon within a tolerance given in world units.
+"""SVG drawings as keys: one element's contours (``points = { svg, id }``), or a whole drawing.
 
 World units are the drawing's *user units* (the coordinates written in the
-file), with ``world y = -svg y``. The root ``<svg>``'s viewBox→viewport mapping
-(and a ``transform`` on the root, which lies outside the user space) is undone:
-svgelements applies it to every element, so ``width="100mm" viewBox="0 0 100 100"``
-would otherwise give CSS pixels (x 3.7795). Lengths written with units inside
-the drawing (``r="2mm"``) convert at 96 per inch, as CSS does, into user units.
+file, inside the root's viewBox), with ``world y = -svg y``; the root's
+viewBox→viewport scaling is not applied, so ``width="100mm" viewBox="0 0 100 100"``
+gives 100 units, not 378 CSS pixels. Lengths written with units inside the
+drawing (``r="2mm"``) convert at 96 per inch, as CSS does. Curves are flattened
+within a tolerance in world units (:mod:`.svg_flatten`).
 
-Elements read: ``path``, ``polygon``, ``polyline``, ``rect``, ``circle`` and
-``ellipse``, under any groups, hidden ones (``display:none``) included since
-animators hide the layers of the other keys. Parsing is svgelements'; this
-module adds a strict XML pre-pass (ids, line numbers, refusing DTD internal
-subsets and entity declarations) and checks of what svgelements would silently
-skip or truncate (stray characters in ``d``, odd ``points``, negative sizes).
+A whole drawing (:func:`read_drawing`) gives every visible shape element —
+``path``, ``rect``, ``circle``, ``ellipse``, ``line``, ``polyline``,
+``polygon``, inside groups, ``<use>`` copies and nested transforms — with its
+paint as an SVG renderer resolves it (:mod:`.svg_document`). Invisible
+elements (no fill and no stroke, ``display:none``, ``visibility:hidden``, zero
+opacity) are left out. Not drawn: clip paths and masks (their content is drawn
+unclipped), filters, markers; gradients and patterns are painted with the
+average colour of their stops.
 """
 
 from __future__ import annotations
 
 import difflib
-import io
 import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
-from xml.parsers import expat
 
 import numpy as np
 from numpy.typing import NDArray
-from svgelements import SVG, Arc, Close, CubicBezier, Line, Matrix, Move, QuadraticBezier, Shape
 
-from tweenrender.errors import SceneError
+from ..errors import SceneError
+from ..model import Color, Contour, Paint, frozen_points
+from .svg_document import SHAPES, Document, Drawn, Node, length, parse, read, walk
+from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
 
-__all__ = ["DEFAULT_TOLERANCE", "MAX_FILE_BYTES", "MAX_VERTICES", "SUPPORTED", "SvgError", "load_svg_points"]
+__all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
+           "load_svg_contours", "read_drawing", "view_box"]
 
 DEFAULT_TOLERANCE: float = 0.01
-"""World units. Drawings are made tens to hundreds of user units across (Inkscape's
-mm or px), so 0.01 is about a ten-thousandth of a drawing: under a pixel when it
-fills a 1280-pixel frame, while a circle of radius 50 still needs only ~160 vertices
-(the correspondence cost grows with the product of two keys' vertex counts)."""
+"""World units, for one element's key. Drawings are made tens to hundreds of user units across
+(Inkscape's mm or px), so 0.01 is about a ten-thousandth of a drawing: under a pixel when it fills
+a 1280-pixel frame, while a circle of radius 50 still needs only ~160 vertices."""
 
-MAX_FILE_BYTES: int = 20 * 1024 * 1024
-"""Larger files are refused before parsing: a keyframe drawing is a few kilobytes."""
+MAX_VERTICES: int = 200_000
+"""Vertices of one element's key, or of a whole drawing, once flattened."""
 
-MAX_VERTICES: int = 100_000
-"""A flattened element with more vertices than this is refused (tolerance far too small)."""
+SUPPORTED: tuple[str, ...] = SHAPES
+"""The SVG elements that give outlines."""
 
-SUPPORTED: tuple[str, ...] = ("path", "polygon", "polyline", "rect", "circle", "ellipse")
-"""The SVG elements that can give a keyframe outline."""
-
-_SVG_NS = "http://www.w3.org/2000/svg"
-_MAX_DEPTH = 48  # Bézier halvings; the flatness bound shrinks 4x per halving
+_DRAWING_TOLERANCE = 1 / 5000
+"""A whole drawing's default tolerance, as a fraction of its view box's diagonal (0.2 px at 1080p)."""
 _NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
 _PATH_TOKEN = re.compile(r"[\s,]*(?:[MmZzLlHhVvCcSsQqTtAa]|" + _NUMBER + ")")
 _POINTS_TOKEN = re.compile(r"[\s,]*(" + _NUMBER + ")")
 _SEPARATORS = re.compile(r"[\s,]*")
-_ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
-_UNSAFE = (
-    "expected plain SVG, found a DOCTYPE with entity declarations (refused: entities can "
-    "expand without bound or read other files); save the drawing as plain SVG"
-)
+_FLIP = np.diag([1.0, -1.0, 1.0])
 
 
 class SvgError(SceneError, ValueError):
-    """A drawing or one of its elements cannot give a keyframe polygon.
+    """A drawing or one of its elements cannot be read.
 
-    ``str()`` is one line: ``drawing.svg#id: what was expected, what was found``.
+    ``str()`` is one line: ``drawing.svg#id: what was expected, what was found``
+    (or ``drawing.svg: ...`` for the whole file).
     """
 
-    def __init__(self, svg_path: str | Path, element_id: str, message: str) -> None:
+    def __init__(self, svg_path: str | Path, element_id: str | None, message: str) -> None:
         self.element_id = element_id
-        super().__init__(svg_path, f"#{element_id}", message)
+        super().__init__(svg_path, f"#{element_id}" if element_id else None, message)
 
     def __str__(self) -> str:
-        return f"{self.path}{self.where}: {self.message}"
+        return f"{self.path}{self.where or ''}: {self.message}"
 
-    def __reduce__(self) -> tuple[type[SvgError], tuple[str | None, str, str]]:
+    def __reduce__(self) -> tuple[type[SvgError], tuple[str | None, str | None, str]]:  # type: ignore[override]
         return type(self), (self.path, self.element_id, self.message)
 
 
-class _Refusal(Exception):
-    """Raised inside this module; :func:`load_svg_points` names the file and id."""
+@dataclass(frozen=True, slots=True)
+class Element:
+    """One drawn element of a drawing: its contours in world units and how it is painted.
+
+    ``paint.stroke_width`` is in world units. ``line`` is where it is written in the file.
+    """
+
+    id: str | None
+    tag: str
+    line: int
+    contours: tuple[Contour, ...]
+    paint: Paint
+    fill_rule: str
+    cap: str
+    join: str
+    miter_limit: float
 
 
 @dataclass(frozen=True, slots=True)
-class _Found:
-    """An element as the XML scan saw it: its tag (local name), namespace, line, attributes."""
+class Drawing:
+    """A whole drawing: its view box in world units ``(xmin, ymin, xmax, ymax)``, y up, and its elements."""
 
-    tag: str
-    namespace: str
-    line: int
-    attributes: dict[str, str]
-
-    @property
-    def drawable(self) -> bool:
-        return self.namespace in ("", _SVG_NS) and self.tag in SUPPORTED
-
-    @property
-    def kind(self) -> str:
-        return f"<{self.tag}>" if self.namespace in ("", _SVG_NS) else f"<{{{self.namespace}}}{self.tag}>"
+    path: Path
+    box: tuple[float, float, float, float]
+    elements: tuple[Element, ...]
 
 
-def load_svg_points(
-    svg_path: Path, element_id: str, tolerance: float = DEFAULT_TOLERANCE
-) -> NDArray[np.float64]:
-    """The polygon of element ``element_id`` of the drawing ``svg_path``: ``(N, 2)`` float64.
+# -- one element by id ------------------------------------------------------------------------------
 
-    World units (user units, y up, see the module docstring), N ≥ 3, in the
-    drawing's order, without the closing duplicate or consecutive duplicates.
-    Curves (Béziers, arcs, circles, ellipses, rounded corners) are flattened so
-    that no point of the curve lies farther than ``tolerance`` (world units,
-    > 0) from the polygon; straight segments stay single edges.
 
-    Raises :class:`SvgError` for an unreadable, oversized or unsafe file, an
-    unknown id, an unsupported or malformed element, or one with several subpaths.
+def load_svg_contours(svg_path: Path, element_id: str, tolerance: float = DEFAULT_TOLERANCE
+                      ) -> list[tuple[NDArray[np.float64], bool]]:
+    """Every contour of element ``element_id`` of the drawing: ``(points (N, 2), closed)`` pairs.
+
+    World units (user units, y up), in the drawing's order, without closing or
+    consecutive duplicates; hidden layers (``display:none``) are read too, since
+    animators hide the keys they are not working on.
     """
     try:
         tol = _check_tolerance(tolerance)
         if not isinstance(element_id, str) or not element_id:
-            raise _Refusal(f"expected a non-empty element id, found {element_id!r}")
-        data = _read(Path(svg_path))
-        found = _find(_scan(data), element_id)
-        _check_syntax(found)
-        return _polygon(data, element_id, found, tol)
-    except _Refusal as refusal:
+            raise Refusal(f"expected a non-empty element id, found {element_id!r}")
+        document = parse(read(Path(svg_path)))
+        node = _find(document, element_id)
+        drawn = next((d for d in walk(document, keep_hidden=True) if d.node is node), None)
+        if drawn is None:
+            raise Refusal(f"expected an element that is drawn, found one inside <defs> or another "
+                          f"unrendered container (line {node.line})")
+        contours = _contours(drawn, _FLIP @ drawn.ctm, tol, Budget(MAX_VERTICES, tol))
+        if not contours:
+            raise Refusal(_why_not_drawn(node))
+        return contours
+    except Refusal as refusal:
         raise SvgError(svg_path, str(element_id), str(refusal)) from refusal.__cause__
+
+
+def load_svg_points(svg_path: Path, element_id: str, tolerance: float = DEFAULT_TOLERANCE) -> NDArray[np.float64]:
+    """The one closed outline of element ``element_id``: ``(N, 2)``, N ≥ 3 (see :func:`load_svg_contours`).
+
+    Raises :class:`SvgError` when the element has several contours or an open one.
+    """
+    contours = load_svg_contours(svg_path, element_id, tolerance)
+    if len(contours) > 1:
+        raise SvgError(svg_path, element_id, f"expected a single closed outline, found {len(contours)} "
+                                             "subpaths (holes or separate pieces)")
+    points, closed = contours[0]
+    if len(points) < 3:
+        raise SvgError(svg_path, element_id,
+                       f"expected a closed outline of at least 3 distinct vertices, found {len(points)}")
+    return points
+
+
+def _find(document: Document, element_id: str) -> Node:
+    ids = document.ids
+    if element_id not in ids:
+        shapes = [i for i, nodes in ids.items() if nodes[0].tag in SHAPES and nodes[0].svg]
+        close = difflib.get_close_matches(element_id, list(ids), n=1, cutoff=0.6)
+        hint = f'; did you mean "{close[0]}"?' if close else ""
+        listed = ", ".join(f'"{i}"' for i in shapes[:8])
+        listed += f" and {len(shapes) - 8} more" if len(shapes) > 8 else ""
+        have = f"shapes with ids: {listed}" if shapes else "no shape in the file has an id"
+        raise Refusal(f"expected an element with this id, found none{hint} ({have})")
+    found = ids[element_id]
+    if len(found) > 1:
+        lines = ", ".join(str(f.line) for f in found)
+        raise Refusal(f"expected a unique id, found {len(found)} elements with it (lines {lines})")
+    node = found[0]
+    if node.tag not in SHAPES or not node.svg:
+        kinds = ", ".join(f"<{tag}>" for tag in SHAPES)
+        kind = f"<{node.tag}>" if node.svg else f"<{{other namespace}}{node.tag}>"
+        raise Refusal(f"expected one of {kinds}, found {kind} (line {node.line})")
+    return node
 
 
 def _check_tolerance(tolerance: object) -> float:
@@ -137,116 +174,317 @@ def _check_tolerance(tolerance: object) -> float:
             raise TypeError
         tol = float(tolerance)  # type: ignore[arg-type]
     except (TypeError, ValueError):
-        raise _Refusal(f"expected a tolerance that is a positive number, found {tolerance!r}") from None
+        raise Refusal(f"expected a tolerance that is a positive number, found {tolerance!r}") from None
     if not (math.isfinite(tol) and tol > 0):
-        raise _Refusal(f"expected a finite tolerance > 0 (world units), found {tol!r}")
+        raise Refusal(f"expected a finite tolerance > 0 (world units), found {tol!r}")
     return tol
 
 
-def _read(svg_path: Path) -> bytes:
+# -- whole drawings -----------------------------------------------------------------------------------
+
+
+def view_box(document: Document) -> tuple[float, float, float, float] | None:
+    """The root's viewBox ``(x, y, width, height)`` in user units, else ``(0, 0, width, height)``; None if neither."""
+    root = document.root
+    box = root.attrs.get("viewBox")
+    if box:
+        try:
+            x, y, w, h = (float(v) for v in box.replace(",", " ").split())
+        except ValueError:
+            raise Refusal(f"expected viewBox=\"x y width height\", found {box!r}") from None
+        if not all(math.isfinite(v) for v in (x, y, w, h)):
+            raise Refusal(f"expected a finite viewBox, found {box!r}")
+        if w <= 0 or h <= 0:
+            raise Refusal(f"expected a viewBox of positive width and height, found {box!r}")
+        return (x, y, w, h)
+    w, h = length(root, "width", 0.0), length(root, "height", 0.0)
+    if w > 0 and h > 0 and "%" not in root.attrs.get("width", "") + root.attrs.get("height", ""):
+        return (0.0, 0.0, w, h)
+    return None
+
+
+def read_drawing(svg_path: Path, tolerance: float | None = None,
+                 into: tuple[float, float, float, float] | None = None) -> Drawing:
+    """Every visible shape element of the drawing, in paint order, in world units.
+
+    ``into`` is a world box ``(xmin, ymin, xmax, ymax)`` the drawing's view box is fitted into,
+    centred with its aspect kept (``xMidYMid meet``); without it, world units are user units
+    with y flipped. ``tolerance`` is in world units (default 1/5000 of the view box's diagonal).
+    """
     try:
-        size = svg_path.stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise _Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found {size} bytes")
-        with svg_path.open("rb") as handle:
-            data = handle.read(MAX_FILE_BYTES + 1)
-    except FileNotFoundError:
-        raise _Refusal("expected an SVG file, found no file at this path") from None
-    except OSError as error:
-        raise _Refusal(f"expected a readable SVG file, found: {error.strerror or error}") from error
-    if len(data) > MAX_FILE_BYTES:
-        raise _Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found more")
-    # NULs are dropped so that UTF-16/32 text is caught too; the XML scan below
-    # refuses the same declarations in any encoding expat reads.
-    if _ENTITY.search(data.replace(b"\x00", b"")):
-        raise _Refusal(_UNSAFE)
-    return data
+        document = parse(read(Path(svg_path)))
+        box = view_box(document)
+        drawn = [d for d in walk(document) if d.visible]
+        if box is None:  # no viewBox and no size: the elements' own extent
+            box = _extent(drawn)
+        x, y, w, h = box
+        world = (-y - h, x + w, -y)  # the box flipped: ymin, xmax, ymax
+        to_world = _FLIP.copy()
+        if into is not None:
+            to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP
+            world_box = into
+        else:
+            world_box = (x, world[0], world[1], world[2])
+        scale = math.sqrt(abs(np.linalg.det(to_world[:2, :2])))
+        if tolerance is None:
+            tolerance = math.hypot(world_box[2] - world_box[0], world_box[3] - world_box[1]) * _DRAWING_TOLERANCE
+        tol = _check_tolerance(tolerance)
+        budget = Budget(MAX_VERTICES, tol)
+        elements = []
+        for d in drawn:
+            element = _element(d, to_world, scale, tol, budget)
+            if element is not None:
+                elements.append(element)
+        return Drawing(Path(svg_path), world_box, tuple(elements))
+    except Refusal as refusal:
+        raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
 
 
-def _scan(data: bytes) -> dict[str, list[_Found]]:
-    """Every element that has an id, by id, from a strict XML pass that refuses DTD subsets."""
-    parser = expat.ParserCreate(namespace_separator=" ")
-    found: dict[str, list[_Found]] = {}
-    root: list[str] = []
+def _fit(box: tuple[float, float, float, float], into: tuple[float, float, float, float]) -> NDArray[np.float64]:
+    """The 3x3 map of world box ``box`` into world box ``into``, centred, aspect kept."""
+    x0, y0, x1, y1 = box
+    u0, v0, u1, v1 = into
+    s = min((u1 - u0) / (x1 - x0), (v1 - v0) / (y1 - y0))
+    dx = 0.5 * (u0 + u1) - s * 0.5 * (x0 + x1)
+    dy = 0.5 * (v0 + v1) - s * 0.5 * (y0 + y1)
+    return np.array([[s, 0.0, dx], [0.0, s, dy], [0.0, 0.0, 1.0]])
 
-    def doctype(name: str, system_id: str | None, public_id: str | None, internal: int) -> None:
-        if internal:
-            raise _Refusal(_UNSAFE)
 
-    def entity(*_: object) -> None:
-        raise _Refusal(_UNSAFE)
+def _extent(drawn: list[Drawn]) -> tuple[float, float, float, float]:
+    """A view box around every element's geometry (user units), for drawings with no viewBox or size."""
+    points = []
+    for d in drawn:
+        for contour, _ in _contours(d, d.ctm, 1e-3 * 1000, Budget(MAX_VERTICES, 1.0)):
+            points.append(contour)
+    if not points:
+        return (0.0, 0.0, 1.0, 1.0)
+    every = np.concatenate(points)
+    (x0, y0), (x1, y1) = every.min(axis=0), every.max(axis=0)
+    return (float(x0), float(y0), max(float(x1 - x0), 1e-9), max(float(y1 - y0), 1e-9))
 
-    def start(name: str, attributes: dict[str, str]) -> None:
-        namespace, _, tag = name.rpartition(" ")
-        if not root:
-            root.append(tag if namespace in ("", _SVG_NS) else name)
-        if "id" in attributes:
-            element = _Found(tag, namespace, parser.CurrentLineNumber, attributes)
-            found.setdefault(attributes["id"], []).append(element)
 
-    parser.StartDoctypeDeclHandler = doctype
-    parser.EntityDeclHandler = entity
-    parser.StartElementHandler = start
+def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, budget: Budget) -> Element | None:
+    paint, fill_rule, cap, join, miter = _paint(d, scale)
+    if not paint.visible:
+        return None
+    contours = _contours(d, to_world @ d.ctm, tol, budget)
+    if not contours:
+        return None
+    return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
+                   tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
+                   miter)
+
+
+# -- paint ---------------------------------------------------------------------------------------------
+
+
+def _paint(d: Drawn, scale: float) -> tuple[Paint, str, str, str, float]:
+    """The element's paint (stroke width in world units), fill rule, cap, join and miter limit."""
+    style = d.style
+    fill = _color(style.get("fill", "black"), style, d.document, _number(style.get("fill-opacity"), 1.0))
+    stroke = _color(style.get("stroke", "none"), style, d.document, _number(style.get("stroke-opacity"), 1.0))
+    width_text = style.get("stroke-width", "1")
+    width = _stroke_width(width_text, d) * math.sqrt(abs(np.linalg.det(d.ctm[:2, :2]))) * scale
+    fill_rule = "evenodd" if style.get("fill-rule", "nonzero").strip() == "evenodd" else "nonzero"
+    cap = style.get("stroke-linecap", "butt").strip()
+    join = style.get("stroke-linejoin", "miter").strip()
+    join = "miter" if join in ("miter-clip", "arcs") else join
+    miter = max(1.0, _number(style.get("stroke-miterlimit"), 4.0))
+    return (Paint(fill, stroke, width, d.opacity), fill_rule, cap if cap in ("butt", "round", "square") else "butt",
+            join if join in ("miter", "round", "bevel") else "miter", miter)
+
+
+def _number(text: str | None, default: float) -> float:
+    if text is None:
+        return default
     try:
-        parser.Parse(data, True)
-    except expat.ExpatError as error:
-        raise _Refusal(
-            f"expected well-formed XML, found {expat.ErrorString(error.code)} "
-            f"at line {error.lineno}, column {error.offset + 1}"
-        ) from error
-    if root != ["svg"]:
-        raise _Refusal(f"expected an <svg> root element, found <{root[0] if root else ''}>")
-    return found
+        value = float(text.strip().rstrip("%")) / (100.0 if text.strip().endswith("%") else 1.0)
+    except ValueError:
+        return default
+    return min(max(value, 0.0), 1.0) if math.isfinite(value) else default
 
 
-def _find(elements: dict[str, list[_Found]], element_id: str) -> _Found:
-    if element_id not in elements:
-        shapes = [i for i, found in elements.items() if found[0].drawable]
-        close = difflib.get_close_matches(element_id, list(elements), n=1, cutoff=0.6)
-        hint = f'; did you mean "{close[0]}"?' if close else ""
-        listed = ", ".join(f'"{i}"' for i in shapes[:8])
-        listed += f" and {len(shapes) - 8} more" if len(shapes) > 8 else ""
-        have = f"shapes with ids: {listed}" if shapes else "no shape in the file has an id"
-        raise _Refusal(f"expected an element with this id, found none{hint} ({have})")
-    found = elements[element_id]
-    if len(found) > 1:
-        lines = ", ".join(str(f.line) for f in found)
-        raise _Refusal(f"expected a unique id, found {len(found)} elements with it (lines {lines})")
-    element = found[0]
-    if not element.drawable:
-        kinds = ", ".join(f"<{tag}>" for tag in SUPPORTED)
-        raise _Refusal(f"expected one of {kinds}, found {element.kind} (line {element.line})")
-    return element
+def _stroke_width(text: str, d: Drawn) -> float:
+    from svgelements import Length
+
+    try:
+        value = float(Length(text.strip()).value(ppi=96.0, relative_length=_diagonal(d.document)))
+    except (ValueError, TypeError):
+        return 1.0
+    return value if math.isfinite(value) and value >= 0 else 1.0
 
 
-def _check_syntax(found: _Found) -> None:
-    """Refuse what svgelements would silently truncate: stray characters, odd coordinates."""
-    if found.tag == "path":
-        d = found.attributes.get("d", "")
+def _diagonal(document: Document) -> float:
+    box = view_box(document) or (0.0, 0.0, 100.0, 100.0)
+    return math.hypot(box[2], box[3]) / math.sqrt(2)
+
+
+def _color(text: str, style: dict[str, str], document: Document, opacity: float) -> Color | None:
+    """A paint value as straight RGBA: ``none`` → None; ``currentColor`` → the ``color`` property
+    (black by default); ``url(#gradient)`` → the average of its stops; else a CSS colour."""
+    from svgelements import Color as SvgColor
+
+    value = text.strip()
+    if value in ("none", "transparent") or not value:
+        return None
+    if value.startswith("url("):
+        ref, _, fallback = value[4:].partition(")")
+        found = _gradient_color(ref.strip().strip("'\"").lstrip("#"), document)
+        if found is None:
+            return _color(fallback.strip() or "black", style, document, opacity) if fallback.strip() else None
+        r, g, b, a = found
+        return (r, g, b, int(round(a * opacity)))
+    if value.lower() == "currentcolor":
+        value = style.get("color", "black").strip() or "black"
+        if value.lower() == "currentcolor":
+            value = "black"
+    try:
+        c = SvgColor(value)
+    except (ValueError, TypeError):
+        c = None
+    if c is None or c.value is None:
+        return (0, 0, 0, int(round(255 * opacity)))  # an unreadable colour: black, as browsers fall back
+    return (c.red, c.green, c.blue, int(round(c.alpha * opacity)))
+
+
+def _gradient_color(ident: str, document: Document, depth: int = 0) -> Color | None:
+    from svgelements import Color as SvgColor
+
+    nodes = document.ids.get(ident)
+    if not nodes or depth > 8:
+        return None
+    node = nodes[0]
+    stops = [c for c in node.children if c.tag == "stop"]
+    if not stops:
+        href = node.attrs.get("href", node.attrs.get("xlink:href", ""))
+        return _gradient_color(href.lstrip("#"), document, depth + 1) if href.startswith("#") else None
+    colours = []
+    for stop in stops:
+        from .svg_document import own_style
+
+        own = own_style(stop, document)
+        try:
+            c = SvgColor(own.get("stop-color", "black"))
+        except (ValueError, TypeError):
+            continue
+        if c.value is None:
+            continue
+        colours.append((c.red, c.green, c.blue, c.alpha * _number(own.get("stop-opacity"), 1.0)))
+    if not colours:
+        return None
+    mean = np.mean(np.array(colours, dtype=float), axis=0)
+    return (int(round(mean[0])), int(round(mean[1])), int(round(mean[2])), int(round(mean[3])))
+
+
+# -- geometry ------------------------------------------------------------------------------------------
+
+
+def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budget
+              ) -> list[tuple[NDArray[np.float64], bool]]:
+    """The element's subpaths flattened into world contours, without degenerate ones."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        if not np.all(np.isfinite(to_world)) or abs(np.linalg.det(to_world[:2, :2])) == 0:
+            return []  # a transform that collapses the element: nothing is drawn (as in SVG)
+    shape = _geometry(d.node, d.document)
+    if shape is None:
+        return []
+    try:
+        segments_all = list(shape.segments(transformed=False))
+    except Exception as error:  # a third-party parser on arbitrary input: report, do not crash
+        raise Refusal(_why_not_drawn(d.node)) from error
+    out = []
+    for segments, closed in subpaths(segments_all):
+        points = distinct(flatten(segments, to_world, tol, budget), closed)
+        if len(points) >= 2:
+            out.append((points, closed and len(points) >= 3))
+    return out
+
+
+def _geometry(node: Node, document: Document):  # type: ignore[no-untyped-def]
+    """The element as an svgelements shape in its own coordinates, or None when SVG draws nothing."""
+    from svgelements import Circle, Ellipse, Path, Polygon, Polyline, Rect, SimpleLine
+
+    box = view_box(document) or (0.0, 0.0, 100.0, 100.0)
+    w, h, diag = box[2], box[3], math.hypot(box[2], box[3]) / math.sqrt(2)
+    _check_syntax(node)
+    tag = node.tag
+    if tag == "path":
+        try:
+            return Path(node.attrs.get("d", ""))
+        except Exception as error:  # svgelements refuses data with too few numbers for a command
+            raise Refusal(_why_not_drawn(node)) from error
+    if tag in ("polygon", "polyline"):
+        cls = Polygon if tag == "polygon" else Polyline
+        return cls({"points": node.attrs.get("points", "")})
+    if tag == "line":
+        return SimpleLine({k: str(length(node, k, 0.0, w if k[0] == "x" else h)) for k in ("x1", "y1", "x2", "y2")})
+    if tag == "rect":
+        width, height = length(node, "width", 0.0, w), length(node, "height", 0.0, h)
+        if width <= 0 or height <= 0:
+            return None
+        values = {"x": length(node, "x", 0.0, w), "y": length(node, "y", 0.0, h), "width": width, "height": height}
+        for k, rel in (("rx", w), ("ry", h)):
+            if k in node.attrs:
+                values[k] = length(node, k, 0.0, rel)
+        return Rect({k: str(v) for k, v in values.items()})
+    if tag == "circle":
+        r = length(node, "r", 0.0, diag)
+        if r <= 0:
+            return None
+        return Circle({"cx": str(length(node, "cx", 0.0, w)), "cy": str(length(node, "cy", 0.0, h)), "r": str(r)})
+    if tag == "ellipse":
+        rx, ry = length(node, "rx", 0.0, w), length(node, "ry", 0.0, h)
+        if rx <= 0 or ry <= 0:
+            return None
+        return Ellipse({"cx": str(length(node, "cx", 0.0, w)), "cy": str(length(node, "cy", 0.0, h)),
+                        "rx": str(rx), "ry": str(ry)})
+    return None
+
+
+def _check_syntax(node: Node) -> None:
+    """Refuse what svgelements would silently truncate (stray characters, odd coordinates) and path
+    data too large to be within the vertex limit, before it is parsed."""
+    if node.tag == "path":
+        d = node.attrs.get("d", "")
         if not d.strip():
-            raise _Refusal(f"expected path data, found an empty or missing d (line {found.line})")
+            raise Refusal(f"expected path data, found an empty or missing d (line {node.line})")
+        _within_limit(d, node, 7)  # an arc takes 7 numbers and gives at least one vertex
         position = _scan_tokens(_PATH_TOKEN, d)
         if position is not None:
-            raise _Refusal(
-                f"expected path data of commands and numbers, found {_excerpt(d, position)!r} "
-                f"at character {position + 1} (line {found.line})"
-            )
+            raise Refusal(f"expected path data of commands and numbers, found {_excerpt(d, position)!r} "
+                          f"at character {position + 1} (line {node.line})")
         if d.strip()[0] not in "Mm":
-            raise _Refusal(f"expected path data that starts with M or m, found {_excerpt(d, 0)!r}")
-    elif found.tag in ("polygon", "polyline"):
-        points = found.attributes.get("points", "")
+            raise Refusal(f"expected path data that starts with M or m, found {_excerpt(d, 0)!r} (line {node.line})")
+    elif node.tag in ("polygon", "polyline"):
+        points = node.attrs.get("points", "")
+        _within_limit(points, node, 2)
         position = _scan_tokens(_POINTS_TOKEN, points)
         if position is not None:
-            raise _Refusal(
-                f"expected points as numbers, found {_excerpt(points, position)!r} "
-                f"at character {position + 1} (line {found.line})"
-            )
+            raise Refusal(f"expected points as numbers, found {_excerpt(points, position)!r} "
+                          f"at character {position + 1} (line {node.line})")
         count = len(_POINTS_TOKEN.findall(points))
         if count % 2:
-            raise _Refusal(f"expected points as x,y pairs, found an odd count of numbers ({count})")
+            raise Refusal(f"expected points as x,y pairs, found an odd count of numbers ({count}) (line {node.line})")
     for name in ("width", "height", "r", "rx", "ry"):  # SVG: a negative size is an error
-        if found.attributes.get(name, "").strip().startswith("-"):
-            raise _Refusal(f"expected {name} ≥ 0, found {name}={found.attributes[name]!r} (line {found.line})")
+        if node.attrs.get(name, "").strip().startswith("-"):
+            raise Refusal(f"expected {name} ≥ 0, found {name}={node.attrs[name]!r} (line {node.line})")
+
+
+def _within_limit(text: str, node: Node, per_vertex: int) -> None:
+    """Refuse data whose numbers alone prove more than :data:`MAX_VERTICES` vertices, in one pass.
+
+    A number has at most three runs of digits (whole, fraction, exponent), so the runs
+    counted over three bound the numbers from below; ``per_vertex`` numbers give at least
+    one vertex.
+    """
+    if len(text) < 3 * per_vertex * MAX_VERTICES:
+        return  # too short to hold that many numbers
+    digits = np.frombuffer(text.encode("ascii", "replace"), dtype=np.uint8)
+    is_digit = (digits >= 48) & (digits <= 57)
+    runs = int(np.count_nonzero(is_digit[1:] & ~is_digit[:-1])) + int(is_digit[0])
+    if runs // 3 // per_vertex > MAX_VERTICES:
+        raise Refusal(f"expected at most {MAX_VERTICES} vertices, found data for more "
+                      f"({len(text)} characters, line {node.line})")
 
 
 def _scan_tokens(token: re.Pattern[str], text: str) -> int | None:
@@ -263,225 +501,17 @@ def _excerpt(text: str, position: int) -> str:
     return rest if len(rest) <= 24 else rest[:24] + "…"
 
 
-def _polygon(data: bytes, element_id: str, found: _Found, tol: float) -> NDArray[np.float64]:
-    try:
-        # display="none" elements are parsed too: animators hide the layers of other keys.
-        document = SVG.parse(io.BytesIO(data), reify=False, parse_display_none=True)
-    except Exception as error:  # a third-party parser on arbitrary input: report, do not crash
-        raise _Refusal(f"expected a drawing svgelements can read, found: {error}") from error
-    if not (document.width and document.height):  # svgelements stops at a zero-sized root
-        raise _Refusal("expected a root <svg> of positive size, found a zero width or height")
-    element = document.get_element_by_id(element_id)
-    if not isinstance(element, Shape):
-        raise _Refusal(_why_not_drawn(found))
-    segments = _single_subpath(list(element.segments(transformed=False)), found)
-    points = _distinct(_flatten(segments, _to_world(document, element), tol))
-    if len(points) < 3:
-        raise _Refusal(f"expected a closed outline of at least 3 distinct vertices, found {len(points)}")
-    return points
-
-
-def _why_not_drawn(found: _Found) -> str:
-    """Why svgelements left out an element the XML scan found (it skips bad or empty ones)."""
-    if found.tag == "path":
-        d = found.attributes.get("d", "")
-        return f"expected path data with the right count of numbers per command, found {_excerpt(d, 0)!r}"
-    if found.tag in ("polygon", "polyline"):
-        points = found.attributes.get("points", "")
-        return f"expected at least 3 distinct vertices, found points={_excerpt(points, 0)!r}"
-    geometry = " ".join(
-        f'{k}="{v}"' for k, v in found.attributes.items()
-        if k in ("x", "y", "width", "height", "rx", "ry", "cx", "cy", "r")
-    )
-    return (
-        f"expected a <{found.tag}> of positive size, found one svgelements cannot draw "
-        f"({geometry or 'no geometry'}, line {found.line})"
-    )
-
-
-def _matrix(matrix: Matrix) -> NDArray[np.float64]:
-    """svgelements' ``(a, b, c, d, e, f)`` as a 3x3 acting on column vectors ``(x, y, 1)``."""
-    return np.array([[matrix.a, matrix.c, matrix.e], [matrix.b, matrix.d, matrix.f], [0.0, 0.0, 1.0]])
-
-
-def _to_world(document: SVG, element: Shape) -> NDArray[np.float64]:
-    """Element coordinates → world: every transform inside the root, then y flipped."""
-    # svgelements' element.transform = root transform ∘ viewBox mapping ∘ groups ∘ own;
-    # the first two are undone to stay in user units.
-    outside = _matrix(Matrix(f"{document.values.get('transform', '')} {document.viewbox_transform}"))
-    if np.linalg.det(outside[:2, :2]) == 0:
-        raise _Refusal("expected a root <svg> of positive size, found one that collapses the drawing")
-    user = np.linalg.solve(outside, _matrix(element.transform))
-    return np.diag([1.0, -1.0, 1.0]) @ user
-
-
-def _single_subpath(segments: list[object], found: _Found) -> list[object]:
-    """The drawing segments of the only subpath that draws; refuse several."""
-    subpaths: list[list[object]] = []
-    current: list[object] | None = None
-    for segment in segments:
-        if isinstance(segment, Move):
-            current = None
-            continue
-        if current is None:
-            current = []
-            subpaths.append(current)
-        current.append(segment)
-        if isinstance(segment, Close):
-            current = None  # a command after Z starts a new subpath at the same point
-    drawing = [s for s in subpaths if any(_draws(segment) for segment in s)]
-    if len(drawing) > 1:
-        raise _Refusal(
-            f"expected a single closed outline, found {len(drawing)} subpaths in this <{found.tag}> "
-            f"(holes or separate pieces; line {found.line}); split or combine them in the editor"
-        )
-    return drawing[0] if drawing else []
-
-
-def _draws(segment: object) -> bool:
-    points = [segment.start, segment.end]  # type: ignore[attr-defined]
-    if isinstance(segment, QuadraticBezier):
-        points.append(segment.control)
-    elif isinstance(segment, CubicBezier):
-        points += [segment.control1, segment.control2]
-    return any(p != points[0] for p in points[1:])
-
-
-def _flatten(segments: list[object], to_world: NDArray[np.float64], tol: float) -> NDArray[np.float64]:
-    """World vertices of a subpath, its start first; curves within ``tol`` of their chords."""
-    if not segments:
-        return np.empty((0, 2))
-    linear, offset = to_world[:2, :2], to_world[:2, 2]
-
-    def world(*points: object) -> NDArray[np.float64]:
-        local = np.array([(p.x, p.y) for p in points], dtype=np.float64)  # type: ignore[attr-defined]
-        with np.errstate(invalid="ignore", over="ignore"):  # refused just below
-            placed = local @ linear.T + offset
-        if not np.all(np.isfinite(placed)):
-            raise _Refusal("expected finite coordinates, found infinite or NaN ones after transforms")
-        return placed
-
-    out: list[NDArray[np.float64]] = [world(segments[0].start)]  # type: ignore[attr-defined]
-    count = 1
-    for segment in segments:
-        if isinstance(segment, CubicBezier):
-            piece = _flatten_bezier(world(segment.start, segment.control1, segment.control2, segment.end), tol)
-        elif isinstance(segment, QuadraticBezier):
-            piece = _flatten_bezier(world(segment.start, segment.control, segment.end), tol)
-        elif isinstance(segment, Arc):
-            piece = _flatten_arc(segment, linear, offset, tol, world(segment.end))
-        elif isinstance(segment, (Line, Close)):
-            piece = world(segment.end)
-        else:
-            raise _Refusal(f"expected lines, Béziers and arcs, found a {type(segment).__name__} segment")
-        count += len(piece)
-        if count > MAX_VERTICES:
-            raise _Refusal(f"expected at most {MAX_VERTICES} vertices, found more at tolerance {tol:g}")
-        out.append(piece)
-    return np.concatenate(out)
-
-
-def _flatten_bezier(nodes: NDArray[np.float64], tol: float) -> NDArray[np.float64]:
-    """Vertices after the first of a Bézier ``(degree + 1, 2)``, by halving until flat.
-
-    Each emitted chord's piece is within ``tol`` of it (see :func:`_flatness`),
-    so the whole curve is within ``tol`` of the polygon.
-    """
-    out: list[NDArray[np.float64]] = []
-    stack = [(nodes, 0)]
-    while stack:
-        piece, depth = stack.pop()
-        if _flatness(piece) <= tol:
-            out.append(piece[-1])
-            if len(out) > MAX_VERTICES:
-                raise _Refusal(f"expected at most {MAX_VERTICES} vertices, found more at tolerance {tol:g}")
-            continue
-        if depth >= _MAX_DEPTH:
-            raise _Refusal(f"expected a tolerance the coordinates can resolve, found {tol:g}")
-        left, right = _halve(piece)
-        stack += [(right, depth + 1), (left, depth + 1)]
-    return np.array(out)
-
-
-def _flatness(nodes: NDArray[np.float64]) -> float:
-    """An upper bound of the distance from a Bézier to its chord (segment first–last node).
-
-    The smaller of two sound bounds: the curve lies in its control points' convex
-    hull and distance to a segment is convex, so the farthest control point
-    bounds it (zero for any straight curve); and, writing B(t) - L(t) as
-    Σ b_i(t) (P_i - L(i/n)) with L the chord at uniform speed, that is at most
-    (1 - 2^(1-n)) max |P_i - L(i/n)| (3/4 for cubics, 1/2 for quadratics).
-    """
-    first, last = nodes[0], nodes[-1]
-    inner = nodes[1:-1]
-    chord = last - first
-    length2 = float(chord @ chord)
-    s = np.clip((inner - first) @ chord / length2, 0.0, 1.0) if length2 > 0 else np.zeros(len(inner))
-    hull = np.max(np.hypot(*(inner - first - s[:, None] * chord).T))
-    n = len(nodes) - 1
-    u = np.arange(1, n)[:, None] / n
-    uniform = (1.0 - 2.0 ** (1 - n)) * np.max(np.hypot(*(inner - first - u * chord).T))
-    return float(min(hull, uniform))
-
-
-def _halve(nodes: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """de Casteljau at t = 1/2: the control points of both halves."""
-    left, right, level = [nodes[0]], [nodes[-1]], nodes
-    while len(level) > 1:
-        level = 0.5 * (level[:-1] + level[1:])
-        left.append(level[0])
-        right.append(level[-1])
-    return np.array(left), np.array(right[::-1])
-
-
-def _flatten_arc(
-    arc: Arc, linear: NDArray[np.float64], offset: NDArray[np.float64], tol: float, end: NDArray[np.float64]
-) -> NDArray[np.float64]:
-    """Vertices after the first of an elliptical arc, at equal steps of its parameter; ``end`` ``(1, 2)``.
-
-    Locally the arc is c + a cos θ + b sin θ (a, b its semi-axes); in the world
-    it is c' + W (cos θ, sin θ) with W = linear @ [a b], the affine image of a
-    unit circle. A chord spanning Δ of the unit circle stays within the sagitta
-    1 - cos(Δ/2) of it, and W stretches no distance by more than its largest
-    singular value σ, so steps Δ ≤ 2 arccos(1 - tol/σ) keep the curve within tol.
-    For a circle of radius r this is the exact sagitta rule (σ = r).
-    """
-    rx, ry = float(arc.rx), float(arc.ry)
-    if arc.sweep == 0 or rx == 0 or ry == 0:
-        return end  # a zero-radius arc is a straight line (SVG's rule)
-    center = np.array([arc.center.x, arc.center.y])
-    a = np.array([arc.prx.x, arc.prx.y]) - center
-    b = (ry / rx) * np.array([-a[1], a[0]])  # svgelements' frame: t = π/2 lies 90° on from prx
-    axes = np.column_stack([a, b])
-    theta0, theta1 = (
-        math.atan2(*np.linalg.solve(axes, np.array([p.x, p.y]) - center)[::-1]) for p in (arc.start, arc.end)
-    )
-    # The sweep from the exact end points, in the direction and turn count of svgelements' sweep.
-    sweep = theta1 - theta0 + 2 * math.pi * round((arc.sweep - (theta1 - theta0)) / (2 * math.pi))
-    world_axes = linear @ axes
-    sigma = float(np.linalg.norm(world_axes, 2))
-    if sigma <= tol:
-        step = math.pi / 2
-    else:
-        step = min(math.pi / 2, 2.0 * math.acos(1.0 - tol / sigma))
-    n = max(1, math.ceil(abs(sweep) / step - 1e-12))
-    if n > MAX_VERTICES:
-        raise _Refusal(f"expected at most {MAX_VERTICES} vertices, found more at tolerance {tol:g}")
-    theta = theta0 + sweep * np.arange(1, n) / n
-    inner = (linear @ center + offset) + np.column_stack([np.cos(theta), np.sin(theta)]) @ world_axes.T
-    return np.vstack([inner, end])
-
-
-def _distinct(points: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Without consecutive duplicates or closing duplicates (within 1e-9 of the extent)."""
-    if len(points) == 0:
-        return points
-    extent = float(np.max(np.ptp(points, axis=0)))
-    eps = 1e-9 * extent
-    kept = [points[0]]
-    for point in points[1:]:
-        if np.max(np.abs(point - kept[-1])) > eps:
-            kept.append(point)
-    while len(kept) > 1 and np.max(np.abs(kept[-1] - kept[0])) <= eps:
-        kept.pop()
-    return np.array(kept, dtype=np.float64)
+def _why_not_drawn(node: Node) -> str:
+    """Why an element gives no outline (svgelements skips bad or empty geometry)."""
+    if node.tag == "path":
+        d = node.attrs.get("d", "")
+        return (f"expected path data with the right count of numbers per command that draws distinct vertices, "
+                f"found {_excerpt(d, 0)!r} (line {node.line})")
+    if node.tag in ("polygon", "polyline"):
+        points = node.attrs.get("points", "")
+        least = 3 if node.tag == "polygon" else 2
+        return f"expected at least {least} distinct vertices, found points={_excerpt(points, 0)!r} (line {node.line})"
+    geometry = " ".join(f'{k}="{v}"' for k, v in node.attrs.items()
+                        if k in ("x", "y", "width", "height", "rx", "ry", "cx", "cy", "r", "x1", "y1", "x2", "y2"))
+    return (f"expected a <{node.tag}> of positive size, found one that draws nothing "
+            f"({geometry or 'no geometry'}, line {node.line})")

@@ -1,0 +1,354 @@
+"""An SVG file read safely into a tree, and walked into the elements it draws.
+
+The XML is read with expat (no entities, no DTD subsets, bounded size, element
+count and depth). Walking the tree resolves what an SVG renderer would: CSS
+(presentation attributes, ``<style>`` rules with simple selectors, inline
+``style``), inheritance, ``currentColor``, transforms, ``display``,
+``visibility`` and group ``opacity``, and ``<use>`` — whose expansion is
+counted as it goes, so a file of nested ``<use>`` s cannot grow without bound.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterator
+from xml.parsers import expat
+
+import numpy as np
+from numpy.typing import NDArray
+from svgelements import Matrix
+
+from .svg_flatten import Refusal
+
+__all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "SHAPES", "Node", "Document",
+           "Drawn", "read", "parse"]
+
+MAX_FILE_BYTES = 20 * 1024 * 1024
+"""Larger files are refused before parsing: a keyframe drawing is a few kilobytes."""
+MAX_ELEMENTS = 200_000
+"""Elements in one file."""
+MAX_DEPTH = 200
+"""Nesting of elements."""
+MAX_EXPANDED = 50_000
+"""Elements visited while drawing, ``<use>`` copies included."""
+
+SHAPES = ("path", "polygon", "polyline", "rect", "circle", "ellipse", "line")
+"""The elements that draw a shape."""
+
+SVG_NS = "http://www.w3.org/2000/svg"
+XLINK = "http://www.w3.org/1999/xlink"
+_CONTAINERS = ("svg", "g", "a", "switch")
+_NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linearGradient", "radialGradient",
+              "filter", "title", "desc", "metadata", "style", "script")
+_UNSUPPORTED = ("text", "image", "foreignObject")
+_INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
+              "stroke-linejoin", "stroke-miterlimit", "visibility", "color")
+_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity")
+_ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
+_UNSAFE = ("expected plain SVG, found a DOCTYPE with entity declarations (refused: entities can "
+           "expand without bound or read other files); save the drawing as plain SVG")
+_RULE = re.compile(r"([^{}]+)\{([^{}]*)\}")
+_SIMPLE_SELECTOR = re.compile(r"^(\*|[A-Za-z][\w-]*)?((?:[.#][\w-]+)*)$")
+_COMMENT = re.compile(r"/\*.*?\*/", re.S)
+
+
+@dataclass(slots=True)
+class Node:
+    """One XML element: its local name, attributes (namespace-free names), line, children, text."""
+
+    tag: str
+    attrs: dict[str, str]
+    line: int
+    children: list[Node] = field(default_factory=list)
+    text: str = ""
+    svg: bool = True  # in the SVG namespace (or none)
+
+
+@dataclass(slots=True)
+class Document:
+    """A parsed drawing: its root, every element with an id, and the style sheet's rules."""
+
+    root: Node
+    ids: dict[str, list[Node]]
+    rules: list[tuple[tuple[int, int, int], int, tuple[str | None, tuple[str, ...], str | None], dict[str, str]]]
+
+
+@dataclass(frozen=True, slots=True)
+class Drawn:
+    """A shape element as drawn: its node, its resolved style, and its transform to the root's user units."""
+
+    node: Node
+    style: dict[str, str]
+    ctm: NDArray[np.float64]  # 3x3, acting on column vectors (x, y, 1)
+    opacity: float  # the product of its own and every ancestor's opacity
+    visible: bool  # display and visibility allow it to be seen
+    document: Document
+
+
+def read(path: Path) -> bytes:
+    """The file's bytes, refused when too large or declaring entities."""
+    try:
+        size = path.stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found {size} bytes")
+        with path.open("rb") as handle:
+            data = handle.read(MAX_FILE_BYTES + 1)
+    except FileNotFoundError:
+        raise Refusal("expected an SVG file, found no file at this path") from None
+    except IsADirectoryError:
+        raise Refusal("expected an SVG file, found a folder") from None
+    except OSError as error:
+        raise Refusal(f"expected a readable SVG file, found: {error.strerror or error}") from error
+    if len(data) > MAX_FILE_BYTES:
+        raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found more")
+    # NULs are dropped so that UTF-16/32 text is caught too; the XML pass refuses the
+    # same declarations in any encoding expat reads.
+    if _ENTITY.search(data.replace(b"\x00", b"")):
+        raise Refusal(_UNSAFE)
+    return data
+
+
+def parse(data: bytes) -> Document:
+    """The XML tree of ``data``, with its ids and style rules."""
+    parser = expat.ParserCreate(namespace_separator=" ")
+    stack: list[Node] = []
+    roots: list[Node] = []
+    ids: dict[str, list[Node]] = {}
+    count = [0]
+
+    def doctype(name: str, system_id: str | None, public_id: str | None, internal: int) -> None:
+        if internal:
+            raise Refusal(_UNSAFE)
+
+    def entity(*_: object) -> None:
+        raise Refusal(_UNSAFE)
+
+    def start(name: str, attributes: dict[str, str]) -> None:
+        namespace, _, tag = name.rpartition(" ")
+        count[0] += 1
+        if count[0] > MAX_ELEMENTS:
+            raise Refusal(f"expected at most {MAX_ELEMENTS} elements, found more")
+        if len(stack) >= MAX_DEPTH:
+            raise Refusal(f"expected elements nested at most {MAX_DEPTH} deep, found deeper "
+                          f"(line {parser.CurrentLineNumber})")
+        attrs = {}
+        for key, value in attributes.items():
+            space, _, local = key.rpartition(" ")
+            attrs["xlink:href" if (space == XLINK and local == "href") else local] = value
+        node = Node(tag, attrs, parser.CurrentLineNumber, svg=namespace in ("", SVG_NS))
+        (stack[-1].children if stack else roots).append(node)
+        stack.append(node)
+        if "id" in attrs:
+            ids.setdefault(attrs["id"], []).append(node)
+
+    def end(name: str) -> None:
+        stack.pop()
+
+    def text(data: str) -> None:
+        if stack and stack[-1].tag == "style":
+            stack[-1].text += data
+
+    parser.StartDoctypeDeclHandler = doctype
+    parser.EntityDeclHandler = entity
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    parser.CharacterDataHandler = text
+    try:
+        parser.Parse(data, True)
+    except expat.ExpatError as error:
+        raise Refusal(f"expected well-formed XML, found {expat.ErrorString(error.code)} "
+                      f"at line {error.lineno}, column {error.offset + 1}") from error
+    if not roots or roots[0].tag != "svg" or not roots[0].svg:
+        raise Refusal(f"expected an <svg> root element, found <{roots[0].tag if roots else ''}>")
+    document = Document(roots[0], ids, [])
+    document.rules = _rules(document.root)
+    return document
+
+
+# -- CSS ------------------------------------------------------------------------------------------
+
+
+def _rules(root: Node) -> list:  # type: ignore[type-arg]
+    """Rules of every ``<style>``: simple selectors (``*``, ``tag``, ``.class``, ``#id`` and their
+    compounds) with their specificity; rules with other selectors are left out."""
+    rules = []
+    order = 0
+    for node in _iterate(root):
+        if node.tag != "style":
+            continue
+        for selectors, body in _RULE.findall(_COMMENT.sub("", node.text)):
+            declarations = _declarations(body)
+            for selector in selectors.split(","):
+                parsed = _selector(selector.strip())
+                if parsed is None:
+                    continue
+                tag, classes, ident = parsed
+                specificity = (int(ident is not None), len(classes), int(tag is not None))
+                rules.append((specificity, order, parsed, declarations))
+                order += 1
+    rules.sort(key=lambda rule: (rule[0], rule[1]))
+    return rules
+
+
+def _selector(text: str) -> tuple[str | None, tuple[str, ...], str | None] | None:
+    match = _SIMPLE_SELECTOR.match(text)
+    if not text or match is None:
+        return None
+    tag = match.group(1)
+    parts = re.findall(r"[.#][\w-]+", match.group(2))
+    idents = [p[1:] for p in parts if p[0] == "#"]
+    if len(idents) > 1:
+        return None
+    return (None if tag in (None, "*") else tag, tuple(p[1:] for p in parts if p[0] == "."),
+            idents[0] if idents else None)
+
+
+def _declarations(text: str) -> dict[str, str]:
+    out = {}
+    for item in text.split(";"):
+        name, colon, value = item.partition(":")
+        if colon:
+            out[name.strip().lower()] = value.replace("!important", "").strip()
+    return out
+
+
+def _iterate(node: Node) -> Iterator[Node]:
+    stack = [node]
+    while stack:
+        current = stack.pop()
+        yield current
+        stack.extend(reversed(current.children))
+
+
+def own_style(node: Node, document: Document) -> dict[str, str]:
+    """The node's own properties: presentation attributes, then matching CSS rules, then ``style``."""
+    style = {name: node.attrs[name].strip() for name in _PROPERTIES if name in node.attrs}
+    if document.rules:
+        classes = set(node.attrs.get("class", "").split())
+        for _, _, (tag, wanted, ident), declarations in document.rules:
+            if (tag is None or tag == node.tag) and set(wanted) <= classes and \
+                    (ident is None or ident == node.attrs.get("id")):
+                style.update((k, v) for k, v in declarations.items() if k in _PROPERTIES)
+    if "style" in node.attrs:
+        style.update((k, v) for k, v in _declarations(node.attrs["style"]).items() if k in _PROPERTIES)
+    return style
+
+
+# -- walking --------------------------------------------------------------------------------------
+
+
+def matrix(text: str) -> NDArray[np.float64]:
+    """A ``transform`` attribute as a 3x3 matrix (an invalid one reads as identity, as browsers do)."""
+    m = Matrix(text)
+    return np.array([[m.a, m.c, m.e], [m.b, m.d, m.f], [0.0, 0.0, 1.0]])
+
+
+def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -> float:
+    """A length attribute in user units (units at 96 per inch, percentages of ``relative``)."""
+    from svgelements import Length
+
+    text = node.attrs.get(name)
+    if text is None or not text.strip():
+        return default
+    try:
+        value = Length(text.strip()).value(ppi=96.0, relative_length=relative)
+        return float(value)
+    except (ValueError, TypeError):
+        raise Refusal(f"expected a length for {name}, found {text!r} (line {node.line})") from None
+
+
+class _Walk:
+    """One walk of the tree: counts every element visited (``<use>`` copies included)."""
+
+    def __init__(self, document: Document, keep_hidden: bool) -> None:
+        self.document = document
+        self.keep_hidden = keep_hidden
+        self.visited = 0
+        self.using: list[str] = []
+
+    def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
+              shown: bool) -> Iterator[Drawn]:
+        self.visited += 1
+        if self.visited > MAX_EXPANDED:
+            raise Refusal(f"expected at most {MAX_EXPANDED} elements once <use> copies are counted, found more")
+        if not node.svg or node.tag in _NOT_DRAWN:
+            return
+        own = own_style(node, self.document)
+        style = {k: parent[k] for k in _INHERITED if k in parent}
+        style.update((k, v) for k, v in own.items() if v != "inherit")
+        if own.get("display", "").strip() == "none":
+            if not self.keep_hidden:
+                return
+            shown = False
+        try:
+            alpha = float(own.get("opacity", "1"))
+        except ValueError:
+            alpha = 1.0
+        opacity *= min(max(alpha, 0.0), 1.0)
+        if node is not self.document.root and "transform" in node.attrs:
+            ctm = ctm @ matrix(node.attrs["transform"])
+        if node.tag in SHAPES:
+            visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
+            yield Drawn(node, style, ctm, opacity, visible, self.document)
+        elif node.tag == "use":
+            yield from self.use(node, style, ctm, opacity, shown)
+        elif node.tag in _CONTAINERS:
+            if node.tag == "svg" and node is not self.document.root:
+                ctm = ctm @ _nested_viewport(node)
+            for child in node.children:
+                yield from self.visit(child, style, ctm, opacity, shown)
+        elif node.tag in _UNSUPPORTED and shown:
+            raise Refusal(f"expected shapes, found <{node.tag}> (line {node.line}); "
+                          "convert it to paths in the editor (Inkscape: Path > Object to Path)")
+
+    def use(self, node: Node, style: dict[str, str], ctm: NDArray[np.float64], opacity: float,
+            shown: bool) -> Iterator[Drawn]:
+        href = node.attrs.get("href", node.attrs.get("xlink:href", "")).strip()
+        if not href.startswith("#"):
+            return  # external references are not followed
+        target = self.document.ids.get(href[1:])
+        if not target:
+            raise Refusal(f"expected <use> to refer to an element of the drawing, found {href!r} (line {node.line})")
+        if href in self.using:
+            raise Refusal(f"expected <use> references without a loop, found {href!r} inside itself "
+                          f"(line {node.line})")
+        placed = ctm @ np.array([[1.0, 0.0, length(node, "x")], [0.0, 1.0, length(node, "y")], [0.0, 0.0, 1.0]])
+        self.using.append(href)
+        try:
+            referenced = target[0]
+            if referenced.tag == "symbol":
+                for child in referenced.children:
+                    yield from self.visit(child, style, placed, opacity, shown)
+            else:
+                yield from self.visit(referenced, style, placed, opacity, shown)
+        finally:
+            self.using.pop()
+
+
+def _nested_viewport(node: Node) -> NDArray[np.float64]:
+    """A nested ``<svg>``: its x, y offset and its viewBox scaled into its width and height."""
+    x, y = length(node, "x"), length(node, "y")
+    box = node.attrs.get("viewBox")
+    offset = np.array([[1.0, 0.0, x], [0.0, 1.0, y], [0.0, 0.0, 1.0]])
+    if not box:
+        return offset
+    try:
+        bx, by, bw, bh = (float(v) for v in box.replace(",", " ").split())
+    except ValueError:
+        return offset
+    width, height = length(node, "width", bw), length(node, "height", bh)
+    if bw <= 0 or bh <= 0:
+        return offset
+    s = min(width / bw, height / bh)
+    dx, dy = x + (width - s * bw) / 2 - s * bx, y + (height - s * bh) / 2 - s * by
+    return np.array([[s, 0.0, dx], [0.0, s, dy], [0.0, 0.0, 1.0]])
+
+
+def walk(document: Document, keep_hidden: bool = False) -> Iterator[Drawn]:
+    """Every shape element of the drawing in paint order, with its style and transform.
+
+    ``keep_hidden`` walks into ``display:none`` too (the elements come with ``visible`` False).
+    """
+    return _Walk(document, keep_hidden).visit(document.root, {}, np.eye(3), 1.0, True)

@@ -35,7 +35,7 @@ def _ring(count: int) -> str:
 
 # (file name, text, where (substring of the message), expected words)
 MORE_BAD = [
-    ("empty.toml", "", "shape", "at least one [[shape]], found none"),
+    ("empty.toml", "", "shape", "at least one [[shape]] or [[drawing]], found none"),
     ("comments.toml", "# nothing\n\n", "shape", "at least one [[shape]]"),
     ("array-top.toml", "[[size]]\nw = 1\n", "size (line 1)", "found an array of 1 table"),
     ("shape-table.toml", '[shape]\nname = "a"\n', "shape (line 1)", "found a table of 1 key"),

@@ -13,7 +13,7 @@ from ..model import METHODS
 Number = TypeVar("Number", int, float)
 
 __all__ = ["method", "methods", "size", "fps", "times", "count", "print_json", "png_target", "max_frames_flag",
-           "check_frame_count"]
+           "check_frame_count", "seconds"]
 
 
 def methods(text: str) -> tuple[str, ...]:
@@ -57,6 +57,19 @@ def fps(text: str) -> float:
 
     low, high = LIMITS["fps"]
     return _ranged(float, "a number of frames per second", low, high, "--fps")(text)
+
+
+def seconds(text: str) -> float:
+    """A positive, finite number of seconds (``--step``)."""
+    import math
+
+    try:
+        value = float(text)
+    except ValueError:
+        raise UsageError(f"--step: expected seconds as a number, found {text!r}") from None
+    if not (math.isfinite(value) and 0 < value <= 1e6):
+        raise UsageError(f"--step: expected seconds above 0 and at most 1000000, found {text}")
+    return value
 
 
 def times(text: str) -> list[float]:

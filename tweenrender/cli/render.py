@@ -10,7 +10,7 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..model import METHODS
-from .args import check_frame_count, count, fps, max_frames_flag, method, methods, size
+from .args import check_frame_count, count, fps, max_frames_flag, method, methods, seconds, size
 from .matching_flags import add_matching_flags
 from .overlay_flags import add_overlay_flags
 
@@ -18,8 +18,11 @@ from .overlay_flags import add_overlay_flags
 def register(sub: argparse._SubParsersAction) -> None:
     from ..encode import FORMATS
 
-    p = sub.add_parser("render", help="render a scene to video or PNG frames")
-    p.add_argument("scene", metavar="SCENE")
+    p = sub.add_parser("render", help="render a scene, or SVG drawings morphing into each other, to video or PNG")
+    p.add_argument("scene", nargs="+", metavar="SCENE|A.svg B.svg..",
+                   help="a scene file (.toml, .json), or SVG drawings, one key each")
+    p.add_argument("--step", type=seconds, metavar="S", default=1.0,
+                   help="seconds between the keys of SVG drawings given on the command line (default 1)")
     p.add_argument("-o", "--output", metavar="OUT",
                    help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png)")
     p.add_argument("--method", type=method, metavar="M", help=f"one method for every shape: {', '.join(METHODS)}")
@@ -39,28 +42,30 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(run=run)
 
 
-def default_target(scene_path: str, fmt: str | None, compare: bool) -> Path:
-    """``output/<stem>.<fmt>`` (``<stem>-compare`` for comparisons; a folder ``output/<stem>`` for png)."""
-    stem = Path(scene_path).stem + ("-compare" if compare else "")
+def default_target(inputs: list[str], fmt: str | None, compare: bool) -> Path:
+    """``output/<stem>.<fmt>`` (``<stem>-compare`` for comparisons; a folder ``output/<stem>`` for png);
+    the stem of several drawings is theirs joined by ``-``."""
+    stem = "-".join(Path(p).stem for p in inputs[:4]) + ("-compare" if compare else "")
     fmt = fmt or "mp4"
     return Path("output") / (stem if fmt == "png" else f"{stem}.{fmt}")
 
 
 def run(args: argparse.Namespace) -> int:
     from ..pipeline.job import pick_frames, total_frames
-    from ..pipeline.library import output_format, write
-    from ..scenefile import load_scene
+    from ..pipeline.library import load_scene, output_format, write
     from .progress import ProgressBar
 
     if args.method and args.compare is not None:
         raise UsageError("--method and --compare do not go together: list the methods in --compare")
     compare = None if args.compare is None else (methods(args.compare) if args.compare else True)
+    if len(args.scene) > 1 and not all(Path(p).suffix.lower() == ".svg" for p in args.scene):
+        raise UsageError("several inputs must all be SVG drawings (.svg); give one scene file at a time")
     target = Path(args.output) if args.output is not None else default_target(args.scene, args.format,
                                                                                compare is not None)
     output_format(target, args.format)  # a name the format cannot be told from is refused before loading
-    scene = load_scene(args.scene)
+    scene = load_scene(args.scene if len(args.scene) > 1 else args.scene[0], args.step)
     frames = pick_frames(args.frames, total_frames(scene, args.fps))
-    check_frame_count(len(frames), args.max_frames, args.scene)
+    check_frame_count(len(frames), args.max_frames, args.scene[0])
     bar = ProgressBar(target.name, enabled=False if args.quiet else None)
     print(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
                 fps=args.fps, frames=frames, paths=args.paths, onion=args.onion, strip=args.strip,

@@ -40,11 +40,15 @@ _recent: OrderedDict[tuple[int, str | None, tuple[int, int] | None, Color | None
     OrderedDict()
 
 
-def load_scene(path: str | os.PathLike[str]) -> Scene:
-    """The scene at ``path`` (TOML, or JSON by its ``.json`` suffix), validated."""
+def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0) -> Scene:
+    """The scene at ``path`` (TOML; JSON by its ``.json`` suffix; one SVG drawing by ``.svg``), validated;
+    or, for a list of SVG files, their drawings morphing one into the next every ``step`` seconds
+    (what ``tweenrender render a.svg b.svg`` renders)."""
     from ..scenefile import load_scene as load
 
-    return load(path)
+    if isinstance(path, (str, os.PathLike)):
+        return load(Path(path), step)
+    return load([Path(p) for p in path], step)
 
 
 def frame(scene: Scene, time: float, *, method: str | None = None, size: tuple[int, int] | None = None,

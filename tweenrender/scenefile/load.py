@@ -13,7 +13,7 @@ import os
 import stat
 import tomllib
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
@@ -39,10 +39,12 @@ LIMITS = {
     "match_sg": 100_000_000,      # m·n·max(m, n), cost "sg"
 }
 
-_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "correspondence", "unmatched", "shape")
+_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "correspondence", "unmatched", "shape",
+        "drawing")
 _PAINT = ("fill", "stroke", "stroke_width", "opacity")
 _SHAPE = ("name", *_PAINT, "method", "joints", "fill_rule", "closed", "cap", "join", "unmatched", "key")
 _KEY = ("time", "points", "contours", "ease", *_PAINT)
+_DRAWING = ("time", "svg", "ease", "tolerance")
 _SVG = ("svg", "id", "tolerance")
 _MATCHING = ("cost", "align", "equal_counts", "ks", "cs", "es", "kb", "eb", "mb", "pb")
 
@@ -51,8 +53,13 @@ _KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a pipe (FIFO)"), (stat.S_
           (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
 
 
-def load_scene(path: str | Path) -> Scene:
-    """Read and validate the scene at ``path`` (``.json`` is JSON, anything else TOML)."""
+def load_scene(path: str | Path | Sequence[str | Path], step: float = 1.0) -> Scene:
+    """Read and validate the scene at ``path`` (``.json`` is JSON, ``.svg`` one drawing, anything else
+    TOML), or build one from a list of SVG drawings, one key every ``step`` seconds."""
+    if not isinstance(path, (str, Path)):
+        return drawings_scene([Path(p) for p in path], step)
+    if Path(path).suffix.lower() == ".svg":
+        return drawings_scene([Path(path)], step)
     path = Path(path)
     limit = LIMITS["file_bytes"]
     try:
@@ -80,6 +87,28 @@ def load_scene(path: str | Path) -> Scene:
         raise SceneError(path, f"line {line}", f"expected UTF-8 text, found byte 0x{raw[error.start]:02x} "
                                                f"(at byte {error.start})") from None
     return parse_scene(text, path, "json" if path.suffix.lower() == ".json" else "toml")
+
+
+def drawings_scene(paths: Sequence[Path], step: float = 1.0) -> Scene:
+    """A scene of whole drawings, one key every ``step`` seconds: what ``tweenrender render a.svg b.svg``
+    renders. The view is the first drawing's view box, the size fitted to it within 1280 × 720."""
+    from .drawings import DrawingKey, drawing_shapes, read_drawings
+
+    if not paths:
+        raise SceneError(None, None, "expected at least one SVG drawing, found none")
+    if not (isinstance(step, (int, float)) and math.isfinite(step) and 0 < step <= LIMITS["time"] / len(paths)):
+        raise SceneError(None, None, f"expected a step of seconds between drawings above 0, found {step!r}")
+    for path in paths:
+        if path.suffix.lower() != ".svg":
+            raise SceneError(path, None, "expected an SVG drawing (.svg) among several drawings")
+    keys = [DrawingKey(path, i * float(step)) for i, path in enumerate(paths)]
+    drawings, box = read_drawings(keys)
+    shapes = tuple(drawing_shapes(drawings, keys, "grow"))
+    if not shapes:
+        raise SceneError(paths[0], None, "expected at least one visible shape in the drawings, found none")
+    scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0])
+    _Reader(paths[0], "", "toml").matching_effort(shapes, scene.matching)
+    return scene
 
 
 def _refuse_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
@@ -247,12 +276,11 @@ class _Reader:
         view = None
         if "view" in top:
             view = self.view(top["view"])
-        shapes_raw = top.get("shape")
-        if shapes_raw is None:
-            raise self.fail("shape", "expected at least one [[shape]], found none")
-        shapes_raw = self.listing(shapes_raw, "shape", "a list of [[shape]] tables")
-        if not shapes_raw:
-            raise self.fail("shape", "expected at least one [[shape]], found none")
+        unmatched = self.choice(top.get("unmatched", "grow"), "unmatched", UNMATCHED, "rule for unmatched contours")
+        shapes_raw = self.listing(top.get("shape", []), "shape", "a list of [[shape]] tables")
+        drawings_raw = self.listing(top.get("drawing", []), "drawing", "a list of [[drawing]] tables")
+        if not shapes_raw and not drawings_raw:
+            raise self.fail("shape", "expected at least one [[shape]] or [[drawing]], found none")
         shapes = tuple(self.shape(raw, f"shape[{i}]", i) for i, raw in enumerate(shapes_raw))
         names: dict[str, int] = {}
         for i, shape in enumerate(shapes):
@@ -260,7 +288,16 @@ class _Reader:
                 raise self.fail(f"shape[{i}].name", f"expected a unique name, found {_short(shape.name)} "
                                                     f"again (also shape[{names[shape.name]}])")
             names[shape.name] = i
-        method = self.choice(top.get("method", "nonlinear"), "method", METHODS, "method")
+        drawn: tuple[Shape, ...] = ()
+        if drawings_raw:
+            drawn, box = self.drawings(drawings_raw, unmatched)
+            drawn = tuple(_renamed(shape, names) for shape in drawn)
+            if view is None:
+                view = box
+            if "size" not in top:
+                size = fitted_size(box)
+        shapes = drawn + shapes
+        method = self.choice(top.get("method", "auto" if drawings_raw else "nonlinear"), "method", METHODS, "method")
         compare = ("linear", "nonlinear")
         if "compare" in top:
             items = self.listing(top["compare"], "compare", "a list of method names")
@@ -271,12 +308,47 @@ class _Reader:
             if (shape.method or method) == "jointed" and not shape.joints:
                 raise self.fail(f"shape[{i}].method", "method 'jointed' needs joints = [[a, b], ...], found none")
         title = self.string(top["title"], "title") if "title" in top else None
-        background = self.color(top.get("background", "#ffffff"), "background")
+        background = self.background(top.get("background", "#ffffff"), "background")
         matching = self.matching(top.get("correspondence", {}))
         self.matching_effort(shapes, matching)
-        unmatched = self.choice(top.get("unmatched", "grow"), "unmatched", UNMATCHED, "rule for unmatched contours")
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
                      method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched)
+
+    def drawings(self, items: list[Any], unmatched: str) -> tuple[tuple[Shape, ...], tuple[float, float, float, float]]:
+        """``[[drawing]]`` keys: whole SVG files at times; their shapes and the first drawing's view box."""
+        from .drawings import DrawingKey, drawing_shapes, read_drawings
+        from .svg import SvgError
+
+        keys = []
+        for i, raw in enumerate(items):
+            where = f"drawing[{i}]"
+            table = self.table(raw, where, _DRAWING)
+            if "time" not in table or "svg" not in table:
+                raise self.fail(where, "expected time = seconds and svg = \"file.svg\", found "
+                                       f"{', '.join(table) or 'no keys'}")
+            time = self.number(table["time"], f"{where}.time", 0.0, LIMITS["time"], "a time in seconds")
+            if keys and time <= keys[-1].time:
+                raise self.fail(f"{where}.time", f"expected a time after {keys[-1].time:.15g} "
+                                                 f"(times strictly increase), found {time:.15g}")
+            file = self.path.parent / self.string(table["svg"], f"{where}.svg")
+            ease = self.choice(table.get("ease", "linear"), f"{where}.ease", EASES, "easing")
+            tolerance = None
+            if "tolerance" in table:
+                tolerance = self.number(table["tolerance"], f"{where}.tolerance", 1e-9, 1e6,
+                                        "a tolerance in world units")
+            keys.append(DrawingKey(file, time, ease, tolerance))
+        try:
+            drawings, box = read_drawings(keys)
+        except SvgError as error:
+            index = next(i for i, key in enumerate(keys) if str(key.path) == error.path)
+            raise self.fail(f"drawing[{index}].svg", str(error)) from None
+        return tuple(drawing_shapes(drawings, keys, unmatched)), box
+
+    def background(self, value: Any, where: str) -> Color:
+        """A colour, or ``none`` for a transparent background."""
+        if isinstance(value, str) and value.strip().lower() == "none":
+            return (0, 0, 0, 0)
+        return self.color(value, where)
 
     def matching_effort(self, shapes: tuple[Shape, ...], matching: Matching) -> None:
         """Refuse key pairs whose correspondence search would run for minutes (see ``LIMITS``)."""
@@ -472,12 +544,30 @@ class _Reader:
         return [(frozen_points(points), closed) for points, closed in contours]
 
 
+def _renamed(shape: Shape, taken: dict[str, int]) -> Shape:
+    """``shape`` under a name no ``[[shape]]`` has (a drawing's element named like one gets a suffix)."""
+    from dataclasses import replace
+
+    name, n = shape.name, 1
+    while name in taken:
+        n += 1
+        name = f"{shape.name}-{n}"
+    return shape if name == shape.name else replace(shape, name=name)
+
+
+def fitted_size(box: tuple[float, float, float, float], most: tuple[int, int] = (1280, 720)) -> tuple[int, int]:
+    """The largest even size within ``most`` with the aspect of world ``box`` (a drawing's default size)."""
+    width, height = box[2] - box[0], box[3] - box[1]
+    scale = min(most[0] / width, most[1] / height)
+    return (max(2, 2 * round(width * scale / 2)), max(2, 2 * round(height * scale / 2)))
+
+
 def parse_color(text: str, fail: Callable[[str], Exception]) -> Color:
-    """``#rgb``, ``#rrggbb`` or ``#rrggbbaa`` → straight RGBA 0..255."""
+    """``#rgb``, ``#rgba``, ``#rrggbb`` or ``#rrggbbaa`` → straight RGBA 0..255."""
     digits = text[1:] if text.startswith("#") else None
-    if digits is None or len(digits) not in (3, 6, 8) or any(c not in "0123456789abcdefABCDEF" for c in digits):
-        raise fail(f"expected a colour #rgb, #rrggbb or #rrggbbaa, found {_short(text)}")
-    if len(digits) == 3:
+    if digits is None or len(digits) not in (3, 4, 6, 8) or any(c not in "0123456789abcdefABCDEF" for c in digits):
+        raise fail(f"expected a colour #rgb, #rgba, #rrggbb or #rrggbbaa, found {_short(text)}")
+    if len(digits) in (3, 4):
         digits = "".join(c * 2 for c in digits)
     if len(digits) == 6:
         digits += "ff"

@@ -32,6 +32,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (of each panel)")
     p.add_argument("--fps", type=fps, metavar="N")
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")
+    p.add_argument("--background", metavar="COLOR|none",
+                   help="#rgb, #rgba, #rrggbb or #rrggbbaa, or none (transparent: webm, mov, gif and png keep it)")
     add_overlay_flags(p)
     add_matching_flags(p)
     max_frames_flag(p)
@@ -68,7 +70,7 @@ def run(args: argparse.Namespace) -> int:
     check_frame_count(len(frames), args.max_frames, args.scene[0])
     bar = ProgressBar(target.name, enabled=False if args.quiet else None)
     print(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
-                fps=args.fps, frames=frames, paths=args.paths, onion=args.onion, strip=args.strip,
-                cost=args.cost, align=args.align, equal_counts=args.equal_counts, workers=args.workers,
-                progress=bar))
+                fps=args.fps, frames=frames, background=args.background, paths=args.paths, onion=args.onion,
+                strip=args.strip, cost=args.cost, align=args.align, equal_counts=args.equal_counts,
+                workers=args.workers, progress=bar))
     return 0

@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 
-__all__ = ["FORMATS", "PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
+__all__ = ["FORMATS", "ALPHA_FORMATS", "PIXEL_FORMATS", "check_alpha", "codec_options", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
            "ffmpeg_command", "png_bytes"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
@@ -28,7 +28,9 @@ PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
 # read in larger gulps; elsewhere the default stays.
 _PIPE_BYTES = 1 << 20
 
-FORMATS = ("mp4", "webm", "gif", "png")
+FORMATS = ("mp4", "webm", "mov", "gif", "png")
+ALPHA_FORMATS = ("webm", "mov", "gif", "png")
+"""Formats that keep a transparent background: VP9 with alpha, ProRes 4444, GIF's transparent index, PNG."""
 
 # Output options per container: H.264 and VP9 in yuv420p (what every player plays).
 _CODECS: dict[str, list[str]] = {
@@ -36,9 +38,25 @@ _CODECS: dict[str, list[str]] = {
             "-movflags", "+faststart", "-f", "mp4"],
     "webm": ["-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-pix_fmt", "yuv420p",
              "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"],
+    "mov": ["-c:v", "prores_ks", "-profile:v", "4444", "-vendor", "apl0", "-pix_fmt", "yuv444p10le", "-f", "mov"],
     "gif": ["-filter_complex", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=sierra2_4a",
             "-loop", "0", "-f", "gif"],
 }
+# With a transparent background: the same encoders keeping alpha.
+_ALPHA: dict[str, dict[str, str]] = {
+    "webm": {"yuv420p": "yuva420p"},
+    "mov": {"yuv444p10le": "yuva444p10le"},
+    "gif": {"palettegen=stats_mode=diff": "palettegen=stats_mode=diff:reserve_transparent=1",
+            "paletteuse=dither=sierra2_4a": "paletteuse=dither=sierra2_4a:alpha_threshold=128"},
+}
+
+
+def codec_options(fmt: str, alpha: bool = False) -> list[str]:
+    """ffmpeg's output options for ``fmt``; with ``alpha``, those that keep transparency."""
+    options = list(_CODECS[fmt])
+    for old, new in (_ALPHA.get(fmt, {}).items() if alpha else ()):
+        options = [option.replace(old, new) for option in options]
+    return options
 
 
 class Sink(Protocol):
@@ -55,24 +73,33 @@ class Sink(Protocol):
 
 
 def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
-              pixel_format: str = "rgba") -> Sink:
+              pixel_format: str = "rgba", alpha: bool = False) -> Sink:
     """A sink for ``frames`` frames of ``width × height`` at ``fps`` into ``target``.
 
     ``pixel_format`` is the layout of the arrays given to ``write`` (video
-    sinks; PNG frames are always straight RGBA).
+    sinks; PNG frames are always straight RGBA). ``alpha`` keeps transparency
+    (formats of :data:`ALPHA_FORMATS` only).
     """
     if fmt not in FORMATS:
         raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
+    check_alpha(fmt, alpha)
     if fmt in ("mp4", "webm") and (width % 2 or height % 2):
         raise OptionError(f"{fmt} video in yuv420p needs an even width and height, found {width}x{height}")
     prepare_folder(target)
     if fmt == "png":
         return PngSequence(target, frames)
-    return FFmpegVideo(fmt, target, width, height, fps, frames, pixel_format)
+    return FFmpegVideo(fmt, target, width, height, fps, frames, pixel_format, alpha)
+
+
+def check_alpha(fmt: str, alpha: bool) -> None:
+    """Refuse a transparent background in a format that cannot keep it (H.264 MP4)."""
+    if alpha and fmt not in ALPHA_FORMATS:
+        raise OptionError(f"{fmt} (H.264) cannot keep a transparent background; use .webm (VP9 with alpha), "
+                          ".mov (ProRes 4444), .gif or PNG frames, or an opaque background")
 
 
 def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, output: str,
-                   pixel_format: str = "rgba") -> list[str]:
+                   pixel_format: str = "rgba", alpha: bool = False) -> list[str]:
     """The bundled ffmpeg's command line that encodes raw ``pixel_format`` frames from ``source`` as ``fmt``."""
     import imageio_ffmpeg
 
@@ -80,7 +107,7 @@ def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, o
         raise OptionError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)}")
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
             "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}",
-            "-i", source, "-an", *_CODECS[fmt], output]
+            "-i", source, "-an", *codec_options(fmt, alpha), output]
 
 
 def png_bytes(rgba: NDArray[np.uint8]) -> bytes:
@@ -141,13 +168,13 @@ class FFmpegVideo:
     """
 
     def __init__(self, fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
-                 pixel_format: str = "rgba") -> None:
+                 pixel_format: str = "rgba", alpha: bool = False) -> None:
         self.fmt, self.target = fmt, target
         self.width, self.height, self.fps, self.expected = width, height, fps, frames
         self.pixel_format = pixel_format
         self.channels = 3 if pixel_format == "rgb24" else 4
         self.temporary = sibling(target, "." + fmt)
-        command = ffmpeg_command(fmt, width, height, fps, "pipe:0", str(self.temporary), pixel_format)
+        command = ffmpeg_command(fmt, width, height, fps, "pipe:0", str(self.temporary), pixel_format, alpha)
         self.log = tempfile.TemporaryFile()
         # unbuffered: Python's 8 KiB buffer would only add a copy of every frame. Its own
         # session: a terminal's Ctrl-C reaches only this process, which then stops ffmpeg

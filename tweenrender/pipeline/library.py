@@ -97,8 +97,9 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
           workers: int | None = None, progress: Progress | None = None) -> Path:
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
-    The format is ``format`` or ``path``'s extension (``.mp4``, ``.webm``, ``.gif``; a name without
-    one is a folder of PNG frames). ``compare`` lists the methods of side-by-side labelled panels
+    The format is ``format`` or ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name
+    without one is a folder of PNG frames). ``background`` overrides the scene's (``"none"``:
+    transparent, kept by WebM, MOV, GIF and PNG; refused for MP4). ``compare`` lists the methods of side-by-side labelled panels
     (``True``: the scene's ``compare`` list); ``size`` is each panel's. ``frames`` picks part of the
     clip (``"A:B"`` or a ``range``). ``cost``, ``align`` and ``equal_counts`` override the scene's
     ``[correspondence]``. ``workers`` is the number of drawing processes (default: chosen for the
@@ -125,6 +126,9 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     picked = pick_frames(frames, total_frames(scene, rate))
     job = _job(scene, None, size, background, fps=rate, panels=panels, labels=bool(compare), frames=picked,
                paths=paths, onion=onion, strip=strip)
+    from ..encode.sinks import check_alpha
+
+    check_alpha(fmt, job.scene.background[3] < 255)
     if workers is None:
         workers = default_workers(job, fmt)
     elif workers < 1:
@@ -222,6 +226,8 @@ def _color(value: str | Color) -> Color:
     from ..scenefile import parse_color
 
     if isinstance(value, str):
+        if value.strip().lower() == "none":
+            return (0, 0, 0, 0)
         return parse_color(value, lambda message: OptionError(f"background: {message}"))
     try:
         r, g, b, a = (int(v) for v in value)

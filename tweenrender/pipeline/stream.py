@@ -34,7 +34,8 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     # Over an opaque background premultiplied pixels are straight ones: a video
     # encoder can take skia's own BGRA surface, with no conversion and no copy.
     layout = "bgra" if here and fmt != "png" and job.scene.background[3] == 255 else "rgba"
-    sink = open_sink(fmt, target, width, height, job.rate, len(indices), pixel_format=layout)
+    sink = open_sink(fmt, target, width, height, job.rate, len(indices), pixel_format=layout,
+                     alpha=job.scene.background[3] < 255)
     elsewhere = fmt == "png" and not here
     stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None, layout=layout)
     write = sink.write_encoded if elsewhere else sink.write  # type: ignore[attr-defined]

@@ -127,6 +127,9 @@ class Shape:
     miter_limit: float = 4.0
     stroke_scales: bool = False  # True: stroke widths are world units (drawings), else pixels
     unmatched: str | None = None
+    # keys of equal vertex counts: None follows the scene's [correspondence]; drawings say "match",
+    # since the order an SVG editor wrote a contour in is no animator's correspondence
+    equal_counts: str | None = None
 
     @property
     def paint(self) -> Paint:

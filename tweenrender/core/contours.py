@@ -91,7 +91,7 @@ def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Arra
     sorted by ``i`` (contours of a in order), then the new contours of b by ``j``.
     """
     role_a, role_b = roles(a, a_closed), roles(b, b_closed)
-    centre_a, centre_b = _key_centre(a), _key_centre(b)
+    centre_a, centre_b = _box_centre(a), _box_centre(b)
     scale = max(_key_scale(a), _key_scale(b), 1e-300)
     pairs: list[tuple[int | None, int | None]] = []
     for role in ROLES:
@@ -103,8 +103,8 @@ def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Arra
         if len(ia) == len(jb) == 1:
             pairs.append((ia[0], jb[0]))
             continue
-        pa = np.array([a[i].mean(axis=0) - centre_a for i in ia])
-        pb = np.array([b[j].mean(axis=0) - centre_b for j in jb])
+        pa = np.array([_box_centre([a[i]]) - centre_a for i in ia])
+        pb = np.array([_box_centre([b[j]]) - centre_b for j in jb])
         sa = np.log([contour_size(a[i], a_closed[i]) for i in ia])
         sb = np.log([contour_size(b[j], b_closed[j]) for j in jb])
         cost = (np.linalg.norm(pa[:, None] - pb[None], axis=-1) / scale
@@ -120,8 +120,11 @@ def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Arra
     return matched + new
 
 
-def _key_centre(contours: Sequence[Array]) -> Array:
-    return np.concatenate(contours).mean(axis=0)
+def _box_centre(contours: Sequence[Array]) -> Array:
+    """The centre of the contours' bounding box (unlike the vertex mean, blind to how densely
+    curves were flattened)."""
+    every = np.concatenate(contours)
+    return 0.5 * (every.min(axis=0) + every.max(axis=0))
 
 
 def _key_scale(contours: Sequence[Array]) -> float:

@@ -15,7 +15,7 @@ grows from or shrinks to) is reached, never shown.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Sequence
 
 import numpy as np
@@ -211,6 +211,8 @@ def _still(key: Key) -> ShapeAt:
 def build_track(shape: Shape, matching: Matching) -> Track:
     """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through."""
     keys = shape.keys
+    if shape.equal_counts is not None and shape.equal_counts != matching.equal_counts:
+        matching = replace(matching, equal_counts=shape.equal_counts)
     joints = tuple(shape.joints)  # indices into the current key's vertices
     segments = []
     for before, after in zip(keys, keys[1:]):

@@ -25,9 +25,11 @@ from .svg import Drawing, Element, read_drawing
 
 __all__ = ["DrawingKey", "read_drawings", "drawing_shapes"]
 
-# Cost weights of pairing two elements: centre distance (in view diagonals), size ratio, colour.
+# Cost weights of pairing two elements: centre distance (in view diagonals), size ratio, colour
+# (OKLab distance). Where an element sits is the strongest cue, then its colour.
+_POSITION_WEIGHT = 2.0
 _SIZE_WEIGHT = 0.5
-_COLOR_WEIGHT = 0.5
+_COLOR_WEIGHT = 1.0
 _KIND_COST = 0.5  # a filled element with a stroke-only one
 _UNMATCHED_COST = 0.6  # leaving an element without a partner: beyond this, it goes and another comes
 
@@ -115,7 +117,8 @@ def _cost(x: Element, y: Element, diagonal: float) -> float:
 
     cx, cy = _centre(x), _centre(y)
     sx, sy = _size(x), _size(y)
-    cost = float(np.hypot(*(cx - cy))) / diagonal + _SIZE_WEIGHT * abs(float(np.log(sx / sy)))
+    cost = (_POSITION_WEIGHT * float(np.hypot(*(cx - cy))) / diagonal
+            + _SIZE_WEIGHT * abs(float(np.log(sx / sy))))
     colour_x, colour_y = x.paint.fill or x.paint.stroke, y.paint.fill or y.paint.stroke
     if colour_x is not None and colour_y is not None:
         lab = srgb_to_oklab(np.array([colour_x[:3], colour_y[:3]], dtype=float) / 255.0)
@@ -126,7 +129,9 @@ def _cost(x: Element, y: Element, diagonal: float) -> float:
 
 
 def _centre(element: Element) -> np.ndarray:
-    return np.concatenate([c.points for c in element.contours]).mean(axis=0)
+    """The centre of the element's bounding box."""
+    every = np.concatenate([c.points for c in element.contours])
+    return 0.5 * (every.min(axis=0) + every.max(axis=0))
 
 
 def _size(element: Element) -> float:
@@ -176,7 +181,7 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
         out.append(_hidden(elements[-1], keys[last_k + 1], unmatched))
     style = elements[0]
     return Shape(name=name, keys=tuple(out), fill_rule=style.fill_rule, cap=style.cap, join=style.join,
-                 miter_limit=style.miter_limit, stroke_scales=True, unmatched=unmatched)
+                 miter_limit=style.miter_limit, stroke_scales=True, unmatched=unmatched, equal_counts="match")
 
 
 def _hidden(element: Element, at: DrawingKey, unmatched: str) -> Key:

@@ -358,7 +358,8 @@ class _Reader:
                 counts_a = [len(c.points) for c in shape.keys[k - 1].contours]
                 counts_b = [len(c.points) for c in shape.keys[k].contours]
                 m, n = max(counts_a), max(counts_b)
-                if len(counts_a) == len(counts_b) == 1 and m == n and matching.equal_counts == "drawn":
+                equal = shape.equal_counts or matching.equal_counts
+                if len(counts_a) == len(counts_b) == 1 and m == n and equal == "drawn":
                     continue  # equal counts keep the drawn order: no search
                 effort, limit = (m * n * max(m, n), LIMITS["match_sg"]) if cost == "sg" else \
                                 (m * n, LIMITS["match_cells"])

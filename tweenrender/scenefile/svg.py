@@ -267,7 +267,8 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     paint, fill_rule, cap, join, miter = _paint(d, scale)
     if not paint.visible:
         return None
-    contours = _contours(d, to_world @ d.ctm, tol, budget)
+    unstroked = paint.stroke is None or paint.stroke[3] == 0 or paint.stroke_width <= 0
+    contours = _contours(d, to_world @ d.ctm, tol, budget, unstroked)
     if not contours:
         return None
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
@@ -379,9 +380,14 @@ def _gradient_color(ident: str, document: Document, depth: int = 0) -> Color | N
 # -- geometry ------------------------------------------------------------------------------------------
 
 
-def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budget
+def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budget, unstroked: bool = False
               ) -> list[tuple[NDArray[np.float64], bool]]:
-    """The element's subpaths flattened into world contours, without degenerate ones."""
+    """The element's subpaths flattened into world contours, without degenerate ones.
+
+    A subpath is closed when it ends in Z, or ends where it starts; with ``unstroked`` (an
+    element drawn without a stroke, whose fill closes every subpath anyway) every subpath of
+    three vertices or more is.
+    """
     with np.errstate(over="ignore", invalid="ignore"):
         if not np.all(np.isfinite(to_world)) or abs(np.linalg.det(to_world[:2, :2])) == 0:
             return []  # a transform that collapses the element: nothing is drawn (as in SVG)
@@ -394,7 +400,11 @@ def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budge
         raise Refusal(_why_not_drawn(d.node)) from error
     out = []
     for segments, closed in subpaths(segments_all):
-        points = distinct(flatten(segments, to_world, tol, budget), closed)
+        points = distinct(flatten(segments, to_world, tol, budget), False)
+        returns = len(points) > 2 and bool(np.allclose(points[0], points[-1], rtol=0.0,
+                                                       atol=1e-9 * float(np.ptp(points, axis=0).max())))
+        closed = closed or returns or unstroked
+        points = distinct(points, closed)
         if len(points) >= 2:
             out.append((points, closed and len(points) >= 3))
     return out

@@ -1,0 +1,113 @@
+"""Contours: holes by nesting, pairing by position and size, anchors, open-curve correspondence
+(against brute force), and paint in OKLab (against an independent colour library)."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+
+from tweenrender.core.contours import anchor, pair_contours, roles
+from tweenrender.core.correspond import correspond_open, is_open_monotone
+from tweenrender.core.paint import blend_colors, blend_paints
+from tweenrender.model import Paint
+
+
+def square(x: float, y: float, side: float, clockwise: bool = False) -> np.ndarray:
+    points = np.array([[x, y], [x + side, y], [x + side, y + side], [x, y + side]], dtype=float)
+    return points[::-1].copy() if clockwise else points
+
+
+def test_roles_by_nesting_whatever_the_winding() -> None:
+    outer, hole, island = square(0, 0, 10), square(2, 2, 6), square(4, 4, 2)
+    for windings in itertools.product([False, True], repeat=3):
+        contours = [square(0, 0, 10, windings[0]), square(2, 2, 6, windings[1]), square(4, 4, 2, windings[2])]
+        assert roles(contours, [True, True, True]) == ["outer", "hole", "outer"]
+    assert roles([outer, hole, square(20, 0, 3)], [True, True, False]) == ["outer", "hole", "open"]
+    assert roles([island, outer], [True, True]) == ["hole", "outer"]
+
+
+def test_contours_pair_by_position_not_drawing_order() -> None:
+    left, right = square(0, 0, 2), square(10, 0, 4)
+    a = [left, right]
+    b = [square(10.5, 0.2, 4), square(0.1, 0, 2)]  # drawn the other way round
+    assert pair_contours(a, [True, True], b, [True, True]) == [(0, 1), (1, 0)]
+
+
+def test_holes_pair_with_holes_and_the_rest_has_no_partner() -> None:
+    a = [square(0, 0, 10), square(2, 2, 3), square(6, 6, 2)]  # an outline with two holes
+    b = [square(0, 0, 10), square(5.5, 5.5, 2.5)]  # one hole, where a's second was
+    assert roles(a, [True] * 3) == ["outer", "hole", "hole"]
+    assert pair_contours(a, [True] * 3, b, [True] * 2) == [(0, 0), (1, None), (2, 1)]
+    assert pair_contours(b, [True] * 2, a, [True] * 3) == [(0, 0), (1, 2), (None, 1)]
+
+
+def test_anchor_is_the_centre_inside_the_partner_else_its_nearest_outline_point() -> None:
+    partner = [square(0, 0, 10)]
+    inside = square(4, 4, 1)
+    assert anchor(inside, partner, [True], "nonzero").tolist() == [4.5, 4.5]
+    outside = square(14, 4, 2)  # centre (15, 5): nearest point of the partner is (10, 5)
+    assert anchor(outside, partner, [True], "nonzero").tolist() == [10.0, 5.0]
+    ring = [square(0, 0, 10), square(2, 2, 6, clockwise=True)]  # the centre (5, 4) is in the hole
+    assert anchor(square(4, 3, 2), ring, [True, True], "nonzero").tolist() == [5.0, 2.0]
+
+
+def _brute_open(a: np.ndarray, b: np.ndarray) -> float:
+    """The least work over every monotone path from (0, 0) to (m-1, n-1), b forwards or backwards."""
+    m, n = len(a), len(b)
+    a = a - a.mean(axis=0)
+    best = np.inf
+    for walked in (b - b.mean(axis=0), (b - b.mean(axis=0))[::-1]):
+        w = np.linalg.norm(a[:, None] - walked[None], axis=-1)
+
+        def paths(i: int, j: int):  # type: ignore[no-untyped-def]
+            if (i, j) == (m - 1, n - 1):
+                yield w[i, j]
+                return
+            for di, dj in ((1, 1), (0, 1), (1, 0)):
+                if i + di < m and j + dj < n:
+                    for rest in paths(i + di, j + dj):
+                        yield w[i, j] + rest
+
+        best = min(best, min(paths(0, 0)))
+    return float(best)
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_open_correspondence_is_the_least_work_of_all_paths(seed: int) -> None:
+    rng = np.random.default_rng(seed)
+    m, n = rng.integers(2, 6, size=2)
+    a, b = rng.normal(size=(m, 2)), rng.normal(size=(n, 2))
+    found = correspond_open(a, b)
+    assert is_open_monotone(found.pairs, m, n, found.reversed)
+    assert found.work == pytest.approx(_brute_open(a, b), rel=1e-12, abs=1e-12)
+
+
+def test_open_correspondence_walks_a_reversed_stroke_backwards() -> None:
+    a = np.array([[0.0, 0], [1, 0], [2, 0], [3, 0]])
+    found = correspond_open(a, a[::-1] + [0, 0.1])
+    assert found.reversed and found.pairs.tolist() == [[0, 3], [1, 2], [2, 1], [3, 0]]
+
+
+def test_colours_blend_in_oklab_premultiplied() -> None:
+    from coloraide import Color
+
+    red, blue = (255, 0, 0, 255), (0, 0, 255, 255)
+    t = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
+    ours = blend_colors(red, blue, t)
+    mix = Color.interpolate([Color("srgb", [1, 0, 0]), Color("srgb", [0, 0, 1])], space="oklab")
+    for got, x in zip(ours, t):
+        expected = [round(255 * c) for c in mix(float(x)).convert("srgb").coords()]
+        assert got is not None and max(abs(g - e) for g, e in zip(got[:3], expected)) <= 1 and got[3] == 255
+    assert ours[2][:3] == (140, 83, 162)  # purple, not sRGB's dark (128, 0, 128)
+    assert ours[0] == red and ours[-1] == blue
+
+
+def test_a_missing_fill_fades_in_its_own_colour() -> None:
+    blue = (0, 0, 255, 255)
+    out = blend_colors(None, blue, [0.0, 0.5, 1.0])
+    assert out[0] is None and out[1] == (0, 0, 255, 128) and out[2] == blue
+    paints = blend_paints(Paint(None, (0, 0, 0, 255), 4.0), Paint(blue, None, 1.0, 0.5), [0.0, 0.5, 1.0])
+    assert paints[0] == Paint(None, (0, 0, 0, 255), 4.0) and paints[2] == Paint(blue, None, 1.0, 0.5)
+    assert paints[1].stroke == (0, 0, 0, 128) and paints[1].stroke_width == 4.0 and paints[1].opacity == 0.75

@@ -490,3 +490,42 @@ def test_holes_and_pieces_are_contours(tmp_path: Path) -> None:
     np.testing.assert_array_equal(contours[0][0], flip([[0, 0], [10, 0], [10, 10], [0, 10]]))
     np.testing.assert_array_equal(contours[1][0], flip([[2, 2], [2, 8], [8, 8], [8, 2]]))
     np.testing.assert_array_equal(contours[2][0], flip([[20, 0], [30, 0]]))
+
+
+def test_a_huge_circle_at_a_tiny_tolerance_is_refused_for_its_vertices(tmp_path: Path) -> None:
+    """1 - tol/r rounds to 1 here: the step must not come out 0 (it once divided by zero)."""
+    path = drawing(tmp_path, '<circle id="c" r="1e8"/>')
+    with pytest.raises(SvgError, match="#c: expected at most .* vertices"):
+        load_svg_points(path, "c", 1e-9)
+
+
+def test_use_expansion_is_counted_and_stops_early(tmp_path: Path) -> None:
+    import time
+
+    levels = ['<rect id="l0" width="1" height="1"/>']
+    for k in range(1, 9):
+        levels.append(f'<g id="l{k}">' + "".join(f'<use href="#l{k - 1}" x="{i}"/>' for i in range(10)) + "</g>")
+    path = drawing(tmp_path, "<defs>" + "".join(levels) + '</defs><use href="#l8"/>', 'viewBox="0 0 24 24"')
+    started = time.perf_counter()
+    with pytest.raises(SvgError, match="at most 50000 elements once <use> copies are counted"):
+        svg.read_drawing(path)
+    assert time.perf_counter() - started < 1.0  # 10⁸ copies unexpanded: stopped at the limit
+
+
+def test_use_loops_are_refused(tmp_path: Path) -> None:
+    path = drawing(tmp_path, '<g id="a"><use href="#b"/></g><g id="b"><use href="#a"/></g>', 'viewBox="0 0 1 1"')
+    with pytest.raises(SvgError, match="without a loop"):
+        svg.read_drawing(path)
+
+
+def test_huge_path_data_is_refused_before_it_is_parsed(tmp_path: Path) -> None:
+    import time
+
+    rng = np.random.default_rng(0)
+    numbers = " ".join(f"L{x:.6f} {y:.6f}" for x, y in rng.random((1_000_000, 2)))
+    path = drawing(tmp_path, f'<path d="M0 0 {numbers}"/>', 'viewBox="0 0 1 1"')
+    assert path.stat().st_size < svg_document.MAX_FILE_BYTES
+    started = time.perf_counter()
+    with pytest.raises(SvgError, match="at most 200000 vertices, found data for more"):
+        svg.read_drawing(path)
+    assert time.perf_counter() - started < 2.0  # parsing it would take tens of seconds

@@ -458,7 +458,7 @@ def _check_syntax(node: Node) -> None:
         d = node.attrs.get("d", "")
         if not d.strip():
             raise Refusal(f"expected path data, found an empty or missing d (line {node.line})")
-        _within_limit(d, node, 7)  # an arc takes 7 numbers and gives at least one vertex
+        _within_limit(d, node)
         position = _scan_tokens(_PATH_TOKEN, d)
         if position is not None:
             raise Refusal(f"expected path data of commands and numbers, found {_excerpt(d, position)!r} "
@@ -467,7 +467,7 @@ def _check_syntax(node: Node) -> None:
             raise Refusal(f"expected path data that starts with M or m, found {_excerpt(d, 0)!r} (line {node.line})")
     elif node.tag in ("polygon", "polyline"):
         points = node.attrs.get("points", "")
-        _within_limit(points, node, 2)
+        _within_limit(points, node)
         position = _scan_tokens(_POINTS_TOKEN, points)
         if position is not None:
             raise Refusal(f"expected points as numbers, found {_excerpt(points, position)!r} "
@@ -480,19 +480,20 @@ def _check_syntax(node: Node) -> None:
             raise Refusal(f"expected {name} ≥ 0, found {name}={node.attrs[name]!r} (line {node.line})")
 
 
-def _within_limit(text: str, node: Node, per_vertex: int) -> None:
+def _within_limit(text: str, node: Node) -> None:
     """Refuse data whose numbers alone prove more than :data:`MAX_VERTICES` vertices, in one pass.
 
-    A number has at most three runs of digits (whole, fraction, exponent), so the runs
-    counted over three bound the numbers from below; ``per_vertex`` numbers give at least
-    one vertex.
+    Every number lies within one run of number characters (digits, ``.``, ``e``, signs), so the
+    runs bound the numbers from below; a vertex takes at most 7 numbers (an arc), 6 without arcs
+    (a cubic), 2 with lines only.
     """
-    if len(text) < 3 * per_vertex * MAX_VERTICES:
+    per_vertex = 7 if ("A" in text or "a" in text) else 6 if any(c in text for c in "CcSsQqTt") else 2
+    if len(text) < 2 * per_vertex * MAX_VERTICES:
         return  # too short to hold that many numbers
-    digits = np.frombuffer(text.encode("ascii", "replace"), dtype=np.uint8)
-    is_digit = (digits >= 48) & (digits <= 57)
-    runs = int(np.count_nonzero(is_digit[1:] & ~is_digit[:-1])) + int(is_digit[0])
-    if runs // 3 // per_vertex > MAX_VERTICES:
+    chars = np.frombuffer(text.encode("ascii", "replace"), dtype=np.uint8)
+    number = np.isin(chars, np.frombuffer(b"0123456789.eE+-", dtype=np.uint8))
+    runs = int(np.count_nonzero(number[1:] & ~number[:-1])) + int(number[0])
+    if runs // per_vertex > MAX_VERTICES:
         raise Refusal(f"expected at most {MAX_VERTICES} vertices, found data for more "
                       f"({len(text)} characters, line {node.line})")
 

@@ -175,10 +175,11 @@ def _flatten_arc(
     if sigma <= tol:
         step = math.pi / 2
     else:
-        step = min(math.pi / 2, 2.0 * math.acos(1.0 - tol / sigma))
+        # 1 - cos(Δ/2) = tol/σ, written as 2·sin²(Δ/4) so that a tiny tol/σ does not round to Δ = 0
+        step = min(math.pi / 2, 4.0 * math.asin(math.sqrt(tol / (2.0 * sigma))))
+    if abs(sweep) / step > budget.left:
+        budget.spend(budget.left + 1)
     n = max(1, math.ceil(abs(sweep) / step - 1e-12))
-    if n > budget.left:
-        budget.spend(n)
     theta = theta0 + sweep * np.arange(1, n) / n
     inner = (linear @ center + offset) + np.column_stack([np.cos(theta), np.sin(theta)]) @ world_axes.T
     return np.vstack([inner, end])

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from tweenrender.core.ratios import perimeter_ratio
-from tweenrender.model import Key, Paint, Scene, Shape, frozen_points
+from tweenrender.model import Key, Paint, Scene, Shape
 from tweenrender.pipeline.job import Frames, RenderJob, tracks_of
 
 K0 = np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float)

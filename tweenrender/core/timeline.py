@@ -16,7 +16,6 @@ grows from or shrinks to) is reached, never shown.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Sequence
 
 import numpy as np
 from numpy.typing import NDArray

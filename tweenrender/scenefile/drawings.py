@@ -95,7 +95,7 @@ def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float) 
             pairs.append((left[0], right[0]))  # one element each: always the same one
             left, right = [], []
         else:
-            cost = np.array([[_cost(a[i], b[j], diagonal) for j in right] for i in left])
+            cost = _costs([a[i] for i in left], [b[j] for j in right], diagonal)
             m, n = cost.shape
             big = 1e9
             full = np.full((m + n, n + m), big)
@@ -112,19 +112,26 @@ def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float) 
     return pairs
 
 
-def _cost(x: Element, y: Element, diagonal: float) -> float:
+def _costs(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> np.ndarray:
+    """The cost of pairing each element of ``a`` with each of ``b``: ``(len(a), len(b))``."""
     from ..core.paint import srgb_to_oklab
 
-    cx, cy = _centre(x), _centre(y)
-    sx, sy = _size(x), _size(y)
-    cost = (_POSITION_WEIGHT * float(np.hypot(*(cx - cy))) / diagonal
-            + _SIZE_WEIGHT * abs(float(np.log(sx / sy))))
-    colour_x, colour_y = x.paint.fill or x.paint.stroke, y.paint.fill or y.paint.stroke
-    if colour_x is not None and colour_y is not None:
-        lab = srgb_to_oklab(np.array([colour_x[:3], colour_y[:3]], dtype=float) / 255.0)
-        cost += _COLOR_WEIGHT * float(np.linalg.norm(lab[0] - lab[1]))
-    if (x.paint.fill is None) != (y.paint.fill is None):
-        cost += _KIND_COST
+    def features(elements: Sequence[Element]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        centres = np.array([_centre(e) for e in elements])
+        sizes = np.log([_size(e) for e in elements])
+        colours = [e.paint.fill or e.paint.stroke for e in elements]
+        lab = srgb_to_oklab(np.array([c[:3] if c is not None else (0, 0, 0) for c in colours], float) / 255.0)
+        lab[[c is None for c in colours]] = np.nan
+        filled = np.array([e.paint.fill is not None for e in elements])
+        return centres, sizes, lab, filled
+
+    ca, sa, la, fa = features(a)
+    cb, sb, lb, fb = features(b)
+    cost = (_POSITION_WEIGHT * np.linalg.norm(ca[:, None] - cb[None], axis=-1) / diagonal
+            + _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))
+    colour = np.linalg.norm(la[:, None] - lb[None], axis=-1)
+    cost += _COLOR_WEIGHT * np.nan_to_num(colour, nan=0.0)  # an element without colour matches any
+    cost += _KIND_COST * (fa[:, None] != fb[None])
     return cost
 
 

@@ -189,12 +189,13 @@ def distinct(points: NDArray[np.float64], closed: bool = True) -> NDArray[np.flo
     """Without consecutive duplicates, nor (``closed``) a last vertex repeating the first (within 1e-9 of the extent)."""
     if len(points) == 0:
         return points
-    extent = float(np.max(np.ptp(points, axis=0)))
-    eps = 1e-9 * extent
-    kept = [points[0]]
-    for point in points[1:]:
-        if np.max(np.abs(point - kept[-1])) > eps:
-            kept.append(point)
-    while closed and len(kept) > 1 and np.max(np.abs(kept[-1] - kept[0])) <= eps:
-        kept.pop()
+    eps = 1e-9 * float(np.max(np.ptp(points, axis=0)))
+    moved = np.abs(np.diff(points, axis=0)).max(axis=1) > eps
+    kept = points[np.concatenate([[True], moved])]
+    if closed:
+        back = np.abs(kept - kept[0]).max(axis=1) > eps
+        last = len(kept)
+        while last > 1 and not back[last - 1]:
+            last -= 1
+        kept = kept[:last]
     return np.array(kept, dtype=np.float64)

@@ -10,12 +10,12 @@ lines would otherwise cross each other illegibly.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
-from ...model import Color, Scene
+from ...model import Color
 from ..fonts import font, wrap
 from ..painter import Painter
 from ..surface import Raster

@@ -132,6 +132,7 @@ def test_the_readme_example_runs_as_written(tmp_path: Path) -> None:
     block = text[text.index("```python\n", start) + len("```python\n"):]
     code = block[:block.index("```")]
     (tmp_path / "scenes").symlink_to(ROOT / "scenes")
+    (tmp_path / "tests").symlink_to(ROOT / "tests")
     done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     lines = done.stdout.splitlines()
@@ -140,3 +141,4 @@ def test_the_readme_example_runs_as_written(tmp_path: Path) -> None:
     assert (tmp_path / "output" / "square.mp4").stat().st_size > 0
     meta, frames = decode(tmp_path / "output" / "square.mp4")
     assert len(frames) == 49 and meta["size"] == (2560, 720)
+    assert lines[-2] == "output/apple-pear.webm" and (tmp_path / "output" / "apple-pear.webm").stat().st_size > 0

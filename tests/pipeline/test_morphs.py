@@ -140,3 +140,30 @@ def test_icons_of_different_view_boxes_line_up(tmp_path: Path) -> None:
     scene = tr.load_scene([large, small])
     (end,) = tr.outlines(scene, 1.0)
     np.testing.assert_allclose(np.sort(end, axis=0), np.sort(tr.outlines(scene, 0.0)[0], axis=0), atol=1e-9)
+
+
+@pytest.mark.parametrize("unmatched", ["fade", "grow"])
+def test_a_hole_without_partner_fades_or_shrinks(tmp_path: Path, unmatched: str) -> None:
+    scene = tr.load_scene(write_scene(tmp_path, f'''unmatched = "{unmatched}"
+view = [-1, -1, 5, 5]
+size = [120, 120]
+[[shape]]
+name = "ring"
+fill = "#3b6fd8"
+[[shape.key]]
+time = 0
+contours = [[[0, 0], [4, 0], [4, 4], [0, 4]], [[1, 1], [1, 3], [3, 3], [3, 1]]]
+[[shape.key]]
+time = 1
+contours = [[[0, 0], [4, 0], [4, 4], [0, 4]]]
+''', "ring.toml"))
+    blue, white = np.array([0x3B, 0x6F, 0xD8]), np.array([255, 255, 255])
+    for time in (0.0, 0.25, 0.5, 0.75, 1.0):
+        img = tr.frame(scene, time)
+        centre, rim = img[60, 60, :3].astype(int), img[20, 20, :3].astype(int)
+        assert np.abs(rim - blue).max() <= 2  # the outline never changes
+        if unmatched == "fade":  # the hole fills in evenly: the background cross-fades into the fill
+            assert np.abs(centre - ((1 - time) * white + time * blue)).max() <= 2, time
+        else:  # the hole shrinks to its centre: a square of side 2·(1 - t) units, 20 px a unit
+            hole = (np.abs(img[..., :3].astype(int) - white).max(axis=-1) < 60)[20:100, 20:100].sum()
+            assert hole == pytest.approx((40 * (1 - time)) ** 2, abs=4 + 160 * (1 - time)), time

@@ -62,8 +62,9 @@ class Pair:
     """One contour through a segment: ``k0``, ``k1`` are ``(L, 2)`` after balancing.
 
     ``source`` is the contour's index in each key (``None``: it has no partner there and
-    grows from, or shrinks to, a point); ``counts`` the two contours' vertex counts as
-    drawn; ``correspondence`` the balancing path (``None`` where the drawn order is kept).
+    grows from, or shrinks to, a point — or, when ``fades``, keeps its shape and fades);
+    ``counts`` the two contours' vertex counts as drawn; ``correspondence`` the balancing
+    path (``None`` where the drawn order is kept).
     """
 
     k0: Points
@@ -72,6 +73,7 @@ class Pair:
     counts: tuple[int, int]
     correspondence: Correspondence | None
     source: tuple[int | None, int | None]
+    fades: bool = False
 
     @property
     def moving(self) -> bool:
@@ -123,12 +125,20 @@ class Segment:
 
 @dataclass(frozen=True, slots=True)
 class ShapeAt:
-    """A shape as drawn at one time: its contours ``(N_i, 2)``, which are closed, its paint."""
+    """A shape as drawn at one time: its contours ``(N_i, 2)``, which are closed, its paint.
+
+    While contours fade in or out, ``fade`` is the cross-fade's weight ``w`` in [0, 1] and
+    ``sides`` says, per contour, where it belongs: 0 to both keys, -1 only to the first,
+    +1 only to the second; the picture is then (1 - w) × the shape without the +1 contours
+    plus w × the shape without the -1 ones.
+    """
 
     contours: tuple[Points, ...]
     closed: tuple[bool, ...]
     paint: Paint
     visible: bool = True
+    fade: float | None = None
+    sides: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -194,11 +204,20 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
             frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
     closed = tuple(p.closed for p in pairs)
     paints = blend_paints(*segment.paints, t)
+    fading = any(p.fades for p in pairs)
+    sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
     out = []
     for k, (x, paint) in enumerate(zip(t.tolist(), paints)):
         visible = segment.shown[0] if x == 0.0 else segment.shown[1] if x == 1.0 else True
         contours = tuple(f[k] for f in frames)  # type: ignore[index]
-        out.append(ShapeAt(contours, closed, paint, visible and paint.visible))
+        if fading and 0.0 < x < 1.0:
+            out.append(ShapeAt(contours, closed, paint, visible and paint.visible, x, sides))
+        elif fading:  # a key: only its own contours
+            own = [i for i, side in enumerate(sides) if side != (1 if x == 0.0 else -1)]
+            out.append(ShapeAt(tuple(contours[i] for i in own), tuple(closed[i] for i in own), paint,
+                               visible and paint.visible))
+        else:
+            out.append(ShapeAt(contours, closed, paint, visible and paint.visible))
     return out
 
 
@@ -207,15 +226,18 @@ def _still(key: Key) -> ShapeAt:
                    not key.hidden and key.paint.visible)
 
 
-def build_track(shape: Shape, matching: Matching) -> Track:
-    """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through."""
+def build_track(shape: Shape, matching: Matching, unmatched: str = "grow") -> Track:
+    """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through.
+
+    ``unmatched`` is the rule for contours without a partner (``shape.unmatched`` overrides it).
+    """
     keys = shape.keys
     if shape.equal_counts is not None and shape.equal_counts != matching.equal_counts:
         matching = replace(matching, equal_counts=shape.equal_counts)
     joints = tuple(shape.joints)  # indices into the current key's vertices
     segments = []
     for before, after in zip(keys, keys[1:]):
-        pairs = _pairs(before, after, shape.fill_rule, matching)
+        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched)
         balanced_joints: tuple[tuple[int, int], ...] = ()
         if joints and len(pairs) == 1:
             found = pairs[0].correspondence
@@ -231,7 +253,7 @@ def build_track(shape: Shape, matching: Matching) -> Track:
     return Track(shape.name, tuple(segments), _still(keys[0]))
 
 
-def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching) -> tuple[Pair, ...]:
+def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str) -> tuple[Pair, ...]:
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
         # a hidden key is made contour by contour from its neighbour: pair them in order
@@ -244,12 +266,15 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching) -> tuple
         if i is not None and j is not None:
             pairs.append(_balanced(a[i], b[j], (i, j), matching))
             continue
-        # a contour without a partner: it shrinks to (i) or grows from (j) a point of the other key
+        # a contour without a partner: it fades, or shrinks to (i) or grows from (j) a point of the other key
         alone, others = (a[i], b) if i is not None else (b[j], a)  # type: ignore[index]
+        n = len(alone.points)
+        if unmatched == "fade":
+            pairs.append(Pair(alone.points, alone.points, alone.closed, (n, n), None, (i, j), fades=True))
+            continue
         point = anchor(alone.points, [c.points for c in others], [c.closed for c in others], fill_rule)
         collapsed = np.broadcast_to(point, alone.points.shape)
         k0, k1 = (alone.points, collapsed) if i is not None else (collapsed, alone.points)
-        n = len(alone.points)
         pairs.append(Pair(_frozen(k0), _frozen(k1), alone.closed, (n, n), None, (i, j)))
     return tuple(pairs)
 

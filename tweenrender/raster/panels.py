@@ -95,6 +95,21 @@ def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
         return
     paint = at.paint
     width = paint.stroke_width * (viewport.scale if shape.stroke_scales else 1.0)
-    path = contours_path([p for p, _ in kept], [shut for _, shut in kept], shape.fill_rule)
-    raster.draw_path(path, paint.fill, paint.stroke, width, StrokeStyle(shape.cap, shape.join, shape.miter_limit),
-                     paint.opacity * alpha)
+    style = StrokeStyle(shape.cap, shape.join, shape.miter_limit)
+    if at.fade is None:
+        path = contours_path([p for p, _ in kept], [shut for _, shut in kept], shape.fill_rule)
+        raster.draw_path(path, paint.fill, paint.stroke, width, style, paint.opacity * alpha)
+        return
+    # a cross-fade: the shape as in the first key, plus the shape as in the second, weighted
+    sides = [side for p, side in zip(pixels, at.sides) if len(p) >= 2 and np.all(np.isfinite(p))]
+    canvas = raster.canvas
+    canvas.saveLayerAlpha(None, int(round(255 * min(1.0, paint.opacity * alpha))))
+    for skip, weight in ((1, 1.0 - at.fade), (-1, at.fade)):
+        own = [(p, shut) for (p, shut), side in zip(kept, sides) if side != skip]
+        if not own:
+            continue
+        canvas.saveLayer(None, skia.Paint(Alphaf=weight, BlendMode=skia.BlendMode.kPlus))
+        raster.draw_path(contours_path([p for p, _ in own], [s for _, s in own], shape.fill_rule),
+                         paint.fill, paint.stroke, width, style)
+        canvas.restore()
+    canvas.restore()

@@ -256,11 +256,10 @@ def build_track(shape: Shape, matching: Matching, unmatched: str = "grow") -> Tr
 def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str) -> tuple[Pair, ...]:
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
-        # a hidden key is made contour by contour from its neighbour: pair them in order
-        links: list[tuple[int | None, int | None]] = [(i, i) for i in range(min(len(a), len(b)))]
-    else:
-        links = pair_contours([c.points for c in a], [c.closed for c in a],
-                              [c.points for c in b], [c.closed for c in b])
+        # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order
+        return tuple(Pair(x.points, y.points, x.closed, (len(x.points), len(y.points)), None, (i, i))
+                     for i, (x, y) in enumerate(zip(a, b)))
+    links = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b], [c.closed for c in b])
     pairs = []
     for i, j in links:
         if i is not None and j is not None:

@@ -33,13 +33,16 @@ class Entry:
 def entries(scene: Scene, matching: Matching | None = None, closed_only: bool = False) -> Iterator[Entry]:
     """Every contour that moves through a segment (in both keys), shape by shape, segment by segment.
 
-    Growing and shrinking contours are left out; with ``closed_only`` open strokes too, and
-    contours of fewer than three vertices, which have no angles or area.
+    Growing, shrinking and fading contours are left out, and segments where a whole element
+    appears or goes; with ``closed_only`` open strokes too, and contours of fewer than three
+    vertices, which have no angles or area.
     """
     matching = matching or scene.matching
     for shape in scene.shapes:
         track = build_track(shape, matching)
         for index, segment in enumerate(track.segments):
+            if not all(segment.shown):
+                continue
             several = len(segment.pairs) > 1
             for k, pair in enumerate(segment.pairs):
                 if not pair.moving or (closed_only and (not pair.closed or len(pair.k0) < 3)):

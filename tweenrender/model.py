@@ -10,7 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "Points", "Color", "METHODS", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
+    "Points", "Color", "METHODS", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
     "Key", "Joint", "Shape", "Matching", "Scene", "frozen_points",
 ]
 
@@ -20,8 +20,11 @@ Points = NDArray[np.float64]
 Color = tuple[int, int, int, int]
 """Straight (unpremultiplied) RGBA, each 0..255."""
 
-Method = Literal["linear", "nonlinear", "rigid", "jointed", "auto"]
-METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "auto")
+Method = Literal["linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto"]
+METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto")
+BALANCES: tuple[str, ...] = ("copies", "spread")
+DEFAULT_BALANCE = "copies"
+"""The balance rule of scenes that name none (benchmarks/balance_rules.py measured the two)."""
 EASES: tuple[str, ...] = ("linear", "in", "out", "in-out")
 COSTS: tuple[str, ...] = ("distance", "sg")
 ALIGNS: tuple[str, ...] = ("none", "centroid")
@@ -57,6 +60,7 @@ class Shape:
     stroke_width: float = 2.0
     method: str | None = None  # None: the scene's method
     joints: tuple[Joint, ...] = ()
+    balance: str | None = None  # None: the scene's balance
 
 
 @dataclass(frozen=True, slots=True)
@@ -89,6 +93,7 @@ class Scene:
     compare: tuple[str, ...] = ("linear", "nonlinear")
     matching: Matching = field(default_factory=Matching)
     path: Path | None = None
+    balance: str = DEFAULT_BALANCE  # how balancing places copies of a vertex (maths §5.6)
 
     @property
     def duration(self) -> float:
@@ -97,3 +102,6 @@ class Scene:
 
     def method_of(self, shape: Shape) -> str:
         return shape.method or self.method
+
+    def balance_of(self, shape: Shape) -> str:
+        return shape.balance or self.balance

@@ -14,7 +14,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import GeometryError
-from ..model import Matching, Points, Shape
+from ..model import Matching, Points, Shape, frozen_points
+from .balance import spread
 from .correspond import Correspondence, correspond
 from .methods import interpolate
 
@@ -100,8 +101,12 @@ class Track:
         return out
 
 
-def build_track(shape: Shape, matching: Matching) -> Track:
-    """Balance every consecutive pair of ``shape``'s keys and carry its joints through."""
+def build_track(shape: Shape, matching: Matching, balance: str = "copies") -> Track:
+    """Balance every consecutive pair of ``shape``'s keys and carry its joints through.
+
+    ``balance`` places the copies balancing makes: ``"copies"`` stacks them on their
+    vertex (the thesis), ``"spread"`` spreads them along its edges (maths §5.6).
+    """
     keys = shape.keys
     joints = tuple(shape.joints)  # indices into the current key's vertices
     segments = []
@@ -113,6 +118,8 @@ def build_track(shape: Shape, matching: Matching) -> Track:
         else:
             found = correspond(a, b, matching)
             k0, k1 = found.apply(a, b)
+            if balance == "spread":
+                k0, k1 = (frozen_points(k) for k in spread(k0, k1))
             first_of = _first_occurrence(found.pairs[:, 0], len(a))
             balanced_joints = tuple((int(first_of[i]), int(first_of[j])) for i, j in joints)
             carried = tuple((int(found.pairs[p, 1]), int(found.pairs[q, 1])) for p, q in balanced_joints)

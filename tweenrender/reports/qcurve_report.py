@@ -77,7 +77,7 @@ def qcurves_dict(scene: Scene) -> dict[str, Any]:
     """The documented ``qcurves --json``: one entry per shape and segment (static shapes have none)."""
     shapes = []
     for shape in scene.shapes:
-        track = build_track(shape, scene.matching)
+        track = build_track(shape, scene.matching, scene.balance_of(shape))
         for index, segment in enumerate(track.segments):
             shapes.append({"name": shape.name, "segment": index, **segment_dict(segment)})
     return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}

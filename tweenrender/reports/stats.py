@@ -4,24 +4,33 @@ from __future__ import annotations
 
 from typing import Any, Sequence
 
-from ..core.measures import report
+from ..core.intrinsic import closure_tweak
+from ..core.measures import SWEEP, report
 from ..core.qcurves import auto_choice
 from ..core.timeline import build_track
-from ..model import Scene
+from ..model import METHODS, Scene
 
 __all__ = ["stats_dict", "stats_text", "STATS_METHODS"]
 
-STATS_METHODS = ("linear", "nonlinear", "rigid")
+STATS_METHODS = tuple(m for m in METHODS if m != "jointed")
+"""Every method measured on every segment; ``jointed`` too where the shape has joints."""
+
+_CLOSURE = {"intrinsic": "paper", "intrinsic-length": "length"}
 
 
 def stats_dict(scene: Scene, t: Sequence[float]) -> dict[str, Any]:
     """The thesis's ch. 6 report for every shape and segment (the documented ``stats --json``)."""
     shapes = []
     for shape in scene.shapes:
-        track = build_track(shape, scene.matching)
+        track = build_track(shape, scene.matching, scene.balance_of(shape))
         for index, segment in enumerate(track.segments):
-            methods = STATS_METHODS + (("jointed",) if segment.joints else ())
+            methods = tuple(m for m in METHODS if m != "jointed" or segment.joints)
             choice = auto_choice(segment.k0, segment.k1, segment.joints)
+            measured = {m: report(segment.k0, segment.k1, m, t, segment.joints).as_dict() for m in methods}
+            for method, closure in _CLOSURE.items():
+                if method in measured:  # how much the closing tweak changed the lengths, at worst
+                    measured[method]["closure_tweak_max"] = float(
+                        closure_tweak(segment.k0, segment.k1, SWEEP, closure).max())
             shapes.append({
                 "name": shape.name,
                 "segment": index,
@@ -29,7 +38,7 @@ def stats_dict(scene: Scene, t: Sequence[float]) -> dict[str, Any]:
                 "vertices": list(segment.counts),
                 "balanced": len(segment.k0),
                 "auto": {"method": choice.method, "why": choice.why},
-                "methods": {m: report(segment.k0, segment.k1, m, t, segment.joints).as_dict() for m in methods},
+                "methods": measured,
             })
     return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
 
@@ -62,6 +71,27 @@ def stats_text(stats: dict[str, Any]) -> str:
             else:
                 lines.append(f"(over the segment the ratio runs from {r['ratio_min']:.5f} to "
                              f"{r['ratio_max']:.5f}, worst edge-length error {r['edge_error_max']:.5f})")
+            areas = ", ".join(f"{a:.5f}" for a in r["area_ratio"])
+            lines.append(f"Area ratio to the interpolated keys = {areas}; worst turning-angle error "
+                         f"{r['angle_error_max']:.3f} degrees")
+            lines.append(_crossing_words(r["self_intersects"]))
+            if "closure_tweak_max" in r:
+                lines.append(f"Closing the walk changed the lengths by at most {100 * r['closure_tweak_max']:.2f} % "
+                             "of the perimeter")
     if not stats["shapes"]:
         lines.append("no shape has two keys: nothing moves")
     return "\n".join(lines)
+
+
+def _crossing_words(at: list[float]) -> str:
+    """``"The outline crosses itself at t = 0.51 to 1"`` or that it never does."""
+    if not at:
+        return "The outline never crosses itself"
+    runs: list[list[float]] = [[at[0], at[0]]]
+    for t in at[1:]:
+        if t - runs[-1][1] <= 0.0101:
+            runs[-1][1] = t
+        else:
+            runs.append([t, t])
+    words = ", ".join(f"{a:g}" if a == b else f"{a:g} to {b:g}" for a, b in runs)
+    return f"The outline crosses itself at t = {words}"

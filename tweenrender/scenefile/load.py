@@ -18,8 +18,8 @@ from typing import Any, Callable
 import numpy as np
 
 from ..errors import SceneError
-from ..model import (ALIGNS, COSTS, EASES, EQUAL_COUNTS, METHODS, Color, Key, Matching, Scene, Shape,
-                     frozen_points)
+from ..model import (ALIGNS, BALANCES, COSTS, DEFAULT_BALANCE, EASES, EQUAL_COUNTS, METHODS, Color, Key,
+                     Matching, Scene, Shape, frozen_points)
 from .locate import json_line_of, line_of
 
 __all__ = ["load_scene", "parse_scene", "LIMITS"]
@@ -39,8 +39,8 @@ LIMITS = {
     "match_sg": 100_000_000,      # m·n·max(m, n), cost "sg"
 }
 
-_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "correspondence", "shape")
-_SHAPE = ("name", "fill", "stroke", "stroke_width", "method", "joints", "key")
+_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "balance", "correspondence", "shape")
+_SHAPE = ("name", "fill", "stroke", "stroke_width", "method", "joints", "balance", "key")
 _KEY = ("time", "points", "ease")
 _SVG = ("svg", "id", "tolerance")
 _MATCHING = ("cost", "align", "equal_counts", "ks", "cs", "es", "kb", "eb", "mb", "pb")
@@ -273,8 +273,9 @@ class _Reader:
         background = self.color(top.get("background", "#ffffff"), "background")
         matching = self.matching(top.get("correspondence", {}))
         self.matching_effort(shapes, matching)
+        balance = self.choice(top.get("balance", DEFAULT_BALANCE), "balance", BALANCES, "balance")
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
-                     method=method, compare=compare, matching=matching, path=self.path)
+                     method=method, compare=compare, matching=matching, path=self.path, balance=balance)
 
     def matching_effort(self, shapes: tuple[Shape, ...], matching: Matching) -> None:
         """Refuse key pairs whose correspondence search would run for minutes (see ``LIMITS``)."""
@@ -339,8 +340,10 @@ class _Reader:
         fill = self.color(table.get("fill", "#3b6fd8"), f"{where}.fill")
         width = self.number(table.get("stroke_width", 2.0), f"{where}.stroke_width", 0.0, 1000.0,
                             "a width in pixels")
+        balance = self.choice(table["balance"], f"{where}.balance", BALANCES, "balance") \
+            if "balance" in table else None
         return Shape(name=name, keys=keys, fill=fill, stroke=stroke, stroke_width=width,
-                     method=method, joints=joints)
+                     method=method, joints=joints, balance=balance)
 
     def joints(self, value: Any, where: str, vertices: int) -> tuple[tuple[int, int], ...]:
         from ..core.joints import JointError, validate_joints

@@ -18,15 +18,17 @@ STATS_METHODS = tuple(m for m in METHODS if m != "jointed")
 _CLOSURE = {"intrinsic": "paper", "intrinsic-length": "length"}
 
 
-def stats_dict(scene: Scene, t: Sequence[float]) -> dict[str, Any]:
-    """The thesis's ch. 6 report for every shape and segment (the documented ``stats --json``)."""
+def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None = None) -> dict[str, Any]:
+    """The thesis's ch. 6 report and the quality measures for every shape and segment (the documented
+    ``stats --json``): for ``methods``, default every method (``jointed`` where a shape has joints)."""
     shapes = []
     for shape in scene.shapes:
         track = build_track(shape, scene.matching, scene.balance_of(shape))
         for index, segment in enumerate(track.segments):
-            methods = tuple(m for m in METHODS if m != "jointed" or segment.joints)
+            measured_methods = tuple(methods) if methods is not None else \
+                tuple(m for m in METHODS if m != "jointed" or segment.joints)
             choice = auto_choice(segment.k0, segment.k1, segment.joints)
-            measured = {m: report(segment.k0, segment.k1, m, t, segment.joints).as_dict() for m in methods}
+            measured = {m: report(segment.k0, segment.k1, m, t, segment.joints).as_dict() for m in measured_methods}
             for method, closure in _CLOSURE.items():
                 if method in measured:  # how much the closing tweak changed the lengths, at worst
                     measured[method]["closure_tweak_max"] = float(

@@ -218,16 +218,35 @@ class _Refiner:
         # boundary subsegments of the working polygon: (u, v) in counter-clockwise order →
         # (caller's edge index, fraction at u, fraction at v)
         self.segments: dict[tuple[int, int], tuple[int, float, float]] = {}
+        # the same subsegments as rows of arrays (diametral circles), for vectorised encroachment tests
+        self._rows: dict[tuple[int, int], int] = {}
+        self._circles = np.zeros((2 * n + 16, 3))  # centre x, centre y, radius²
+        self._alive = np.zeros(2 * n + 16, dtype=bool)
+        self._count = 0
         for k in range(n):
             u, v = k, (k + 1) % n
             if ccw:
                 self.segments[(u, v)] = (int(order[u]), 0.0, 1.0)
             else:  # the caller's edge runs from order[v] to order[u]
                 self.segments[(u, v)] = (int(order[v]), 1.0, 0.0)
+        for key in self.segments:
+            self._add_circle(key)
         for a, b, c in seed.tolist():
             self.add(a, b, c)
 
     # -- bookkeeping -------------------------------------------------------------------------
+    def _add_circle(self, key: tuple[int, int]) -> None:
+        if self._count == len(self._alive):
+            self._circles = np.concatenate([self._circles, np.zeros_like(self._circles)])
+            self._alive = np.concatenate([self._alive, np.zeros_like(self._alive)])
+        u, v = key
+        x, y = self.x, self.y
+        self._circles[self._count] = (0.5 * (x[u] + x[v]), 0.5 * (y[u] + y[v]),
+                                      0.25 * ((x[u] - x[v]) ** 2 + (y[u] - y[v]) ** 2))
+        self._alive[self._count] = True
+        self._rows[key] = self._count
+        self._count += 1
+
     def add(self, a: int, b: int, c: int) -> int:
         t = self.next_id
         self.next_id += 1
@@ -353,9 +372,12 @@ class _Refiner:
             outer.extend([(e, c), (c, s)])
         if (u, v) in self.segments:
             edge, fu, fv = self.segments.pop((u, v))
+            self._alive[self._rows.pop((u, v))] = False
             fm = 0.5 * (fu + fv)
             self.segments[(u, p)] = (edge, fu, fm)
             self.segments[(p, v)] = (edge, fm, fv)
+            self._add_circle((u, p))
+            self._add_circle((p, v))
         self._legalize(outer)
         return p
 
@@ -372,12 +394,13 @@ class _Refiner:
 
     def encroached(self, px: float, py: float) -> tuple[int, int] | None:
         """A boundary subsegment whose diametral circle holds the point strictly, or None."""
-        for (u, v) in self.segments:
-            mx, my = 0.5 * (self.x[u] + self.x[v]), 0.5 * (self.y[u] + self.y[v])
-            r2 = 0.25 * ((self.x[u] - self.x[v]) ** 2 + (self.y[u] - self.y[v]) ** 2)
-            if (px - mx) ** 2 + (py - my) ** 2 < r2 * (1 - 1e-12):
-                return (u, v)
-        return None
+        circles = self._circles[:self._count]
+        inside = (circles[:, 0] - px) ** 2 + (circles[:, 1] - py) ** 2 < circles[:, 2] * (1 - 1e-12)
+        hits = np.flatnonzero(inside & self._alive[:self._count])
+        if len(hits) == 0:
+            return None
+        row = int(hits[0])
+        return next(key for key, r in self._rows.items() if r == row)
 
     def refine(self, max_area: float, budget: int) -> None:
         """Delaunay refinement until every triangle is good and small, or ``budget`` points are added."""

@@ -15,8 +15,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "Points", "Color", "METHODS", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS", "FILL_RULES", "CAPS", "JOINS",
-    "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching", "Scene", "frozen_points",
+    "Points", "Color", "METHODS", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
+    "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching",
+    "Scene", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
@@ -25,8 +26,11 @@ Points = NDArray[np.float64]
 Color = tuple[int, int, int, int]
 """Straight (unpremultiplied) RGBA, each 0..255."""
 
-Method = Literal["linear", "nonlinear", "rigid", "jointed", "auto"]
-METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "auto")
+Method = Literal["linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto"]
+METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto")
+BALANCES: tuple[str, ...] = ("copies", "spread")
+DEFAULT_BALANCE = "copies"
+"""The balance rule of scenes that name none (benchmarks/balance_rules.py measured the two)."""
 EASES: tuple[str, ...] = ("linear", "in", "out", "in-out")
 COSTS: tuple[str, ...] = ("distance", "sg")
 ALIGNS: tuple[str, ...] = ("none", "centroid")
@@ -127,6 +131,7 @@ class Shape:
     miter_limit: float = 4.0
     stroke_scales: bool = False  # True: stroke widths are world units (drawings), else pixels
     unmatched: str | None = None
+    balance: str | None = None  # None: the scene's balance
     # keys of equal vertex counts: None follows the scene's [correspondence]; drawings say "match",
     # since the order an SVG editor wrote a contour in is no animator's correspondence
     equal_counts: str | None = None
@@ -176,6 +181,7 @@ class Scene:
     matching: Matching = field(default_factory=Matching)
     path: Path | None = None
     unmatched: str = "grow"
+    balance: str = DEFAULT_BALANCE  # how balancing places copies of a vertex (maths §5.6)
 
     @property
     def duration(self) -> float:
@@ -187,3 +193,6 @@ class Scene:
 
     def unmatched_of(self, shape: Shape) -> str:
         return shape.unmatched or self.unmatched
+
+    def balance_of(self, shape: Shape) -> str:
+        return shape.balance or self.balance

@@ -18,7 +18,7 @@ from ..errors import TweenrenderError, UsageError
 
 __all__ = ["COMMANDS", "main", "build_parser"]
 
-COMMANDS = ("render", "check", "stats", "correspond", "qcurves", "sheet", "reel")
+COMMANDS = ("render", "check", "stats", "correspond", "qcurves", "sheet", "reel", "report")
 """The commands, in the order ``--help`` lists them; each is the module of that name beside this one."""
 
 

@@ -1,12 +1,13 @@
-"""``--cost``, ``--align``, ``--equal-counts``: override a scene's ``[correspondence]`` from the command line."""
+"""``--cost``, ``--align``, ``--equal-counts`` (a scene's ``[correspondence]``) and ``--balance``
+from the command line."""
 
 from __future__ import annotations
 
 import argparse
 
-from ..model import ALIGNS, COSTS, EQUAL_COUNTS, Matching, Scene
+from ..model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Matching, Scene
 
-__all__ = ["add_matching_flags", "matching_of", "with_matching"]
+__all__ = ["add_matching_flags", "add_balance_flag", "matching_of", "with_matching"]
 
 
 def add_matching_flags(parser: argparse.ArgumentParser) -> None:
@@ -22,14 +23,23 @@ def add_matching_flags(parser: argparse.ArgumentParser) -> None:
                              "the least-work correspondence for them too (match); default: the scene's")
 
 
+def add_balance_flag(parser: argparse.ArgumentParser) -> None:
+    """Add ``--balance copies|spread`` (default: the scene's, shape by shape)."""
+    parser.add_argument("--balance", choices=BALANCES,
+                        help="where balancing puts the copies of a vertex matched to several: stacked on "
+                             "it (copies, the thesis) or spread along its edges (spread); default: the scene's")
+
+
 def matching_of(scene: Scene, args: argparse.Namespace) -> Matching:
     """The scene's matching with the flags given on the command line put over it."""
     return with_matching(scene, args).matching
 
 
 def with_matching(scene: Scene, args: argparse.Namespace) -> Scene:
-    """``scene`` with ``--cost``, ``--align`` and ``--equal-counts`` put over its ``[correspondence]``."""
+    """``scene`` with ``--cost``, ``--align`` and ``--equal-counts`` put over its ``[correspondence]``
+    and ``--balance`` over every shape's balance."""
+    from ..pipeline.library import with_balance
     from ..pipeline.library import with_matching as put_over
 
-    return put_over(scene, getattr(args, "cost", None), getattr(args, "align", None),
-                    getattr(args, "equal_counts", None))
+    return with_balance(put_over(scene, getattr(args, "cost", None), getattr(args, "align", None),
+                                 getattr(args, "equal_counts", None)), getattr(args, "balance", None))

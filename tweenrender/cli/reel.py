@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 
 from .args import check_frame_count, count, fps, max_frames_flag, methods, size
-from .matching_flags import add_matching_flags, with_matching
+from .matching_flags import add_balance_flag, add_matching_flags, with_matching
 from .overlay_flags import MAX_ONION
 
 DEFAULT_SIZE = (1280, 720)
@@ -26,6 +26,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--onion", type=count(0, MAX_ONION, "--onion"), default=0, metavar="N",
                    help="N ghosted inbetweens before and after each frame")
     add_matching_flags(p)
+    add_balance_flag(p)
     p.add_argument("--plain", action="store_true", help="no vertex paths and no perimeter strip")
     max_frames_flag(p)
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")

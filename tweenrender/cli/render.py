@@ -11,7 +11,7 @@ from pathlib import Path
 from ..errors import UsageError
 from ..model import METHODS
 from .args import check_frame_count, count, fps, max_frames_flag, method, methods, seconds, size
-from .matching_flags import add_matching_flags
+from .matching_flags import add_balance_flag, add_matching_flags
 from .overlay_flags import add_overlay_flags
 
 
@@ -36,6 +36,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="#rgb, #rgba, #rrggbb or #rrggbbaa, or none (transparent: webm, mov, gif and png keep it)")
     add_overlay_flags(p)
     add_matching_flags(p)
+    add_balance_flag(p)
     max_frames_flag(p)
     p.add_argument("--workers", type=count(1, 256, "--workers"), metavar="N",
                    help="processes drawing frames (default: 1 for video, whose encoder is the limit; "
@@ -72,5 +73,5 @@ def run(args: argparse.Namespace) -> int:
     print(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
                 fps=args.fps, frames=frames, background=args.background, paths=args.paths, onion=args.onion,
                 strip=args.strip, cost=args.cost, align=args.align, equal_counts=args.equal_counts,
-                workers=args.workers, progress=bar))
+                balance=args.balance, workers=args.workers, progress=bar))
     return 0

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from .args import count, methods, png_target, size
-from .matching_flags import add_matching_flags, with_matching
+from .matching_flags import add_balance_flag, add_matching_flags, with_matching
 
 DEFAULT_COUNT = 7
 
@@ -22,6 +22,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="size of the whole sheet (default 1280 wide, rows as tall as the view asks)")
     p.add_argument("--paths", action="store_true", help="draw every vertex's path behind the outlines")
     add_matching_flags(p)
+    add_balance_flag(p)
     p.set_defaults(run=run)
 
 

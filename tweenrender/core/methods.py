@@ -9,6 +9,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..errors import GeometryError
 from . import paths
+from .arap import arap
+from .intrinsic import intrinsic
 from .joints import jointed
 from .qcurves import auto
 
@@ -30,11 +32,26 @@ def _rigid(k0: Array, k1: Array, t: ArrayLike, joints: Joints) -> Array:
     return paths.rigid(k0, k1, t)
 
 
+def _arap(k0: Array, k1: Array, t: ArrayLike, joints: Joints) -> Array:
+    return arap(k0, k1, t)
+
+
+def _intrinsic(k0: Array, k1: Array, t: ArrayLike, joints: Joints) -> Array:
+    return intrinsic(k0, k1, t, closure="paper")
+
+
+def _intrinsic_length(k0: Array, k1: Array, t: ArrayLike, joints: Joints) -> Array:
+    return intrinsic(k0, k1, t, closure="length")
+
+
 _METHODS: dict[str, Callable[[Array, Array, ArrayLike, Joints], Array]] = {
     "linear": _linear,
     "nonlinear": _nonlinear,
     "rigid": _rigid,
     "jointed": jointed,  # without joints: the nonlinear paths of the whole shape
+    "arap": _arap,  # joints are not needed: the triangulated shape bends where it must
+    "intrinsic": _intrinsic,  # the paper's closing weights
+    "intrinsic-length": _intrinsic_length,  # closing weighted by edge length (docs/intrinsic.md)
     "auto": auto,
 }
 

@@ -24,6 +24,7 @@ from ..errors import GeometryError
 from ..model import Contour, Key, Matching, Paint, Points, Shape
 from .contours import anchor, pair_contours
 from .correspond import Correspondence, correspond, correspond_open
+from .balance import spread
 from .methods import interpolate
 from .paint import blend_paints
 
@@ -226,10 +227,12 @@ def _still(key: Key) -> ShapeAt:
                    not key.hidden and key.paint.visible)
 
 
-def build_track(shape: Shape, matching: Matching, unmatched: str = "grow") -> Track:
+def build_track(shape: Shape, matching: Matching, unmatched: str = "grow", balance: str = "copies") -> Track:
     """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through.
 
-    ``unmatched`` is the rule for contours without a partner (``shape.unmatched`` overrides it).
+    ``unmatched`` is the rule for contours without a partner (``shape.unmatched`` overrides it);
+    ``balance`` places the copies balancing makes: ``"copies"`` stacks them on their vertex (the
+    thesis), ``"spread"`` spreads them along its edges (maths §5.6).
     """
     keys = shape.keys
     if shape.equal_counts is not None and shape.equal_counts != matching.equal_counts:
@@ -237,7 +240,7 @@ def build_track(shape: Shape, matching: Matching, unmatched: str = "grow") -> Tr
     joints = tuple(shape.joints)  # indices into the current key's vertices
     segments = []
     for before, after in zip(keys, keys[1:]):
-        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched)
+        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched, balance)
         balanced_joints: tuple[tuple[int, int], ...] = ()
         if joints and len(pairs) == 1:
             found = pairs[0].correspondence
@@ -253,7 +256,8 @@ def build_track(shape: Shape, matching: Matching, unmatched: str = "grow") -> Tr
     return Track(shape.name, tuple(segments), _still(keys[0]))
 
 
-def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str) -> tuple[Pair, ...]:
+def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str,
+           balance: str = "copies") -> tuple[Pair, ...]:
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
         # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order
@@ -263,7 +267,7 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
     pairs = []
     for i, j in links:
         if i is not None and j is not None:
-            pairs.append(_balanced(a[i], b[j], (i, j), matching))
+            pairs.append(_balanced(a[i], b[j], (i, j), matching, balance))
             continue
         # a contour without a partner: it fades, or shrinks to (i) or grows from (j) a point of the other key
         alone, others = (a[i], b) if i is not None else (b[j], a)  # type: ignore[index]
@@ -278,7 +282,8 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
     return tuple(pairs)
 
 
-def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matching) -> Pair:
+def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matching,
+              balance: str = "copies") -> Pair:
     closed = a.closed and b.closed
     m, n = len(a.points), len(b.points)
     if m == n and matching.equal_counts == "drawn":
@@ -289,6 +294,8 @@ def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matchin
         return Pair(_frozen(k0), _frozen(k1), closed, (m, n), None, source)
     found = correspond(a.points, b.points, matching) if closed else correspond_open(a.points, b.points, matching)
     k0, k1 = found.apply(a.points, b.points)
+    if balance == "spread" and closed:
+        k0, k1 = spread(k0, k1)
     return Pair(_frozen(k0), _frozen(k1), closed, (m, n), found, source)
 
 

@@ -58,7 +58,8 @@ def pick_frames(spec: str | range | None, total: int) -> range:
 
 
 def tracks_of(scene: Scene) -> tuple[Track, ...]:
-    return tuple(build_track(shape, scene.matching, scene.unmatched) for shape in scene.shapes)
+    return tuple(build_track(shape, scene.matching, scene.unmatched, scene.balance_of(shape))
+                 for shape in scene.shapes)
 
 
 def scene_view(scene: Scene, tracks: Sequence[Track], methods: Sequence[str | None]) -> Box:

@@ -24,11 +24,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import OptionError
-from ..model import EQUAL_COUNTS, METHODS, Color, Points, Scene
+from ..model import BALANCES, EQUAL_COUNTS, METHODS, Color, Points, Scene
 from .job import Frames, Progress, RenderJob, pick_frames, total_frames
 
 __all__ = ["load_scene", "frame", "frames", "outlines", "write", "output_format", "with_matching",
-           "CANVAS_LIMIT"]
+           "with_balance", "CANVAS_LIMIT"]
 
 CANVAS_LIMIT = 16384
 """The largest frame side, in pixels (a comparison's panels together)."""
@@ -92,9 +92,9 @@ def outlines(scene: Scene, time: float, *, method: str | None = None) -> list[Po
 def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = None,
           compare: Sequence[str] | bool | None = None, format: str | None = None,
           size: tuple[int, int] | None = None, fps: float | None = None, frames: str | range | None = None,
-          background: str | Color | None = None, paths: bool = False, onion: int = 0, strip: bool = False,
-          cost: str | None = None, align: str | None = None, equal_counts: str | None = None,
-          workers: int | None = None, progress: Progress | None = None) -> Path:
+          background: str | Color | None = None, balance: str | None = None, paths: bool = False,
+          onion: int = 0, strip: bool = False, cost: str | None = None, align: str | None = None,
+          equal_counts: str | None = None, workers: int | None = None, progress: Progress | None = None) -> Path:
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
     The format is ``format`` or ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name
@@ -102,7 +102,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     transparent, kept by WebM, MOV, GIF and PNG; refused for MP4). ``compare`` lists the methods of side-by-side labelled panels
     (``True``: the scene's ``compare`` list); ``size`` is each panel's. ``frames`` picks part of the
     clip (``"A:B"`` or a ``range``). ``cost``, ``align`` and ``equal_counts`` override the scene's
-    ``[correspondence]``. ``workers`` is the number of drawing processes (default: chosen for the
+    ``[correspondence]``; ``balance`` (``"copies"`` or ``"spread"``) overrides every shape's. ``workers`` is the number of drawing processes (default: chosen for the
     format and size). ``progress`` is called with ``(done, total)`` frames. The target changes only
     when the whole output was written and checked.
     """
@@ -114,7 +114,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     target = Path(path)
     fmt = output_format(target, format)
     _not_the_scene(target, scene)
-    scene = with_matching(scene, cost, align, equal_counts)
+    scene = with_balance(with_matching(scene, cost, align, equal_counts), balance)
     panels: tuple[str | None, ...]
     if compare is True:
         panels = scene.compare
@@ -262,6 +262,15 @@ def with_matching(scene: Scene, cost: str | None = None, align: str | None = Non
             raise OptionError(f"{name}: expected one of {', '.join(choices)}, found {value!r}")
         changes[name] = value
     return replace(scene, matching=replace(scene.matching, **changes)) if changes else scene
+
+
+def with_balance(scene: Scene, balance: str | None) -> Scene:
+    """``scene`` with every shape balanced by ``balance`` (``"copies"`` or ``"spread"``; None: as it is)."""
+    if balance is None:
+        return scene
+    if balance not in BALANCES:
+        raise OptionError(f"balance: expected one of {', '.join(BALANCES)}, found {balance!r}")
+    return replace(scene, balance=balance, shapes=tuple(replace(shape, balance=None) for shape in scene.shapes))
 
 
 def _not_the_scene(target: Path, scene: Scene) -> None:

@@ -4,29 +4,39 @@ from __future__ import annotations
 
 from typing import Any, Sequence
 
-from ..core.measures import report
+from ..core.intrinsic import closure_tweak
+from ..core.measures import SWEEP, report
 from ..core.qcurves import auto_choice
-from ..model import Scene
+from ..model import METHODS, Scene
 from .segments import entries
 
 __all__ = ["stats_dict", "stats_text", "STATS_METHODS"]
 
-STATS_METHODS = ("linear", "nonlinear", "rigid")
+STATS_METHODS = tuple(m for m in METHODS if m != "jointed")
+"""Every method measured on every segment; ``jointed`` too where the shape has joints."""
+
+_CLOSURE = {"intrinsic": "paper", "intrinsic-length": "length"}
 
 
-def stats_dict(scene: Scene, t: Sequence[float]) -> dict[str, Any]:
-    """The thesis's ch. 6 report for every shape and segment (the documented ``stats --json``)."""
+def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None = None) -> dict[str, Any]:
+    """The thesis's ch. 6 report and the quality measures for every shape and segment (the documented
+    ``stats --json``): for ``methods``, default every method (``jointed`` where a shape has joints)."""
     shapes = []
     for entry in entries(scene, closed_only=True):
         pair, joints = entry.pair, entry.segment.joints
-        methods = STATS_METHODS + (("jointed",) if joints else ())
+        measured_methods = tuple(methods) if methods is not None else \
+            tuple(m for m in METHODS if m != "jointed" or joints)
         choice = auto_choice(pair.k0, pair.k1, joints)
+        measured = {m: report(pair.k0, pair.k1, m, t, joints).as_dict() for m in measured_methods}
+        for method, closure in _CLOSURE.items():
+            if method in measured:  # how much the closing tweak changed the lengths, at worst
+                measured[method]["closure_tweak_max"] = float(closure_tweak(pair.k0, pair.k1, SWEEP, closure).max())
         shapes.append({
             **entry.head(),
             "vertices": list(pair.counts),
             "balanced": len(pair.k0),
             "auto": {"method": choice.method, "why": choice.why},
-            "methods": {m: report(pair.k0, pair.k1, m, t, joints).as_dict() for m in methods},
+            "methods": measured,
         })
     return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
 
@@ -60,6 +70,27 @@ def stats_text(stats: dict[str, Any]) -> str:
             else:
                 lines.append(f"(over the segment the ratio runs from {r['ratio_min']:.5f} to "
                              f"{r['ratio_max']:.5f}, worst edge-length error {r['edge_error_max']:.5f})")
+            areas = ", ".join(f"{a:.5f}" for a in r["area_ratio"])
+            lines.append(f"Area ratio to the interpolated keys = {areas}; worst turning-angle error "
+                         f"{r['angle_error_max']:.3f} degrees")
+            lines.append(_crossing_words(r["self_intersects"]))
+            if "closure_tweak_max" in r:
+                lines.append(f"Closing the walk changed the lengths by at most {100 * r['closure_tweak_max']:.2f} % "
+                             "of the perimeter")
     if not stats["shapes"]:
         lines.append("no shape has two keys: nothing moves")
     return "\n".join(lines)
+
+
+def _crossing_words(at: list[float]) -> str:
+    """``"The outline crosses itself at t = 0.51 to 1"`` or that it never does."""
+    if not at:
+        return "The outline never crosses itself"
+    runs: list[list[float]] = [[at[0], at[0]]]
+    for t in at[1:]:
+        if t - runs[-1][1] <= 0.0101:
+            runs[-1][1] = t
+        else:
+            runs.append([t, t])
+    words = ", ".join(f"{a:g}" if a == b else f"{a:g} to {b:g}" for a, b in runs)
+    return f"The outline crosses itself at t = {words}"

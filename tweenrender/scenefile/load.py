@@ -18,8 +18,8 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from ..errors import SceneError
-from ..model import (ALIGNS, CAPS, COSTS, DEFAULT_FILL, EASES, EQUAL_COUNTS, FILL_RULES, JOINS, METHODS, UNMATCHED,
-                     Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
+from ..model import (ALIGNS, BALANCES, CAPS, COSTS, DEFAULT_BALANCE, DEFAULT_FILL, EASES, EQUAL_COUNTS, FILL_RULES,
+                     JOINS, METHODS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
 from .locate import json_line_of, line_of
 
 __all__ = ["load_scene", "parse_scene", "LIMITS"]
@@ -39,10 +39,10 @@ LIMITS = {
     "match_sg": 100_000_000,      # m·n·max(m, n), cost "sg"
 }
 
-_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "correspondence", "unmatched", "shape",
-        "drawing")
+_TOP = ("title", "size", "fps", "background", "view", "method", "compare", "balance", "correspondence", "unmatched",
+        "shape", "drawing")
 _PAINT = ("fill", "stroke", "stroke_width", "opacity")
-_SHAPE = ("name", *_PAINT, "method", "joints", "fill_rule", "closed", "cap", "join", "unmatched", "key")
+_SHAPE = ("name", *_PAINT, "method", "joints", "balance", "fill_rule", "closed", "cap", "join", "unmatched", "key")
 _KEY = ("time", "points", "contours", "ease", *_PAINT)
 _DRAWING = ("time", "svg", "ease", "tolerance")
 _SVG = ("svg", "id", "tolerance")
@@ -311,8 +311,10 @@ class _Reader:
         background = self.background(top.get("background", "#ffffff"), "background")
         matching = self.matching(top.get("correspondence", {}))
         self.matching_effort(shapes, matching)
+        balance = self.choice(top.get("balance", DEFAULT_BALANCE), "balance", BALANCES, "balance")
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
-                     method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched)
+                     method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched,
+                     balance=balance)
 
     def drawings(self, items: list[Any], unmatched: str) -> tuple[tuple[Shape, ...], tuple[float, float, float, float]]:
         """``[[drawing]]`` keys: whole SVG files at times; their shapes and the first drawing's view box."""
@@ -432,8 +434,10 @@ class _Reader:
         unmatched = None
         if "unmatched" in table:
             unmatched = self.choice(table["unmatched"], f"{where}.unmatched", UNMATCHED, "rule for unmatched contours")
+        balance = self.choice(table["balance"], f"{where}.balance", BALANCES, "balance") \
+            if "balance" in table else None
         return Shape(name=name, keys=keys, method=method, joints=joints, fill_rule=fill_rule, cap=cap, join=join,
-                     unmatched=unmatched)
+                     unmatched=unmatched, balance=balance)
 
     def paint(self, table: dict[str, Any], where: str, base: Paint) -> Paint:
         """``base`` with the ``fill``, ``stroke``, ``stroke_width`` and ``opacity`` that ``table`` gives."""

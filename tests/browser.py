@@ -1,0 +1,161 @@
+"""A real headless browser for tests: Debian's ``chromium``, driven over the DevTools protocol on a pipe.
+
+No driver library and no network: chromium reads protocol messages on file
+descriptor 3 and writes on 4 (``--remote-debugging-pipe``), each a JSON object
+ended by a NUL byte. :func:`open_page` loads a page and reports what a person
+would notice: console errors and uncaught exceptions, failed loads, each media
+element's state, and a screenshot.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync", "--no-first-run", "--mute-audio",
+         "--autoplay-policy=no-user-gesture-required", "--remote-debugging-pipe"]
+
+
+def chromium() -> str | None:
+    """The path of Debian's chromium, or None."""
+    return shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+@dataclass
+class PageReport:
+    errors: list[str] = field(default_factory=list)  # console errors, exceptions, failed loads
+    media: list[dict[str, Any]] = field(default_factory=list)  # one per <video>/<img>
+    screenshot: bytes = b""  # PNG
+
+
+class _Browser:
+    def __init__(self, executable: str, profile: str) -> None:
+        commands_read, self._commands = os.pipe()
+        self._replies, replies_write = os.pipe()
+
+        def wire() -> None:  # in the child: the pipes at the descriptors chromium expects
+            os.dup2(commands_read, 3)
+            os.dup2(replies_write, 4)
+
+        self.process = subprocess.Popen([executable, *FLAGS, f"--user-data-dir={profile}", "about:blank"],
+                                        stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                        stderr=subprocess.DEVNULL, preexec_fn=wire, pass_fds=(3, 4))
+        os.close(commands_read)
+        os.close(replies_write)
+        self._buffer = b""
+        self._next = 0
+        self.events: list[dict[str, Any]] = []
+
+    def send(self, method: str, params: dict[str, Any] | None = None, session: str | None = None,
+             timeout: float = 30.0) -> dict[str, Any]:
+        self._next += 1
+        message: dict[str, Any] = {"id": self._next, "method": method, "params": params or {}}
+        if session:
+            message["sessionId"] = session
+        os.write(self._commands, json.dumps(message).encode() + b"\0")
+        deadline = time.monotonic() + timeout
+        while True:
+            reply = self._read(deadline)
+            if reply.get("id") == self._next:
+                if "error" in reply:
+                    raise RuntimeError(f"{method}: {reply['error']}")
+                return reply.get("result", {})
+            self.events.append(reply)
+
+    def _read(self, deadline: float) -> dict[str, Any]:
+        import select
+
+        while b"\0" not in self._buffer:
+            left = deadline - time.monotonic()
+            if left <= 0 or not select.select([self._replies], [], [], left)[0]:
+                raise TimeoutError("chromium did not answer in time")
+            chunk = os.read(self._replies, 1 << 16)
+            if not chunk:
+                raise RuntimeError("chromium closed its pipe")
+            self._buffer += chunk
+        raw, _, self._buffer = self._buffer.partition(b"\0")
+        return json.loads(raw)
+
+    def pump(self, seconds: float) -> None:
+        """Collect events for ``seconds``."""
+        deadline = time.monotonic() + seconds
+        try:
+            while True:
+                self.events.append(self._read(deadline))
+        except TimeoutError:
+            pass
+
+    def close(self) -> None:
+        try:
+            self.send("Browser.close", timeout=5)
+        except Exception:  # noqa: BLE001 - it may already be gone
+            pass
+        try:
+            self.process.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
+        os.close(self._commands)
+        os.close(self._replies)
+
+
+_MEDIA = """
+(() => Array.from(document.querySelectorAll("video, img")).map(e => e.tagName === "VIDEO"
+  ? {tag: "video", src: e.getAttribute("src"), readyState: e.readyState, error: e.error && e.error.code,
+     duration: e.duration, paused: e.paused, width: e.videoWidth, height: e.videoHeight, time: e.currentTime}
+  : {tag: "img", src: e.getAttribute("src"), complete: e.complete, naturalWidth: e.naturalWidth,
+     naturalHeight: e.naturalHeight}))()
+"""
+
+
+def open_page(url: str, settle: float = 3.0, size: tuple[int, int] = (1280, 2400)) -> PageReport:
+    """Load ``url`` in a fresh headless chromium; wait ``settle`` seconds; report what happened."""
+    executable = chromium()
+    if executable is None:
+        raise FileNotFoundError("chromium")
+    with tempfile.TemporaryDirectory(prefix="tweenrender-chromium-") as profile:
+        browser = _Browser(executable, profile)
+        try:
+            target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+            for domain in ("Runtime", "Log", "Page", "Network"):
+                browser.send(f"{domain}.enable", session=session)
+            browser.send("Emulation.setDeviceMetricsOverride",
+                         {"width": size[0], "height": size[1], "deviceScaleFactor": 1, "mobile": False},
+                         session=session)
+            browser.send("Page.navigate", {"url": url}, session=session)
+            browser.pump(settle)
+            report = PageReport()
+            report.media = browser.send("Runtime.evaluate", {"expression": _MEDIA, "returnByValue": True},
+                                        session=session)["result"]["value"]
+            shot = browser.send("Page.captureScreenshot", {"format": "png", "captureBeyondViewport": False},
+                                session=session)
+            report.screenshot = base64.b64decode(shot["data"])
+            for event in browser.events:
+                method, params = event.get("method"), event.get("params", {})
+                if method == "Runtime.consoleAPICalled" and params.get("type") in ("error", "assert"):
+                    report.errors.append("console: " + " ".join(str(a.get("value", a.get("description")))
+                                                                 for a in params.get("args", [])))
+                elif method == "Runtime.exceptionThrown":
+                    report.errors.append("exception: " + json.dumps(params.get("exceptionDetails", {}))[:300])
+                elif method == "Log.entryAdded" and params.get("entry", {}).get("level") == "error":
+                    entry = params["entry"]
+                    report.errors.append(f"log: {entry.get('text')} {entry.get('url', '')}")
+                elif method == "Network.loadingFailed" and not params.get("canceled"):
+                    report.errors.append(f"load failed: {params.get('errorText')}")
+            return report
+        finally:
+            browser.close()
+
+
+def page_url(path: Path) -> str:
+    return path.resolve().as_uri()

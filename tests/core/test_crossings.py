@@ -1,0 +1,108 @@
+"""Self-intersection against an exact brute force on small polygons, and known shapes."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+from tweenrender.core.crossings import distinct_outline, self_crossing
+
+
+def _exact_meet(p: tuple, p2: tuple, q: tuple, q2: tuple) -> bool:
+    """Closed segments p–p2 and q–q2 share a point: parametric solve in exact rationals."""
+    def sub(a, b):
+        return (a[0] - b[0], a[1] - b[1])
+
+    def cross(a, b):
+        return a[0] * b[1] - a[1] * b[0]
+
+    r, w, d = sub(p2, p), sub(q2, q), sub(q, p)
+    denominator = cross(r, w)
+    if denominator != 0:
+        s = Fraction(cross(d, w), denominator)
+        u = Fraction(cross(d, r), denominator)
+        return 0 <= s <= 1 and 0 <= u <= 1
+    if cross(d, r) != 0:  # parallel, on different lines
+        return False
+    rr = r[0] * r[0] + r[1] * r[1]
+    t0 = Fraction(d[0] * r[0] + d[1] * r[1], rr)
+    t1 = t0 + Fraction(w[0] * r[0] + w[1] * r[1], rr)
+    return max(min(t0, t1), 0) <= min(max(t0, t1), 1)
+
+
+def _brute_force(points: list[tuple[int, int]]) -> bool:
+    """The outline (coincident neighbours merged) crosses or touches itself, by exact pair tests."""
+    merged: list[tuple[int, int]] = []
+    for point in points:
+        if not merged or merged[-1] != point:
+            merged.append(point)
+    while len(merged) > 1 and merged[0] == merged[-1]:
+        merged.pop()
+    n = len(merged)
+    if n < 3:
+        return False
+    segments = [(merged[i], merged[(i + 1) % n]) for i in range(n)]
+    for i in range(n):
+        for j in range(i + 1, n):
+            neighbours = j == i + 1 or (i == 0 and j == n - 1)
+            if neighbours:
+                # they share one vertex; anything more is a fold back along one line
+                a, b = segments[i], segments[j]
+                shared = a[1] if a[1] in b else a[0]
+                ua = (a[0][0] - shared[0], a[0][1] - shared[1]) if a[1] == shared else \
+                    (a[1][0] - shared[0], a[1][1] - shared[1])
+                ub = (b[1][0] - shared[0], b[1][1] - shared[1]) if b[0] == shared else \
+                    (b[0][0] - shared[0], b[0][1] - shared[1])
+                if ua[0] * ub[1] - ua[1] * ub[0] == 0 and ua[0] * ub[0] + ua[1] * ub[1] > 0:
+                    return True
+            elif _exact_meet(*segments[i], *segments[j]):
+                return True
+    return False
+
+
+def test_brute_force_agrees_on_random_small_polygons() -> None:
+    rng = np.random.default_rng(7)
+    crossing = simple = 0
+    for _ in range(3000):
+        n = int(rng.integers(3, 8))
+        points = [tuple(int(v) for v in p) for p in rng.integers(0, 5, size=(n, 2))]
+        expected = _brute_force(points)
+        where = self_crossing(np.array(points, dtype=np.float64))
+        assert (where is not None) == expected, points
+        crossing += expected
+        simple += not expected
+        if where is not None:
+            outline = distinct_outline(np.array(points, dtype=np.float64))
+            # the point given lies on the outline
+            a, b = outline, np.roll(outline, -1, axis=0)
+            ab, ap = b - a, where - a
+            s = np.clip((ap * ab).sum(1) / np.maximum((ab * ab).sum(1), 1e-300), 0, 1)
+            assert np.min(np.linalg.norm(a + s[:, None] * ab - where, axis=1)) < 1e-9
+    assert crossing > 300 and simple > 300  # both kinds were really tried
+
+
+@pytest.mark.parametrize("points, expected", [
+    ([[0, 0], [2, 0], [2, 2], [0, 2]], None),                         # square
+    ([[0, 0], [2, 2], [2, 0], [0, 2]], (1.0, 1.0)),                   # bow tie: crosses at its middle
+    ([[0, 0], [4, 0], [4, 4], [2, 0.0], [0, 4]], (2.0, 0.0)),         # a vertex touching an edge
+    ([[0, 0], [2, 0], [2, 0], [2, 2], [0, 2]], None),                 # a copy: a zero-length edge is no edge
+    ([[0, 0], [2, 0], [1, 0], [1, 2]], (2.0, 0.0)),                   # folds back along one line
+    ([[0, 0], [1, 0], [2, 0]], (2.0, 0.0)),                           # flat: folds back at its end
+])
+def test_known_outlines(points: list, expected: tuple | None) -> None:
+    where = self_crossing(np.array(points, dtype=np.float64))
+    if expected is None:
+        assert where is None
+    else:
+        assert where is not None and np.allclose(where, expected)
+
+
+def test_large_outline_is_checked_in_blocks() -> None:
+    # a 3000-vertex circle is simple; pushing one vertex across the middle makes it cross
+    theta = np.linspace(0, 2 * np.pi, 3000, endpoint=False)
+    circle = np.column_stack([np.cos(theta), np.sin(theta)])
+    assert self_crossing(circle) is None
+    circle[1500] = [2.0, 0.0]
+    assert self_crossing(circle) is not None

@@ -1,0 +1,99 @@
+"""The HTML report: in a real headless browser, on disk, and its refusal to replace a stranger's folder."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ..browser import chromium, open_page, page_url
+from ..helpers import SCENES, decode, read_png, run_module
+
+METHODS = "linear,arap,intrinsic,jointed"
+
+
+@pytest.fixture(scope="module")
+def report(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    folder = tmp_path_factory.mktemp("report") / "hinge-report"
+    done = run_module("report", SCENES / "hinge.toml", "--compare", METHODS, "-o", folder, "-q")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == str(folder / "index.html")
+    return folder
+
+
+def test_the_page_is_self_contained(report: Path) -> None:
+    text = (report / "index.html").read_text()
+    references = re.findall(r'(?:src|href)="([^"]+)"', text)
+    assert references
+    for reference in references:
+        assert reference.startswith("data:") or (report / reference).is_file(), reference
+    assert "http://" not in text and "https://" not in text
+    assert [f"{m}.webm" for m in METHODS.split(",")] == re.findall(r'<video src="([^"]+)"', text)
+    # every file in the folder belongs to the page (and the marker that makes it ours)
+    assert {p.name for p in report.iterdir()} == set(references) - {"data:,"} | {"index.html", ".tweenrender-report"}
+
+
+def test_the_videos_play_the_whole_clip_in_step(report: Path) -> None:
+    sizes = set()
+    for method in METHODS.split(","):
+        meta, frames = decode(report / f"{method}.webm")
+        assert len(frames) == 49  # hinge: 2 s at 24 fps, both ends included
+        sizes.add(frames[0].shape)
+    assert len(sizes) == 1  # one size, one view, one clock
+
+
+def test_the_table_has_every_method_and_its_measures(report: Path) -> None:
+    text = (report / "index.html").read_text()
+    for method in METHODS.split(","):
+        assert f"<tr><td>{method}</td>" in text
+    assert "worst edge error" in text and "crosses itself" in text
+
+
+def test_the_page_in_a_real_browser(report: Path) -> None:
+    if chromium() is None:
+        pytest.skip("Debian's chromium is not installed (apt-get install chromium); .ci/run installs it")
+    seen = open_page(page_url(report / "index.html"))
+    assert seen.errors == []
+    videos = [m for m in seen.media if m["tag"] == "video"]
+    images = [m for m in seen.media if m["tag"] == "img"]
+    assert len(videos) == 4 and len(images) == 3
+    for video in videos:
+        assert video["error"] is None and video["readyState"] >= 2 and video["width"] > 0, video
+        assert abs(video["duration"] - 2.0) < 0.1 and not video["paused"]
+    times = [v["time"] for v in videos]
+    assert max(times) - min(times) < 0.25  # playing together
+    for image in images:
+        assert image["complete"] and image["naturalWidth"] > 0, image
+    shot = read_png_bytes(seen.screenshot)
+    # not blank: many colours, and the drawing's fill colour is on screen
+    assert len(np.unique(shot.reshape(-1, shot.shape[-1]), axis=0)) > 50
+    assert shot[..., :3].std() > 10
+
+
+def read_png_bytes(data: bytes) -> np.ndarray:
+    import imageio.v3 as iio
+
+    return np.asarray(iio.imread(data, extension=".png"))
+
+
+def test_a_stranger_folder_is_never_replaced(tmp_path: Path) -> None:
+    folder = tmp_path / "mine"
+    folder.mkdir()
+    (folder / "notes.txt").write_text("keep me")
+    done = run_module("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
+    assert done.returncode == 2
+    assert "not a tweenrender report" in done.stderr and "Traceback" not in done.stderr
+    assert [p.name for p in folder.iterdir()] == ["notes.txt"]
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]  # no temporary left behind
+
+
+def test_an_earlier_report_is_replaced_whole(tmp_path: Path) -> None:
+    folder = tmp_path / "square-report"
+    assert run_module("report", SCENES / "square.toml", "--compare", "linear,rigid", "-o", folder, "-q").returncode == 0
+    assert (folder / "rigid.webm").is_file()
+    assert run_module("report", SCENES / "square.toml", "--compare", "arap", "-o", folder, "-q").returncode == 0
+    assert sorted(p.name for p in folder.glob("*.webm")) == ["arap.webm"]
+    assert read_png(folder / "metrics.png").shape[1] == 960
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]

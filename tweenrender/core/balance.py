@@ -1,0 +1,86 @@
+"""Spread balancing (maths §5.6): copies of a vertex spread along its edges instead of stacked.
+
+Balancing (maths §2) pairs a vertex of one key with ``k > 1`` vertices of the
+other and makes ``k`` copies of it at one point (the thesis's rule, ``copies``).
+*Spread* moves those copies along the key's own outline — onto the halves of the
+two edges that meet at the vertex — at the arc-length proportions of the ``k``
+vertices of the other key they pair with. One copy, the one whose proportion
+falls nearest the vertex, stays on it exactly, so the key's outline (the
+polygon as drawn) is unchanged; only its vertices are spread, and no edge is
+left with zero length.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["spread", "coincident_runs"]
+
+Array = NDArray[np.float64]
+
+_MARGIN = 0.05  # proportions are kept within [margin, 1 - margin] of the run's stretch of outline
+
+
+def coincident_runs(points: Array) -> list[tuple[int, int]]:
+    """Maximal runs of consecutive equal vertices of a closed polygon ``(N, 2)``: ``(start, length)``
+    pairs with ``length ≥ 2``; a run may wrap past the last vertex. None when every vertex is equal."""
+    points = np.asarray(points)
+    n = len(points)
+    same = np.all(points == np.roll(points, 1, axis=0), axis=1)  # same[i]: vertex i equals vertex i-1
+    if n == 0 or same.all():
+        return []
+    starts = np.flatnonzero(~same)
+    runs = []
+    for k, start in enumerate(starts):
+        end = starts[(k + 1) % len(starts)]
+        length = (end - start) % n or n
+        if length >= 2:
+            runs.append((int(start), int(length)))
+    return runs
+
+
+def spread(k0: Array, k1: Array) -> tuple[Array, Array]:
+    """Balanced keys ``(L, 2)`` with each run of copies spread along its key's outline: two new arrays.
+
+    Runs are found by position (consecutive equal vertices), so keys whose
+    repeated vertices were drawn that way are spread too. A key whose
+    vertices all coincide is returned as it is.
+    """
+    k0 = np.array(k0, dtype=np.float64)
+    k1 = np.array(k1, dtype=np.float64)
+    return _spread_one(k0, k1), _spread_one(k1, k0)
+
+
+def _spread_one(key: Array, other: Array) -> Array:
+    out = key.copy()
+    n = len(key)
+    for start, length in coincident_runs(key):
+        index = (start + np.arange(-1, length + 1)) % n  # the run with one neighbour each side
+        corner = key[start]
+        before = 0.5 * (key[index[0]] + corner)
+        after = 0.5 * (corner + key[index[-1]])
+        # where the run's copies go: the half-edge before the vertex, then the half-edge after it
+        first, second = float(np.linalg.norm(corner - before)), float(np.linalg.norm(after - corner))
+        # the other key's stretch: half its edge in, its run of vertices, half its edge out
+        stretch = other[index].copy()
+        stretch[0] = 0.5 * (other[index[0]] + other[index[1]])
+        stretch[-1] = 0.5 * (other[index[-2]] + other[index[-1]])
+        steps = np.linalg.norm(np.diff(stretch, axis=0), axis=1)
+        total = float(steps.sum())
+        if total > 0:
+            share = np.cumsum(steps)[:-1] / total  # (length,) proportions of the run's vertices
+        else:
+            share = np.arange(1, length + 1) / (length + 1)
+        share = _MARGIN + (1.0 - 2.0 * _MARGIN) * share
+        place = share * (first + second)
+        stay = int(np.argmin(np.abs(place - first)))
+        for k, at in enumerate(place):
+            slot = index[k + 1]
+            if k == stay:
+                out[slot] = corner
+            elif at < first:
+                out[slot] = before + (corner - before) * (at / first)
+            else:
+                out[slot] = corner + (after - corner) * ((at - first) / second)
+    return out

@@ -1,0 +1,56 @@
+"""The quality measures over t of every shape segment and method, as chart panels and a PNG."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING, Sequence
+
+import numpy as np
+
+from ..core.measures import SWEEP, curves
+from ..core.timeline import build_track
+from ..model import Scene
+
+if TYPE_CHECKING:
+    from numpy.typing import NDArray
+
+    from ..raster.plots.metric_plot import MPanel
+
+__all__ = ["metric_panels", "metrics_png", "write_metric_plot"]
+
+
+def metric_panels(scene: Scene, methods: Sequence[str]) -> list[MPanel]:
+    """One panel per shape segment: each method's measures over :data:`~tweenrender.core.measures.SWEEP`."""
+    from ..raster.plots.metric_plot import MPanel as _MPanel
+
+    panels = []
+    for shape in scene.shapes:
+        track = build_track(shape, scene.matching, scene.balance_of(shape))
+        for index, segment in enumerate(track.segments):
+            series, crossing = {}, {}
+            for method in methods:
+                found = curves(segment.k0, segment.k1, method, SWEEP, segment.joints)
+                series[method] = {"perimeter_ratio": found.perimeter_ratio, "area_ratio": found.area_ratio,
+                                  "edge_error": found.edge_error, "angle_error": found.angle_error}
+                crossing[method] = np.array([c is not None for c in found.crossings])
+            m, n = segment.counts
+            panels.append(_MPanel(
+                title=f"{shape.name}, segment {index} ({segment.start:g}–{segment.end:g} s)",
+                subtitle=f"{m} and {n} vertices, {len(segment.k0)} after balancing "
+                         f"({scene.balance_of(shape)}); t within the segment, before easing",
+                t=SWEEP, series=series, crossing=crossing))
+    return panels
+
+
+def metrics_png(scene: Scene, methods: Sequence[str]) -> NDArray[np.uint8]:
+    """The charts of :func:`metric_panels`: straight RGBA ``(H, W, 4)``."""
+    from ..raster.plots.metric_plot import metrics_picture
+
+    return metrics_picture(metric_panels(scene, methods))
+
+
+def write_metric_plot(scene: Scene, methods: Sequence[str], target: Path) -> Path:
+    """Draw the charts and write them to ``target`` as PNG, atomically."""
+    from ..encode.images import write_png
+
+    return write_png(metrics_png(scene, methods), target, "the charts")

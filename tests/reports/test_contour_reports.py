@@ -81,3 +81,30 @@ def test_stats_measures_each_closed_contour(cli, ring: Path) -> None:
     assert [(e["name"], e.get("contour")) for e in entries] == [("ring", 0), ("ring", 1)]
     outer = entries[0]["methods"]["linear"]
     assert outer["perimeter_keys"] == [16.0, 16.0] and outer["ratio"] == [pytest.approx(1.0)]  # a slide
+
+
+def test_stats_measure_a_contour_as_it_is_drawn(cli, tmp_path: Path) -> None:
+    """An off-centre hole of a shape turning a quarter: its perimeter in stats is that of the hole the
+    renderer draws (moving about the whole shape's center), not of the hole turning on its own."""
+    import json
+
+    import numpy as np
+
+    import tweenrender as tr
+
+    scene = write_scene(tmp_path, """method = "nonlinear"
+[[shape]]
+name = "plate"
+[[shape.key]]
+time = 0
+contours = [[[0, 0], [6, 0], [6, 4], [0, 4]], [[4, 1], [4, 3], [5, 3], [5, 1]]]
+[[shape.key]]
+time = 1
+contours = [[[0, 0], [0, 6], [-4, 6], [-4, 0]], [[-1, 4], [-3, 4], [-3, 5], [-1, 5]]]
+""", "plate.toml")
+    code, out, err = cli("stats", scene, "--json", "--t", "0.3")
+    assert code == 0, err
+    hole = next(e for e in json.loads(out)["shapes"] if e.get("contour") == 1)
+    drawn = tr.outlines(tr.load_scene(scene), 0.3, method="nonlinear")[1]
+    assert hole["methods"]["nonlinear"]["perimeter"][0] == pytest.approx(
+        float(np.linalg.norm(np.roll(drawn, -1, axis=0) - drawn, axis=1).sum()), rel=1e-12)

@@ -16,7 +16,7 @@ Extremes are taken over :data:`SWEEP`, 101 evenly spaced t of the segment.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
@@ -136,13 +136,20 @@ def _plain(value: object) -> object:
 
 
 def report(k0: Array, k1: Array, method: str, t: Sequence[float],
-           joints: Sequence[tuple[int, int]] = ()) -> MethodReport:
-    """Measures of ``method`` between corresponding keys ``(N, 2)`` at ``t``, extremes over :data:`SWEEP`."""
+           joints: Sequence[tuple[int, int]] = (), paths: Callable[[Array], Array] | None = None) -> MethodReport:
+    """Measures of ``method`` between corresponding keys ``(N, 2)`` at ``t``, extremes over :data:`SWEEP`.
+
+    ``paths(t (T,)) -> (T, N, 2)`` gives the inbetweens when the contour does not move on its own
+    (one of several contours of a shape, moved together); default ``interpolate(k0, k1, t, method)``.
+    """
+    if paths is None:
+        def paths(at: Array) -> Array:
+            return interpolate(k0, k1, at, method, joints)
     asked = np.asarray(t, dtype=np.float64)
     keys_perimeter = (float(perimeter(k0)), float(perimeter(k1)))
     mean = 0.5 * sum(keys_perimeter)
-    frames = interpolate(k0, k1, asked, method, joints)
-    swept = interpolate(k0, k1, SWEEP, method, joints)
+    frames = paths(asked)
+    swept = paths(SWEEP)
     swept_ratio = perimeter(swept) / mean if mean > 0 else np.ones(len(SWEEP))
     errors = edge_error(swept, k0, k1, SWEEP)
     angles = angle_error(swept, k0, k1, SWEEP)

@@ -29,7 +29,7 @@ from .methods import interpolate
 from .paint import blend_paints
 
 __all__ = ["ease", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
-           "evaluate_segment"]
+           "evaluate_segment", "pair_paths"]
 
 Array = NDArray[np.float64]
 
@@ -188,10 +188,14 @@ def segment_method(segment: Segment, method: str) -> str:
     return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed]).method
 
 
-def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
-    """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t."""
+def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
+    """Every pair's inbetweens at parameters ``t (T,)``: one ``(T, L_i, 2)`` array per pair.
+
+    The moving pairs are interpolated as one point set (one center of mass, one turn); the
+    growing, shrinking or fading ones on straight paths.
+    """
     pairs = segment.pairs
-    frames: list[Array | None] = [None] * len(pairs)  # each (T, L_i, 2)
+    frames: list[Array | None] = [None] * len(pairs)
     moving = [i for i, p in enumerate(pairs) if p.moving]
     if moving:
         k0 = np.concatenate([pairs[i].k0 for i in moving])
@@ -201,8 +205,15 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
         for i, part in zip(moving, np.split(together, cuts, axis=1)):
             frames[i] = part
     for i, pair in enumerate(pairs):
-        if frames[i] is None:  # growing or shrinking: straight paths to or from its anchor
+        if frames[i] is None:
             frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
+    return frames  # type: ignore[return-value]
+
+
+def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
+    """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t."""
+    pairs = segment.pairs
+    frames = pair_paths(segment, t, method)
     closed = tuple(p.closed for p in pairs)
     paints = blend_paints(*segment.paints, t)
     fading = any(p.fades for p in pairs)

@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 from ..core.intrinsic import closure_tweak
 from ..core.measures import SWEEP, report
 from ..core.qcurves import auto_choice
+from ..core.timeline import pair_paths
 from ..model import METHODS, Scene
-from .segments import entries
+from .segments import Entry, entries
 
 __all__ = ["stats_dict", "stats_text", "STATS_METHODS"]
 
@@ -27,7 +28,8 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
         measured_methods = tuple(methods) if methods is not None else \
             tuple(m for m in METHODS if m != "jointed" or joints)
         choice = auto_choice(pair.k0, pair.k1, joints)
-        measured = {m: report(pair.k0, pair.k1, m, t, joints).as_dict() for m in measured_methods}
+        measured = {m: report(pair.k0, pair.k1, m, t, joints, _as_drawn(entry, m)).as_dict()
+                    for m in measured_methods}
         for method, closure in _CLOSURE.items():
             if method in measured:  # how much the closing tweak changed the lengths, at worst
                 measured[method]["closure_tweak_max"] = float(closure_tweak(pair.k0, pair.k1, SWEEP, closure).max())
@@ -39,6 +41,14 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
             "methods": measured,
         })
     return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
+
+
+def _as_drawn(entry: Entry, method: str) -> Callable[[Any], Any] | None:
+    """The contour's inbetweens as drawn, when its shape has other contours moving with it."""
+    if entry.contour is None:
+        return None
+    segment, index = entry.segment, entry.contour
+    return lambda t: pair_paths(segment, t, method)[index]
 
 
 def stats_text(stats: dict[str, Any]) -> str:

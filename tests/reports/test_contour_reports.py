@@ -84,8 +84,8 @@ def test_stats_measures_each_closed_contour(cli, ring: Path) -> None:
 
 
 def test_stats_measure_a_contour_as_it_is_drawn(cli, tmp_path: Path) -> None:
-    """An off-centre hole of a shape turning a quarter: its perimeter in stats is that of the hole the
-    renderer draws (moving about the whole shape's center), not of the hole turning on its own."""
+    """An off-centre hole that grows while its shape turns a quarter: its perimeter in stats is that of
+    the hole the renderer draws (moving about the whole shape's center), not of the hole on its own."""
     import json
 
     import numpy as np
@@ -100,7 +100,7 @@ time = 0
 contours = [[[0, 0], [6, 0], [6, 4], [0, 4]], [[4, 1], [4, 3], [5, 3], [5, 1]]]
 [[shape.key]]
 time = 1
-contours = [[[0, 0], [0, 6], [-4, 6], [-4, 0]], [[-1, 4], [-3, 4], [-3, 5], [-1, 5]]]
+contours = [[[0, 0], [0, 6], [-4, 6], [-4, 0]], [[-1, 3], [-3.5, 3], [-3.5, 5.5], [-1, 5.5]]]
 """, "plate.toml")
     code, out, err = cli("stats", scene, "--json", "--t", "0.3")
     assert code == 0, err

@@ -167,3 +167,24 @@ contours = [[[0, 0], [4, 0], [4, 4], [0, 4]]]
         else:  # the hole shrinks to its centre: a square of side 2·(1 - t) units, 20 px a unit
             hole = (np.abs(img[..., :3].astype(int) - white).max(axis=-1) < 60)[20:100, 20:100].sum()
             assert hole == pytest.approx((40 * (1 - time)) ** 2, abs=4 + 160 * (1 - time)), time
+
+
+@pytest.mark.parametrize("method", ["arap", "intrinsic", "intrinsic-length"])
+def test_one_outline_methods_move_a_ring_as_one(tmp_path: Path, method: str) -> None:
+    """A plate with an off-centre hole turning a quarter, rigidly: each contour takes the method on
+    its own and goes where the shape's rigid paths put it, so the whole turns exactly."""
+    scene = tr.load_scene(write_scene(tmp_path, """[[shape]]
+name = "plate"
+[[shape.key]]
+time = 0
+contours = [[[0, 0], [6, 0], [6, 4], [0, 4]], [[4, 1], [4, 3], [5, 3], [5, 1]]]
+[[shape.key]]
+time = 1
+contours = [[[0, 0], [0, 6], [-4, 6], [-4, 0]], [[-1, 4], [-3, 4], [-3, 5], [-1, 5]]]
+""", "plate.toml"))
+    for time in (0.25, 0.5, 0.8):
+        got = tr.outlines(scene, time, method=method)
+        exact = tr.outlines(scene, time, method="rigid")
+        assert len(got) == 2
+        for a, b in zip(got, exact):
+            np.testing.assert_allclose(a, b, atol=1e-9)

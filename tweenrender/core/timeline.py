@@ -188,11 +188,17 @@ def segment_method(segment: Segment, method: str) -> str:
     return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed]).method
 
 
+_PER_OUTLINE = ("arap", "intrinsic", "intrinsic-length")
+"""Methods that work on one closed outline (a triangulation, a closed walk of edges)."""
+
+
 def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     """Every pair's inbetweens at parameters ``t (T,)``: one ``(T, L_i, 2)`` array per pair.
 
-    The moving pairs are interpolated as one point set (one center of mass, one turn); the
-    growing, shrinking or fading ones on straight paths.
+    The moving pairs are interpolated as one point set (one center of mass, one turn), except by
+    the methods of :data:`_PER_OUTLINE`, which take each closed contour on its own and place it
+    where the whole shape's rigid paths put it; the growing, shrinking or fading pairs move on
+    straight paths.
     """
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
@@ -200,10 +206,20 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     if moving:
         k0 = np.concatenate([pairs[i].k0 for i in moving])
         k1 = np.concatenate([pairs[i].k1 for i in moving])
-        together = interpolate(k0, k1, t, segment_method(segment, method), segment.joints)
         cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
-        for i, part in zip(moving, np.split(together, cuts, axis=1)):
-            frames[i] = part
+        single = len(moving) == 1 and pairs[moving[0]].closed
+        if method in _PER_OUTLINE and not single:
+            # these methods need one closed outline: each contour takes them on its own (open ones the
+            # rigid paths), and its centre follows the rigid paths of the whole shape
+            placed = np.split(interpolate(k0, k1, t, "rigid"), cuts, axis=1)
+            for i, where in zip(moving, placed):
+                pair = pairs[i]
+                own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
+                frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
+        else:
+            together = interpolate(k0, k1, t, segment_method(segment, method), segment.joints)
+            for i, part in zip(moving, np.split(together, cuts, axis=1)):
+                frames[i] = part
     for i, pair in enumerate(pairs):
         if frames[i] is None:
             frames[i] = interpolate(pair.k0, pair.k1, t, "linear")

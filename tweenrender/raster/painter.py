@@ -10,9 +10,11 @@ from ..model import Color
 from .fonts import font
 from .surface import Raster, paint_color
 
-__all__ = ["Painter"]
+__all__ = ["Painter", "INK"]
 
 _WHITE: Color = (255, 255, 255, 255)
+INK: Color = (30, 34, 45, 255)
+"""The diagrams' text and line colour."""
 
 
 class Painter:
@@ -43,6 +45,16 @@ class Painter:
         self.stroke.setColor(paint_color(color))
         self.stroke.setStrokeWidth(width * self.scale)
         self.canvas.drawCircle(float(p[0]), float(p[1]), radius * self.scale, self.stroke)
+
+    def text(self, words: str, x: float, y: float, size: float, color: Color = INK, bold: bool = False,
+             anchor: str = "left") -> None:
+        """``words`` at ``size`` (before scaling) with the baseline's left end, middle (``anchor="middle"``)
+        or right end (``"right"``) at pixel ``(x, y)``."""
+        size *= self.scale
+        if anchor != "left":
+            width = font(size, bold).measureText(words)
+            x -= width if anchor == "right" else width / 2
+        self.raster.text(words, x, y, size, color, bold)
 
     def text_width(self, words: str, size: float, bold: bool = False) -> float:
         """Pixels ``words`` take at ``size`` (before scaling)."""

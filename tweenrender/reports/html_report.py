@@ -18,6 +18,7 @@ from typing import Any, Callable, Sequence
 
 from ..errors import OptionError
 from ..model import METHODS, Scene
+from .stats import crossing_runs
 
 __all__ = ["MARKER", "report_methods", "write_report", "page"]
 
@@ -131,13 +132,7 @@ def _esc(text: Any) -> str:
 def _crossing_text(at: list[float]) -> str:
     if not at:
         return "never"
-    runs: list[list[float]] = [[at[0], at[0]]]
-    for t in at[1:]:
-        if t - runs[-1][1] <= 0.0101:
-            runs[-1][1] = t
-        else:
-            runs.append([t, t])
-    return "t = " + ", ".join(f"{a:g}" if a == b else f"{a:g}–{b:g}" for a, b in runs)
+    return "t = " + ", ".join(f"{a:g}" if a == b else f"{a:g}–{b:g}" for a, b in crossing_runs(at))
 
 
 def _table(entry: dict[str, Any]) -> str:

@@ -11,7 +11,7 @@ from ..core.timeline import pair_paths
 from ..model import METHODS, Scene
 from .segments import Entry, entries
 
-__all__ = ["stats_dict", "stats_text", "STATS_METHODS"]
+__all__ = ["stats_dict", "stats_text", "crossing_runs", "STATS_METHODS"]
 
 STATS_METHODS = tuple(m for m in METHODS if m != "jointed")
 """Every method measured on every segment; ``jointed`` too where the shape has joints."""
@@ -92,15 +92,20 @@ def stats_text(stats: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
+def crossing_runs(at: Sequence[float]) -> list[tuple[float, float]]:
+    """The swept t at which an outline crosses itself (steps of 0.01), as ``(first, last)`` runs."""
+    runs: list[list[float]] = []
+    for t in at:
+        if runs and t - runs[-1][1] <= 0.0101:
+            runs[-1][1] = t
+        else:
+            runs.append([t, t])
+    return [(a, b) for a, b in runs]
+
+
 def _crossing_words(at: list[float]) -> str:
     """``"The outline crosses itself at t = 0.51 to 1"`` or that it never does."""
     if not at:
         return "The outline never crosses itself"
-    runs: list[list[float]] = [[at[0], at[0]]]
-    for t in at[1:]:
-        if t - runs[-1][1] <= 0.0101:
-            runs[-1][1] = t
-        else:
-            runs.append([t, t])
-    words = ", ".join(f"{a:g}" if a == b else f"{a:g} to {b:g}" for a, b in runs)
+    words = ", ".join(f"{a:g}" if a == b else f"{a:g} to {b:g}" for a, b in crossing_runs(at))
     return f"The outline crosses itself at t = {words}"

@@ -18,7 +18,7 @@ import skia
 from numpy.typing import NDArray
 
 from ...model import Color
-from ..fonts import font, wrap
+from ..fonts import wrap
 from ..painter import Painter
 from ..surface import Raster, paint_color
 from .qcurve_plot import PALETTE
@@ -84,14 +84,6 @@ def _range(values: list[NDArray[np.float64]], name: str) -> tuple[float, float]:
 
 
 class _Painter(Painter):
-    def text(self, words: str, x: float, y: float, size: float, color: Color = _INK,
-             bold: bool = False, anchor: str = "left") -> None:
-        size *= self.scale
-        if anchor != "left":
-            width = font(size, bold).measureText(words)
-            x -= width if anchor == "right" else width / 2
-        self.raster.text(words, x, y, size, color, bold)
-
     def polyline(self, points: NDArray[np.float64], color: Color, width: float) -> None:
         finite = np.all(np.isfinite(points), axis=1)
         path = skia.Path()

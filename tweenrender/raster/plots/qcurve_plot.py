@@ -102,13 +102,6 @@ class _Painter(Painter):
         self.stroke.setStrokeWidth(width * self.scale)
         self.canvas.drawPath(path, self.stroke)
 
-    def text(self, words: str, x: float, y: float, size: float, color: Color = _INK,
-             bold: bool = False, anchor: str = "left") -> None:
-        size *= self.scale
-        if anchor != "left":
-            width = font(size, bold).measureText(words)
-            x -= width if anchor == "right" else width / 2
-        self.raster.text(words, x, y, size, color, bold)
 
 
 def _plot_area(p: _Painter, m: _Map, panel: QPanel, labels: bool, size: float) -> None:

@@ -17,8 +17,8 @@ from numpy.typing import NDArray
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 
-__all__ = ["FORMATS", "PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
-           "ffmpeg_command", "png_bytes"]
+__all__ = ["FORMATS", "LOSSLESS", "PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
+           "ffmpeg_command", "encoder_options", "png_bytes"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
 """Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout."""
@@ -30,6 +30,10 @@ _PIPE_BYTES = 1 << 20
 
 FORMATS = ("mp4", "webm", "gif", "png")
 
+LOSSLESS = "nut"
+"""The format of a lossless part (FFV1 in NUT, BGRA: exact frame times): a chunk of a clip whose encoder must see
+every frame at once (a GIF's palette), encoded when the parts are joined."""
+
 # Output options per container: H.264 and VP9 in yuv420p (what every player plays).
 _CODECS: dict[str, list[str]] = {
     "mp4": ["-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p",
@@ -38,6 +42,7 @@ _CODECS: dict[str, list[str]] = {
              "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"],
     "gif": ["-filter_complex", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=sierra2_4a",
             "-loop", "0", "-f", "gif"],
+    LOSSLESS: ["-c:v", "ffv1", "-pix_fmt", "bgra", "-f", "nut"],
 }
 
 
@@ -61,7 +66,7 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     ``pixel_format`` is the layout of the arrays given to ``write`` (video
     sinks; PNG frames are always straight RGBA).
     """
-    if fmt not in FORMATS:
+    if fmt not in FORMATS and fmt != LOSSLESS:
         raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
     if fmt in ("mp4", "webm") and (width % 2 or height % 2):
         raise OptionError(f"{fmt} video in yuv420p needs an even width and height, found {width}x{height}")
@@ -69,6 +74,11 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     if fmt == "png":
         return PngSequence(target, frames)
     return FFmpegVideo(fmt, target, width, height, fps, frames, pixel_format)
+
+
+def encoder_options(fmt: str) -> list[str]:
+    """ffmpeg's output options (codec, pixel format, container) for ``fmt``."""
+    return list(_CODECS[fmt])
 
 
 def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, output: str,
@@ -80,7 +90,7 @@ def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, o
         raise OptionError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)}")
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
             "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}",
-            "-i", source, "-an", *_CODECS[fmt], output]
+            "-i", source, "-an", *encoder_options(fmt), output]
 
 
 def png_bytes(rgba: NDArray[np.uint8]) -> bytes:

@@ -64,7 +64,7 @@ def connect(address: str) -> Iterator[tuple[Executor, int]]:
         try:
             if processes is not None:
                 cluster = stack.enter_context(distributed.LocalCluster(
-                    n_workers=processes, threads_per_worker=1, processes=True, dashboard_address=None))
+                    n_workers=processes, threads_per_worker=1, processes=True, dashboard_address=":0"))
                 client = stack.enter_context(distributed.Client(cluster))
             else:
                 client = stack.enter_context(distributed.Client(where, timeout=f"{_CONNECT_SECONDS}s"))

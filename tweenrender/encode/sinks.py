@@ -94,11 +94,11 @@ def x264_tuning(width: int, height: int, cpus: int | None = None) -> list[str]:
 
 def encoder_options(fmt: str, width: int = 0, height: int = 0) -> list[str]:
     """ffmpeg's output options (codec, pixel format, container) for ``fmt`` frames of ``width × height``."""
-    if fmt == "mp4" and width and height:
-        codec = _CODECS[fmt]
-        split = codec.index("-movflags")
-        return [*codec[:split], *x264_tuning(width, height), *codec[split:]]
-    return list(_CODECS[fmt])
+    codec = list(_CODECS[fmt])
+    if "libx264" in codec and width and height:
+        after = codec.index("libx264") + 1
+        return [*codec[:after], *x264_tuning(width, height), *codec[after:]]
+    return codec
 
 
 def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, output: str,

@@ -65,7 +65,6 @@ def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, ch
     target = Path(target)
     kind = part_format(fmt)
     ranges = split_range(job.frame_range, chunks)
-    total = len(job.frame_range)
     futures = [executor.submit(render_part, replace(job, frames=r), kind) for r in ranges]
     try:
         if fmt == "png":

@@ -127,3 +127,32 @@ def test_default_workers_measures_only_what_can_pay(tmp_path: Path, monkeypatch:
     assert workers.default_workers(job, "mp4", cpus=2) == 2 and measured == ["mp4"]
     assert workers.default_workers(RenderJob(job.scene, size=(320, 240)), "mp4", cpus=2) == 1
     assert workers.default_workers(job, "mp4", cpus=1) == 1 and measured == ["mp4"]
+
+
+def test_ctrl_c_stops_chunk_workers_at_once_and_leaves_nothing(tmp_path: Path) -> None:
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    # 1441 frames of 1080p in two chunks: each runs for many seconds
+    scene = write_scene(tmp_path, SQUARE.replace("time = 2\n", "time = 60\n").replace("[320, 240]", "[1920, 1080]"))
+    target = tmp_path / "out" / "clip.mp4"
+    render = subprocess.Popen([sys.executable, "-m", "tweenrender", "render", str(scene), "-o", str(target), "-q",
+                               "--workers", "2"], stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        time.sleep(4.0)  # the workers have started and are rendering their chunks
+        assert render.poll() is None
+        os.killpg(render.pid, signal.SIGINT)  # what a terminal's Ctrl-C does
+        started = time.monotonic()
+        _, err = render.communicate(timeout=60)
+        waited = time.monotonic() - started
+    finally:
+        if render.poll() is None:
+            os.killpg(render.pid, signal.SIGKILL)
+    assert render.returncode == 130 and "interrupted" in err and "Traceback" not in err
+    assert waited < 5.0  # the chunks in progress are stopped, not waited for
+    assert not target.exists() and list(target.parent.iterdir()) == []
+    leftover = subprocess.run(["pgrep", "-f", str(tmp_path)], capture_output=True, text=True).stdout.split()
+    assert leftover == []  # no ffmpeg nor worker still running on this render's files

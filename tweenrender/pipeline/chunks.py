@@ -83,16 +83,39 @@ def render_in_processes(job: RenderJob, fmt: str, target: Path, workers: int,
     from concurrent.futures import ProcessPoolExecutor
 
     from .stream import render
-    from .workers import _ignore_interrupts
 
     if workers <= 1 or fmt not in ("mp4", "webm"):
         return render(job, fmt, target, progress, workers=workers)
-    with ProcessPoolExecutor(max_workers=workers, initializer=_ignore_interrupts) as pool:
+    with ProcessPoolExecutor(max_workers=workers, initializer=_part_worker) as pool:
         try:
             return render_chunks(job, fmt, target, pool, chunks=workers, progress=progress)
         except BaseException:
+            # a chunk runs for long: stop the workers now (each aborts its part, ffmpeg included)
+            # rather than wait for their chunks to finish
+            _stop_workers(pool)
             pool.shutdown(wait=True, cancel_futures=True)
             raise
+
+
+def _part_worker() -> None:
+    """Chunk worker initializer: Ctrl-C (sent to the whole process group) is the parent's to handle;
+    SIGTERM becomes ``SystemExit``, so the part being rendered is aborted and its files removed."""
+    import signal
+    import sys
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, lambda number, frame: sys.exit(128 + number))
+
+
+def _stop_workers(pool: Any) -> None:
+    """SIGTERM to every worker process of a ``ProcessPoolExecutor``."""
+    terminate = getattr(pool, "terminate_workers", None)  # Python 3.14
+    if terminate is not None:
+        terminate()
+        return
+    for process in list((getattr(pool, "_processes", None) or {}).values()):  # earlier Pythons: no public way
+        if process.is_alive():
+            process.terminate()
 
 
 def _join_frames(job: RenderJob, target: Path, futures: list[Future[Any]], progress: Progress | None) -> Path:

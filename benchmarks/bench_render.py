@@ -1,19 +1,21 @@
 """Rendering against the encoder's own limit (run by hand, not in CI).
 
-    python benchmarks/bench_render.py [--rounds 3] [--quick]
+    python benchmarks/bench_render.py [--rounds 3] [--only ...]
 
-Prints, in one run:
+Prints, in one run, each result with the load average at the time:
 
-1. the target: ``tweenrender render`` of a busy 1080p24 scene (24 shapes of 40
-   vertices, 5 s) straight to H.264, against the same bundled ffmpeg encoding
-   the very same frames, pre-rendered to a raw RGB file, with the same settings
-   (ratio of wall times and of file sizes; the best of ``--rounds`` interleaved
-   runs each, since other work on the machine only adds time);
-2. frames/s at 720p, 1080p and 4K: drawing alone, and rendering to MP4;
-3. ``--workers 1`` against ``--workers 2`` for MP4 and PNG output;
-4. peak memory of the whole process tree (tweenrender + ffmpeg, RSS sampled
-   from /proc every 20 ms) for 5 s and 20 s clips;
-5. the machine: ``nproc``, the CPU model, the load average.
+1. the stroked, detailed scene (100 shapes x 500 vertices, 2 px outline,
+   1080p24, 5 s) and the encoder-bound busy scene (24 shapes of 40 vertices):
+   ``tweenrender render`` with workers chosen automatically and with
+   ``--workers 1``, against the same bundled ffmpeg encoding the very same
+   frames, pre-rendered to a raw RGB file, with the same settings
+   ("encode-only"); medians of ``--rounds`` interleaved runs;
+2. where a stroked frame's drawing time goes, idea by idea;
+3. peak memory of the whole process tree (tweenrender + ffmpeg, RSS of every
+   descendant sampled from /proc every 20 ms) at 1080p and 4K, and x264 with
+   today's tuning against its own defaults (time, size, memory);
+4. ``--cluster local:2`` against a local render;
+5. the machine: ``nproc``, the CPU model, Python, the load average.
 """
 
 from __future__ import annotations
@@ -33,7 +35,7 @@ ROOT = HERE.parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(HERE))
 
-from make_busy import busy_scene  # noqa: E402
+from make_busy import busy_scene, stroked_scene  # noqa: E402
 
 TWEENRENDER = [sys.executable, "-m", "tweenrender"]
 
@@ -122,83 +124,200 @@ def prerender_raw(scene: Path, raw: Path) -> tuple[int, float]:
     return count, drawing
 
 
-def target_ratio(folder: Path, rounds: int) -> None:
+def load() -> str:
+    return f"load {os.getloadavg()[0]:.2f}"
+
+
+def median(values: list[float]) -> float:
+    ordered = sorted(values)
+    middle = len(ordered) // 2
+    return ordered[middle] if len(ordered) % 2 else 0.5 * (ordered[middle - 1] + ordered[middle])
+
+
+def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
+    """Encode-only, render (auto workers) and render --workers 1 of one scene, interleaved."""
     from tweenrender.encode.sinks import ffmpeg_command
 
-    scene = write_scene(folder, 5.0, "busy.toml")
-    raw = folder / "busy.rgb"
+    scene = folder / f"{name}.toml"
+    scene.write_text(text)
+    raw = folder / f"{name}.rgb"
     frames, drawing = prerender_raw(scene, raw)
-    alone_out, render_out = folder / "alone.mp4", folder / "render.mp4"
-    alone_cmd = ffmpeg_command("mp4", 1920, 1080, 24, str(raw), str(alone_out), "rgb24")
-    render_cmd = [*TWEENRENDER, "render", str(scene), "-o", str(render_out), "-q"]
-    alone, rendered = [], []
-    for _ in range(rounds):  # interleaved, so a burst of other work hits both alike
-        alone.append(run_measured(alone_cmd))
-        rendered.append(run_measured(render_cmd))
-    a, r = min(alone), min(rendered)
-    size_a, size_r = alone_out.stat().st_size, render_out.stat().st_size
+    outputs = {key: folder / f"{name}-{key}.mp4" for key in ("alone", "auto", "one")}
+    commands = {
+        "alone": ffmpeg_command("mp4", 1920, 1080, 24, str(raw), str(outputs["alone"]), "rgb24"),
+        "auto": [*TWEENRENDER, "render", str(scene), "-o", str(outputs["auto"]), "-q"],
+        "one": [*TWEENRENDER, "render", str(scene), "-o", str(outputs["one"]), "-q", "--workers", "1"],
+    }
+    runs: dict[str, list[tuple[float, float, int, int]]] = {key: [] for key in commands}
+    loads = []
+    for _ in range(rounds):  # interleaved, so a burst of other work hits all alike
+        for key, command in commands.items():
+            runs[key].append(run_measured(command))
+        loads.append(os.getloadavg()[0])
     raw.unlink()
-    print(f"## Target: busy 1080p24 scene, 24 shapes x 40 vertices, {frames} frames, H.264 CRF 18 medium")
-    print(f"drawing alone (in-process, no encode)   {frames / drawing:7.1f} frames/s  ({1000 * drawing / frames:.1f} ms/frame)")
-    print(f"ffmpeg alone from raw RGB (best of {rounds})   {a[0]:7.2f} s wall  {a[1]:6.2f} s CPU  {frames / a[0]:6.1f} frames/s")
-    print(f"tweenrender render (best of {rounds})         {r[0]:7.2f} s wall  {r[1]:6.2f} s CPU  {frames / r[0]:6.1f} frames/s")
-    print(f"  all rounds, ffmpeg alone: {', '.join(f'{x[0]:.2f}' for x in alone)} s; "
-          f"render: {', '.join(f'{x[0]:.2f}' for x in rendered)} s")
-    print(f"time ratio render / encode-only          {r[0] / a[0]:7.3f}   (target <= 1.3)")
-    print(f"CPU ratio render / encode-only           {r[1] / a[1]:7.3f}")
-    print(f"file size: render {size_r / 1e6:.3f} MB, encode-only {size_a / 1e6:.3f} MB, ratio {size_r / size_a:.3f}"
-          "   (target <= 1.5)")
-    print()
-
-
-def frame_rates(folder: Path, quick: bool) -> None:
     from tweenrender.pipeline.job import RenderJob
-    from tweenrender.pipeline.workers import frame_stream
+    from tweenrender.pipeline.workers import default_workers, measure_cost
     from tweenrender.scenefile import load_scene
 
-    scene = write_scene(folder, 5.0, "busy.toml")
-    print("## Frames/s by size (busy scene; drawing alone in-process, and `render` to MP4 including start-up)")
-    print("| size | frames | drawing frames/s | render to MP4 frames/s |")
-    print("|---|---|---|---|")
-    for label, (w, h), count in (("720p", (1280, 720), 121), ("1080p", (1920, 1080), 121),
-                                 ("4K", (3840, 2160), 24 if quick else 48)):
-        job = RenderJob(load_scene(scene), size=(w, h), frames=range(count))
-        best = float("inf")
-        for _ in range(2):
-            start = time.perf_counter()
-            for _frame in frame_stream(job):
-                pass
-            best = min(best, time.perf_counter() - start)
-        wall = min(run_measured([*TWEENRENDER, "render", str(scene), "-o", str(folder / "size.mp4"), "-q",
-                                 "--size", f"{w}x{h}", "--frames", f"0:{count}"])[0] for _ in range(2))
-        print(f"| {label} {w}x{h} | {count} | {count / best:.1f} | {count / wall:.1f} |")
+    job = RenderJob(load_scene(scene))
+    cost = measure_cost(job, "mp4")
+    chosen = default_workers(job, "mp4", cost=cost)
+    wall = {key: median([r[0] for r in value]) for key, value in runs.items()}
+    cpu = {key: median([r[1] for r in value]) for key, value in runs.items()}
+    print(f"## {name}: {frames} frames of 1080p24, H.264 CRF 18 medium; medians of {rounds} interleaved rounds")
+    print(f"drawing alone, in-process: {1000 * drawing / frames:.1f} ms/frame; measured cost: draw "
+          f"{1000 * cost.draw:.1f} ms, encoder estimate {1000 * cost.encode:.1f} ms -> auto workers {chosen}")
+    print("| run | wall s (median) | all rounds | CPU s | peak tree MiB | ratio to encode-only |")
+    print("|---|---|---|---|---|---|")
+    for key, label in (("alone", "encode-only (ffmpeg from raw RGB)"), ("auto", "render, auto workers"),
+                       ("one", "render --workers 1")):
+        rounds_text = ", ".join(f"{r[0]:.2f}" for r in runs[key])
+        peak = max(r[2] for r in runs[key])
+        print(f"| {label} | {wall[key]:.2f} | {rounds_text} | {cpu[key]:.2f} | {peak} | {wall[key] / wall['alone']:.3f} |")
+    print(f"auto / --workers 1: {wall['auto'] / wall['one']:.3f}; file size render / encode-only: "
+          f"{outputs['auto'].stat().st_size / outputs['alone'].stat().st_size:.4f}; "
+          f"load averages after each round: {', '.join(f'{x:.2f}' for x in loads)}")
     print()
 
 
-def workers(folder: Path, quick: bool) -> None:
-    scene = write_scene(folder, 5.0, "busy.toml")
-    count = 48 if quick else 121
-    print(f"## --workers (busy 1080p scene, {count} frames, best of 2 wall seconds)")
-    print("| output | --workers 1 | --workers 2 |")
-    print("|---|---|---|")
-    for fmt, out in (("mp4", "w.mp4"), ("png", "w-frames")):
-        walls = []
-        for n in (1, 2):
-            walls.append(min(run_measured([*TWEENRENDER, "render", str(scene), "-o", str(folder / out), "-q",
-                                           "--frames", f"0:{count}", "--workers", str(n)])[0] for _ in range(2)))
-        print(f"| {fmt} | {walls[0]:.2f} s | {walls[1]:.2f} s |")
+def stroke_costs(folder: Path) -> None:
+    """Per-frame drawing time of the stroked scene, idea by idea (same polygons, same surface)."""
+    import numpy as np
+    import skia
+
+    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.raster.surface import polygon_path
+    from tweenrender.scenefile import load_scene
+
+    scene = folder / "stroked.toml"
+    scene.write_text(stroked_scene(5.0))
+    job = RenderJob(load_scene(scene))
+    frames = Frames(job, "bgra")
+    frames(0)
+    count = 12
+    composer = frames.composer
+    raster, view = composer.raster, composer.viewport
+    polygons = [frames.frame_polygons(None, i * 10) for i in range(count)]
+    paths = [[polygon_path(view.to_pixels(p)) for p in ps] for ps in polygons]
+
+    def paint(**settings: object) -> skia.Paint:
+        return skia.Paint(**{"AntiAlias": True, "Color": skia.ColorSetARGB(255, 29, 43, 80), **settings})
+
+    stroke = paint(Style=skia.Paint.kStroke_Style, StrokeWidth=2.0, StrokeJoin=skia.Paint.kRound_Join,
+                   StrokeCap=skia.Paint.kRound_Cap)
+    fill, aliased = paint(), paint(AntiAlias=False)
+    geometry = []
+    for ps in paths:
+        row = []
+        for path in ps:
+            out = skia.Path()
+            stroke.getFillPath(path, out)
+            row.append(out)
+        geometry.append(row)
+
+    def timed(draw: object, source: list = paths) -> float:
+        start = time.perf_counter()
+        for row in source:
+            raster.clear(job.scene.background)
+            for path in row:
+                draw(path)  # type: ignore[operator]
+        return 1000 * (time.perf_counter() - start) / count
+
+    def with_join(join: skia.Paint.Join) -> skia.Paint:
+        other = skia.Paint(stroke)
+        other.setStrokeJoin(join)
+        return other
+
+    miter, bevel = with_join(skia.Paint.kMiter_Join), with_join(skia.Paint.kBevel_Join)
+    both = skia.Paint(stroke)
+    both.setStyle(skia.Paint.kStrokeAndFill_Style)
+    start = time.perf_counter()
+    for ps in polygons:
+        for polygon in ps:
+            polygon_path(view.to_pixels(polygon))
+    building = 1000 * (time.perf_counter() - start) / count
+    rows = [
+        ("building the paths (to pixels, numpy -> skia.Path)", building),
+        ("fill, antialiased", timed(lambda p: raster.canvas.drawPath(p, fill))),
+        ("fill, aliased (hidden under an opaque stroke >= 2 px)", timed(lambda p: raster.canvas.drawPath(p, aliased))),
+        ("stroke, round joins (skia's stroker each frame)", timed(lambda p: raster.canvas.drawPath(p, stroke))),
+        ("stroke, miter joins", timed(lambda p: raster.canvas.drawPath(p, miter))),
+        ("stroke, bevel joins", timed(lambda p: raster.canvas.drawPath(p, bevel))),
+        ("stroke geometry only (getFillPath, no drawing)", timed(lambda p: stroke.getFillPath(p, skia.Path()))),
+        ("stroke geometry cached, filled (a cached skia.Path)", timed(lambda p: raster.canvas.drawPath(p, fill), geometry)),
+        ("fill and stroke in one pass (kStrokeAndFill, one colour)", timed(lambda p: raster.canvas.drawPath(p, both))),
+        ("fill + stroke as drawn before", timed(lambda p: (raster.canvas.drawPath(p, fill),
+                                                          raster.canvas.drawPath(p, stroke)))),
+        ("fill + stroke as drawn now (draw_path)", timed(lambda p: (raster.canvas.drawPath(p, aliased),
+                                                                    raster.canvas.drawPath(p, stroke)))),
+    ]
+    lengths = np.concatenate([np.hypot(*np.diff(view.to_pixels(p), axis=0).T) for p in polygons[0]])
+    print(f"## Where a stroked frame's drawing goes (100 shapes x 500 vertices, 2 px outline, 1080p; {load()})")
+    print(f"segments at 1080p: median {np.median(lengths):.2f} px, 5th percentile {np.percentile(lengths, 5):.2f} px "
+          f"(so little is below a pixel to thin)")
+    print("| idea | ms per frame |")
+    print("|---|---|")
+    for label, ms in rows:
+        print(f"| {label} | {ms:.1f} |")
     print()
 
 
-def memory(folder: Path, quick: bool) -> None:
-    print("## Peak memory, process tree (tweenrender + ffmpeg), 1080p24 busy scene to MP4")
-    print("| clip | frames | wall s | peak RSS, tree MiB | peak RSS, tweenrender alone MiB |")
-    print("|---|---|---|---|---|")
-    for seconds in ((5.0, 10.0) if quick else (5.0, 20.0)):
-        scene = write_scene(folder, seconds, f"busy{seconds:g}.toml")
-        wall, _, peak, own = run_measured([*TWEENRENDER, "render", str(scene), "-o", str(folder / "mem.mp4"),
-                                           "-q"])
-        print(f"| {seconds:g} s | {int(seconds * 24) + 1} | {wall:.1f} | {peak} | {own} |")
+def memory(folder: Path) -> None:
+    from tweenrender.encode.sinks import ffmpeg_command, x264_tuning
+
+    scene = folder / "busy.toml"
+    scene.write_text(busy_scene(5.0))
+    print("## Peak memory of the process tree (tweenrender + ffmpeg), busy scene to MP4, default settings")
+    print("| size | frames | wall s | peak tree MiB | tweenrender alone MiB | load |")
+    print("|---|---|---|---|---|---|")
+    for label, size, count in (("1080p", "1920x1080", 121), ("4K", "3840x2160", 48)):
+        wall, _, peak, own = run_measured([*TWEENRENDER, "render", str(scene), "-o", str(folder / "mem.mp4"), "-q",
+                                           "--size", size, "--frames", f"0:{count}"])
+        print(f"| {label} {size} | {count} | {wall:.1f} | {peak} | {own} | {load()} |")
+    print()
+    raw = folder / "busy.rgb"
+    frames, _ = prerender_raw(scene, raw)
+    print(f"## x264 tuned (threads and lookahead from the machine) vs x264's defaults, encode-only, {frames} "
+          "frames of 1080p, medians of 3 interleaved")
+    tuned = ffmpeg_command("mp4", 1920, 1080, 24, str(raw), str(folder / "tuned.mp4"), "rgb24")
+    options = x264_tuning(1920, 1080)
+    start = tuned.index(options[0])
+    plain = tuned[:start] + tuned[start + len(options):]
+    plain[-1] = str(folder / "plain.mp4")
+    results: dict[str, list[tuple[float, float, int, int]]] = {"plain": [], "tuned": []}
+    for _ in range(3):
+        results["plain"].append(run_measured(plain))
+        results["tuned"].append(run_measured(tuned))
+    raw.unlink()
+    for key, label in (("plain", "x264 defaults"), ("tuned", " ".join(options))):
+        wall = median([r[0] for r in results[key]])
+        cpu = median([r[1] for r in results[key]])
+        peak = max(r[2] for r in results[key])
+        size = (folder / f"{key}.mp4").stat().st_size
+        print(f"{label:60s} wall {wall:6.2f} s  CPU {cpu:6.2f} s  peak {peak} MiB  size {size}")
+    ratio_wall = median([r[0] for r in results["tuned"]]) / median([r[0] for r in results["plain"]])
+    ratio_size = (folder / "tuned.mp4").stat().st_size / (folder / "plain.mp4").stat().st_size
+    print(f"tuned / defaults: wall {ratio_wall:.3f}, size {ratio_size:.4f}; {load()}")
+    print()
+
+
+def cluster(folder: Path, rounds: int) -> None:
+    scene = folder / "busy.toml"
+    scene.write_text(busy_scene(5.0))
+    try:
+        import distributed  # noqa: F401
+    except ImportError:
+        print("## Cluster: skipped, dask.distributed is not installed (pip install '.[cluster]')\n")
+        return
+    local, remote = [], []
+    for _ in range(rounds):
+        local.append(run_measured([*TWEENRENDER, "render", str(scene), "-o", str(folder / "local.mp4"), "-q"])[0])
+        remote.append(run_measured([*TWEENRENDER, "render", str(scene), "-o", str(folder / "cluster.mp4"), "-q",
+                                    "--cluster", "local:2"])[0])
+    print(f"## Cluster: busy scene, 121 frames of 1080p to MP4, medians of {rounds} interleaved ({load()})")
+    print(f"local render (auto workers)           {median(local):6.2f} s   ({', '.join(f'{x:.2f}' for x in local)})")
+    print(f"--cluster local:2 (start-up included)  {median(remote):6.2f} s   ({', '.join(f'{x:.2f}' for x in remote)})")
+    print(f"ratio cluster / local: {median(remote) / median(local):.3f}")
     print()
 
 
@@ -206,28 +325,29 @@ def machine() -> None:
     model = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
                   if line.startswith("model name")), platform.processor())
     cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
-    load = ", ".join(f"{x:.2f}" for x in os.getloadavg())
-    print(f"## Machine: nproc {cpus}, {model}, Python {platform.python_version()}, load average {load}")
+    average = ", ".join(f"{x:.2f}" for x in os.getloadavg())
+    print(f"## Machine: nproc {cpus}, {model}, Python {platform.python_version()}, load average {average}")
     print()
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--rounds", type=int, default=3, help="interleaved runs of the target comparison")
-    parser.add_argument("--quick", action="store_true", help="fewer frames for 4K, workers and memory")
-    parser.add_argument("--only", choices=("target", "sizes", "workers", "memory"))
+    parser.add_argument("--rounds", type=int, default=3, help="interleaved runs of each comparison")
+    parser.add_argument("--only", choices=("stroked", "busy", "drawing", "memory", "cluster"))
     args = parser.parse_args()
     machine()
     with tempfile.TemporaryDirectory(prefix="tweenrender-bench-") as name:
         folder = Path(name)
-        if args.only in (None, "target"):
-            target_ratio(folder, args.rounds)
-        if args.only in (None, "sizes"):
-            frame_rates(folder, args.quick)
-        if args.only in (None, "workers"):
-            workers(folder, args.quick)
+        if args.only in (None, "stroked"):
+            against_encoder(folder, "stroked", stroked_scene(5.0), args.rounds)
+        if args.only in (None, "busy"):
+            against_encoder(folder, "busy", busy_scene(5.0), args.rounds)
+        if args.only in (None, "drawing"):
+            stroke_costs(folder)
         if args.only in (None, "memory"):
-            memory(folder, args.quick)
+            memory(folder)
+        if args.only in (None, "cluster"):
+            cluster(folder, args.rounds)
     machine()
 
 

@@ -111,8 +111,11 @@ def test_concat_refuses_what_it_cannot_join(tmp_path: Path) -> None:
     from tweenrender.encode import concat
     from tweenrender.errors import OptionError
 
-    with pytest.raises(OptionError, match="mp4 or webm"):
-        concat([tmp_path / "a.gif"], tmp_path / "out.gif")
+    with pytest.raises(OptionError, match="mp4, webm, gif only"):
+        concat([tmp_path / "a.png"], tmp_path / "out.png")
+    (tmp_path / "a.mp4").write_bytes(b"")
+    with pytest.raises(OptionError, match="lossless .nut parts"):
+        concat([tmp_path / "a.mp4"], tmp_path / "out.gif")
     with pytest.raises(OptionError, match="does not exist"):
         concat([tmp_path / "missing.mp4"], tmp_path / "out.mp4")
 

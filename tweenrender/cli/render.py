@@ -39,8 +39,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_balance_flag(p)
     max_frames_flag(p)
     p.add_argument("--workers", type=count(1, 256, "--workers"), metavar="N",
-                   help="processes drawing frames (default: 1 for video, whose encoder is the limit; "
-                        "one per core for PNG frames of more than a second or so of 1080p)")
+                   help="processes drawing frames (default: chosen from the measured cost of a frame against "
+                        "the encoder's: 1 when the encoder is the limit)")
+    p.add_argument("--cluster", metavar="ADDRESS",
+                   help="render chunks on a dask.distributed cluster: a scheduler address (tcp://host:8786) "
+                        "or local:N for N local processes; needs pip install \"tweenrender[cluster]\"")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(run=run)
 
@@ -58,6 +61,8 @@ def run(args: argparse.Namespace) -> int:
     from ..pipeline.library import load_scene, output_format, write
     from .progress import ProgressBar
 
+    if args.workers is not None and args.cluster is not None:
+        raise UsageError("--workers and --cluster do not go together: the cluster's workers draw the frames")
     if args.method and args.compare is not None:
         raise UsageError("--method and --compare do not go together: list the methods in --compare")
     compare = None if args.compare is None else (methods(args.compare) if args.compare else True)
@@ -73,5 +78,5 @@ def run(args: argparse.Namespace) -> int:
     print(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
                 fps=args.fps, frames=frames, background=args.background, paths=args.paths, onion=args.onion,
                 strip=args.strip, cost=args.cost, align=args.align, equal_counts=args.equal_counts,
-                balance=args.balance, workers=args.workers, progress=bar))
+                balance=args.balance, workers=args.workers, cluster=args.cluster, progress=bar))
     return 0

@@ -1,4 +1,5 @@
-"""Join video parts rendered separately (``--frames`` chunks) into one file, without re-encoding."""
+"""Join video parts rendered separately (``--frames`` chunks) into one file: MP4 and WebM parts by
+stream copy, lossless parts into a GIF (whose palette must see every frame)."""
 
 from __future__ import annotations
 
@@ -12,45 +13,62 @@ from .atomic import commit_file, discard, prepare_folder, sibling
 
 __all__ = ["concat", "CONCAT_FORMATS"]
 
-CONCAT_FORMATS = ("mp4", "webm")
-"""Containers whose parts join by stream copy (every part starts on a key frame)."""
+CONCAT_FORMATS = ("mp4", "webm", "gif")
+"""Targets parts can be joined into: MP4 and WebM by stream copy (every part starts on a key frame),
+GIF by encoding lossless parts (``encode.sinks.LOSSLESS``) once, exactly as a single render would."""
 
 
-def _listed(path: Path) -> str:
-    """One line of ffmpeg's concat list; a quote in the path is closed, escaped and reopened."""
+def _listed(path: Path, seconds: float | None = None) -> str:
+    """One entry of ffmpeg's concat list (with its duration, if given); a quote in the path is closed,
+    escaped and reopened."""
     text = str(path.resolve()).replace("'", "'\\''")
-    return f"file '{text}'\n"
+    return f"file '{text}'\n" + (f"duration {seconds!r}\n" if seconds is not None else "")
 
 
-def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None = None) -> Path:
+def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None = None,
+           fmt: str | None = None, rate: float | None = None, alpha: bool = False) -> Path:
     """Join ``parts`` (same codec, size and rate, in order) into ``target`` with ffmpeg's concat demuxer.
 
-    Streams are copied (``-c copy``): no re-encode, so it takes about as long as
-    copying the files. ``expected`` is the total frame count to check, if known.
+    MP4 and WebM streams are copied (``-c copy``): no re-encode, so it takes about as
+    long as copying the files. A GIF is encoded from lossless parts with the same
+    palette filter as a single render, so it comes out the same, byte for byte.
+    ``expected`` is the total frame count to check, if known; ``fmt`` the target's
+    format when its name does not tell it; ``rate`` the frame rate, which a GIF
+    needs (each part lasts exactly its frames, so no frame overlaps the next part's);
+    ``alpha`` keeps a GIF's transparency (its parts carry it).
     The target changes only if the joined file was written and reads back.
     """
     import imageio_ffmpeg
 
-    from .sinks import probe_video
+    from .sinks import LOSSLESS, encoder_options, probe_video
 
     target = Path(target)
     paths = [Path(p) for p in parts]
-    fmt = target.suffix.lower().lstrip(".")
+    fmt = fmt or target.suffix.lower().lstrip(".")
     if fmt not in CONCAT_FORMATS:
-        raise OptionError(f"{target}: can join {' or '.join(CONCAT_FORMATS)} parts only, not .{fmt}")
+        raise OptionError(f"{target}: can join parts into {', '.join(CONCAT_FORMATS)} only, not .{fmt}")
     if not paths:
         raise OptionError(f"{target}: no parts to join")
     for path in paths:
         if not path.is_file():
             raise OptionError(f"{path}: part to join does not exist")
+        if fmt == "gif" and path.suffix.lower() != f".{LOSSLESS}":
+            raise OptionError(f"{path}: a GIF is joined from lossless .{LOSSLESS} parts, not {path.suffix or 'this'}")
     prepare_folder(target)
     temporary = sibling(target, "." + fmt)
+    seconds: list[float | None] = [None] * len(paths)
+    if fmt == "gif":
+        if rate is None:
+            raise OptionError(f"{target}: joining GIF parts needs the frame rate")
+        seconds = [_frames_of(path) / rate for path in paths]
     with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as listing:
-        listing.writelines(_listed(p) for p in paths)
-    faststart = ["-movflags", "+faststart"] if fmt == "mp4" else []
+        listing.writelines(_listed(p, s) for p, s in zip(paths, seconds))
+    if fmt == "gif":
+        output = encoder_options("gif", alpha=alpha)
+    else:
+        output = ["-map", "0:v", "-c", "copy", *(["-movflags", "+faststart"] if fmt == "mp4" else []), "-f", fmt]
     command = [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
-               "-f", "concat", "-safe", "0", "-i", listing.name, "-map", "0:v", "-c", "copy", *faststart,
-               "-f", fmt, str(temporary)]
+               "-f", "concat", "-safe", "0", "-i", listing.name, *output, str(temporary)]
     try:
         done = subprocess.run(command, capture_output=True, text=True)
         if done.returncode != 0:
@@ -69,3 +87,12 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
     finally:
         Path(listing.name).unlink(missing_ok=True)
     return target
+
+
+def _frames_of(part: Path) -> int:
+    from .sinks import probe_video
+
+    try:
+        return probe_video(part)[0]
+    except ValueError as error:
+        raise EncodeError(f"{part}: the part cannot be read ({error})") from None

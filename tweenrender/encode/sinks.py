@@ -4,6 +4,7 @@ earlier output untouched."""
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import sys
@@ -17,8 +18,8 @@ from numpy.typing import NDArray
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 
-__all__ = ["FORMATS", "ALPHA_FORMATS", "PIXEL_FORMATS", "check_alpha", "codec_options", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
-           "ffmpeg_command", "png_bytes"]
+__all__ = ["FORMATS", "ALPHA_FORMATS", "LOSSLESS", "PIXEL_FORMATS", "check_alpha", "Sink", "open_sink", "PngSequence",
+           "FFmpegVideo", "probe_video", "ffmpeg_command", "encoder_options", "x264_tuning", "png_bytes"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
 """Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout."""
@@ -29,8 +30,13 @@ PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
 _PIPE_BYTES = 1 << 20
 
 FORMATS = ("mp4", "webm", "mov", "gif", "png")
-ALPHA_FORMATS = ("webm", "mov", "gif", "png")
-"""Formats that keep a transparent background: VP9 with alpha, ProRes 4444, GIF's transparent index, PNG."""
+ALPHA_FORMATS = ("webm", "mov", "gif", "png", "nut")
+"""Formats that keep a transparent background: VP9 with alpha, ProRes 4444, GIF's transparent index, PNG
+(and the lossless parts of a GIF, FFV1 in BGRA)."""
+
+LOSSLESS = "nut"
+"""The format of a lossless part (FFV1 in NUT, BGRA: exact frame times): a chunk of a clip whose encoder must see
+every frame at once (a GIF's palette), encoded when the parts are joined."""
 
 # Output options per container: H.264 and VP9 in yuv420p (what every player plays).
 _CODECS: dict[str, list[str]] = {
@@ -41,6 +47,7 @@ _CODECS: dict[str, list[str]] = {
     "mov": ["-c:v", "prores_ks", "-profile:v", "4444", "-vendor", "apl0", "-pix_fmt", "yuv444p10le", "-f", "mov"],
     "gif": ["-filter_complex", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=sierra2_4a",
             "-loop", "0", "-f", "gif"],
+    LOSSLESS: ["-c:v", "ffv1", "-pix_fmt", "bgra", "-f", "nut"],
 }
 # With a transparent background: the same encoders keeping alpha.
 _ALPHA: dict[str, dict[str, str]] = {
@@ -49,14 +56,6 @@ _ALPHA: dict[str, dict[str, str]] = {
     "gif": {"palettegen=stats_mode=diff": "palettegen=stats_mode=diff:reserve_transparent=1",
             "paletteuse=dither=sierra2_4a": "paletteuse=dither=sierra2_4a:alpha_threshold=128"},
 }
-
-
-def codec_options(fmt: str, alpha: bool = False) -> list[str]:
-    """ffmpeg's output options for ``fmt``; with ``alpha``, those that keep transparency."""
-    options = list(_CODECS[fmt])
-    for old, new in (_ALPHA.get(fmt, {}).items() if alpha else ()):
-        options = [option.replace(old, new) for option in options]
-    return options
 
 
 class Sink(Protocol):
@@ -80,7 +79,7 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     sinks; PNG frames are always straight RGBA). ``alpha`` keeps transparency
     (formats of :data:`ALPHA_FORMATS` only).
     """
-    if fmt not in FORMATS:
+    if fmt not in FORMATS and fmt != LOSSLESS:
         raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
     check_alpha(fmt, alpha)
     if fmt in ("mp4", "webm") and (width % 2 or height % 2):
@@ -98,6 +97,33 @@ def check_alpha(fmt: str, alpha: bool) -> None:
                           ".mov (ProRes 4444), .gif or PNG frames, or an opaque background")
 
 
+def x264_tuning(width: int, height: int, cpus: int | None = None) -> list[str]:
+    """x264's threads and lookahead for ``width × height`` frames on this machine (``cpus`` cores).
+
+    x264's defaults (1.5 frame threads per core, 40 frames of lookahead, a
+    lookahead thread buffering more) hold about 575 MiB at 1080p and 1.6 GiB at
+    4K. One thread per core and 10 frames of lookahead (5 above 1080p) encode
+    as fast for a file within 0.3 %, in about 330 MiB at 1080p
+    (benchmarks/bench_render.py measures both).
+    """
+    if cpus is None:
+        cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    lookahead = 10 if width * height <= 2_100_000 else 5
+    return ["-threads", str(max(1, min(cpus, 16))), "-x264-params", f"rc-lookahead={lookahead}:sync-lookahead=0"]
+
+
+def encoder_options(fmt: str, width: int = 0, height: int = 0, alpha: bool = False) -> list[str]:
+    """ffmpeg's output options (codec, pixel format, container) for ``fmt`` frames of ``width × height``;
+    with ``alpha``, those that keep transparency."""
+    codec = list(_CODECS[fmt])
+    for old, new in (_ALPHA.get(fmt, {}).items() if alpha else ()):
+        codec = [option.replace(old, new) for option in codec]
+    if "libx264" in codec and width and height:
+        after = codec.index("libx264") + 1
+        return [*codec[:after], *x264_tuning(width, height), *codec[after:]]
+    return codec
+
+
 def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, output: str,
                    pixel_format: str = "rgba", alpha: bool = False) -> list[str]:
     """The bundled ffmpeg's command line that encodes raw ``pixel_format`` frames from ``source`` as ``fmt``."""
@@ -107,7 +133,7 @@ def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, o
         raise OptionError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)}")
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
             "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}",
-            "-i", source, "-an", *codec_options(fmt, alpha), output]
+            "-i", source, "-an", *encoder_options(fmt, width, height, alpha), output]
 
 
 def png_bytes(rgba: NDArray[np.uint8]) -> bytes:

@@ -1,60 +1,167 @@
-"""Chunks of a clip rendered apart (on any ``concurrent.futures.Executor``) and joined without re-encoding."""
+"""Chunks of a clip rendered apart (on any ``concurrent.futures.Executor``) and joined into one output.
+
+Each chunk is a ``frames`` range of the job, rendered where the executor runs
+it; only its encoded result travels back:
+
+- MP4, WebM: a video part, joined by stream copy (each part starts on a key frame);
+- GIF: a lossless part (FFV1), the whole GIF encoded once at the join, so its
+  palette sees every frame and the file is the single render's, byte for byte;
+- PNG: the frames' PNG bytes, written in order into the target folder.
+"""
 
 from __future__ import annotations
 
 import tempfile
-from concurrent.futures import Executor
+from concurrent.futures import Executor, Future
 from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
 from ..errors import EncodeError, OptionError
-from .job import RenderJob
-from .workers import split_range
+from .job import Progress, RenderJob
+from .workers import draw_frame, split_range
 
-__all__ = ["render_part", "render_chunks"]
+__all__ = ["render_part", "render_chunks", "part_format", "render_in_processes"]
 
 
-def render_part(job: RenderJob, fmt: str) -> bytes:
-    """Render ``job`` (typically a ``frames`` chunk) to a ``fmt`` file where this runs; its bytes.
+def part_format(fmt: str) -> str:
+    """The format a chunk of a ``fmt`` output is rendered in."""
+    from ..encode.sinks import FORMATS, LOSSLESS
 
-    Meant to run on an executor's worker: only the encoded part travels back.
+    if fmt not in FORMATS:
+        raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
+    return LOSSLESS if fmt == "gif" else fmt
+
+
+def render_part(job: RenderJob, fmt: str) -> Any:
+    """Render ``job`` (typically a ``frames`` chunk) for a ``fmt`` output where this runs.
+
+    Returns a video part's bytes (``fmt`` mp4 or webm, or the lossless format of
+    a GIF's part), or for ``fmt`` png the list of each frame's PNG bytes. Meant
+    to run on an executor's worker, whose files it does not keep.
     """
+    from ..encode.sinks import png_bytes
+    from .job import Frames
     from .stream import render
 
+    if fmt == "png":
+        frames = Frames(job)
+        return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
     with tempfile.TemporaryDirectory(prefix="tweenrender-part-") as folder:
         path = Path(folder) / f"part.{fmt}"
         render(job, fmt, path)
         return path.read_bytes()
 
 
-def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, chunks: int) -> Path:
-    """Render ``job`` as ``chunks`` parts on ``executor`` and join them into ``target`` without re-encoding.
+def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, chunks: int,
+                  progress: Progress | None = None) -> Path:
+    """Render ``job`` as ``chunks`` parts on ``executor`` and join them into ``target`` as ``fmt``.
 
-    Parts are written beside ``target`` as hidden temporaries and removed after
-    the join; ``target`` changes only if every part and the join succeeded.
+    Parts are submitted at once and joined in order; ``progress`` hears of
+    each part's frames as it arrives. Video parts are written beside
+    ``target`` as hidden temporaries and removed after the join; ``target``
+    changes only if every part and the join succeeded.
     """
-    from ..encode.atomic import discard, prepare_folder, sibling
-    from ..encode.concat import CONCAT_FORMATS, concat
-
-    if fmt not in CONCAT_FORMATS:
-        raise OptionError(f"chunks can be joined for {' or '.join(CONCAT_FORMATS)} only, not {fmt}")
     target = Path(target)
-    prepare_folder(target)
+    kind = part_format(fmt)
     ranges = split_range(job.frame_range, chunks)
-    futures = [executor.submit(render_part, replace(job, frames=r), fmt) for r in ranges]
-    parts: list[Path] = []
+    futures = [executor.submit(render_part, replace(job, frames=r), kind) for r in ranges]
     try:
-        for future in futures:
-            part = sibling(target, f".{len(parts):04d}.{fmt}")
-            parts.append(part)
-            try:
-                part.write_bytes(future.result())
-            except OSError as error:
-                raise EncodeError(f"{target}: cannot write part {len(parts)} beside it ({error.strerror or error})") \
-                    from None
-        return concat(parts, target, expected=len(job.frame_range))
+        if fmt == "png":
+            return _join_frames(job, target, futures, progress)
+        return _join_videos(job, fmt, kind, target, futures, [len(r) for r in ranges], progress)
     finally:
         for future in futures:
             future.cancel()
+
+
+def render_in_processes(job: RenderJob, fmt: str, target: Path, workers: int,
+                        progress: Progress | None = None) -> Path:
+    """Render ``job`` with ``workers`` processes: an MP4 or WebM as that many chunks, each drawn and
+    encoded by a process of its own and joined by stream copy (no frame travels between processes);
+    PNG frames and GIFs as frames drawn in the processes and written here in order."""
+    from concurrent.futures import ProcessPoolExecutor
+
+    from .stream import render
+
+    if workers <= 1 or fmt not in ("mp4", "webm"):
+        return render(job, fmt, target, progress, workers=workers)
+    with ProcessPoolExecutor(max_workers=workers, initializer=_part_worker) as pool:
+        try:
+            return render_chunks(job, fmt, target, pool, chunks=workers, progress=progress)
+        except BaseException:
+            # a chunk runs for long: stop the workers now (each aborts its part, ffmpeg included)
+            # rather than wait for their chunks to finish
+            _stop_workers(pool)
+            pool.shutdown(wait=True, cancel_futures=True)
+            raise
+
+
+def _part_worker() -> None:
+    """Chunk worker initializer: Ctrl-C (sent to the whole process group) is the parent's to handle;
+    SIGTERM becomes ``SystemExit``, so the part being rendered is aborted and its files removed."""
+    import signal
+    import sys
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, lambda number, frame: sys.exit(128 + number))
+
+
+def _stop_workers(pool: Any) -> None:
+    """SIGTERM to every worker process of a ``ProcessPoolExecutor``."""
+    terminate = getattr(pool, "terminate_workers", None)  # Python 3.14
+    if terminate is not None:
+        terminate()
+        return
+    for process in list((getattr(pool, "_processes", None) or {}).values()):  # earlier Pythons: no public way
+        if process.is_alive():
+            process.terminate()
+
+
+def _join_frames(job: RenderJob, target: Path, futures: list[Future[Any]], progress: Progress | None) -> Path:
+    from ..encode import open_sink
+
+    width, height = job.frame_size
+    total = len(job.frame_range)
+    sink = open_sink("png", target, width, height, job.rate, total)
+    try:
+        done = 0
+        for future in futures:
+            for data in future.result():
+                sink.write_encoded(data)  # type: ignore[attr-defined]
+                done += 1
+                if progress is not None:
+                    progress(done, total)
+        return sink.close()
+    except BaseException:
+        sink.abort()
+        raise
+
+
+def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: list[Future[Any]],
+                 sizes: list[int], progress: Progress | None) -> Path:
+    from ..encode.atomic import discard, os_reason, prepare_folder, sibling
+    from ..encode.concat import concat
+
+    prepare_folder(target)
+    total = len(job.frame_range)
+    parts: list[Path] = []
+    try:
+        done = 0
+        for future, size in zip(futures, sizes):
+            part = sibling(target, f".{len(parts):04d}.{kind}")
+            parts.append(part)
+            data = future.result()
+            try:
+                part.write_bytes(data)
+            except OSError as error:
+                raise EncodeError(f"{target}: cannot write part {len(parts)} beside it ({os_reason(error)})") \
+                    from None
+            done += size
+            if progress is not None:
+                progress(done, total)
+        return concat(parts, target, expected=total, fmt=fmt, rate=job.rate,
+                      alpha=job.scene.background[3] < 255)
+    finally:
         for part in parts:
             discard(part)

@@ -94,7 +94,8 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
           size: tuple[int, int] | None = None, fps: float | None = None, frames: str | range | None = None,
           background: str | Color | None = None, balance: str | None = None, paths: bool = False,
           onion: int = 0, strip: bool = False, cost: str | None = None, align: str | None = None,
-          equal_counts: str | None = None, workers: int | None = None, progress: Progress | None = None) -> Path:
+          equal_counts: str | None = None, workers: int | None = None, cluster: str | None = None,
+          progress: Progress | None = None) -> Path:
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
     The format is ``format`` or ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name
@@ -102,11 +103,14 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     transparent, kept by WebM, MOV, GIF and PNG; refused for MP4). ``compare`` lists the methods of side-by-side labelled panels
     (``True``: the scene's ``compare`` list); ``size`` is each panel's. ``frames`` picks part of the
     clip (``"A:B"`` or a ``range``). ``cost``, ``align`` and ``equal_counts`` override the scene's
-    ``[correspondence]``; ``balance`` (``"copies"`` or ``"spread"``) overrides every shape's. ``workers`` is the number of drawing processes (default: chosen for the
-    format and size). ``progress`` is called with ``(done, total)`` frames. The target changes only
-    when the whole output was written and checked.
+    ``[correspondence]``; ``balance`` (``"copies"`` or ``"spread"``) overrides every shape's.
+    ``workers`` is the number of drawing processes (default: chosen from the measured cost of a
+    frame against the encoder's). ``cluster`` renders on a dask.distributed cluster instead: a
+    scheduler's address, or ``"local:N"`` for a local cluster of N processes (needs the ``cluster``
+    extra). ``progress`` is called with ``(done, total)`` frames. The target changes only when the
+    whole output was written and checked.
     """
-    from .stream import render
+    from .chunks import render_in_processes
     from .workers import default_workers
 
     if method is not None and compare not in (None, False):
@@ -129,11 +133,17 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     from ..encode.sinks import check_alpha
 
     check_alpha(fmt, job.scene.background[3] < 255)
+    if cluster is not None:
+        if workers is not None:
+            raise OptionError("workers and cluster do not go together: the cluster's workers draw the frames")
+        from .cluster import render_on_cluster
+
+        return render_on_cluster(job, fmt, target, cluster, progress)
     if workers is None:
         workers = default_workers(job, fmt)
     elif workers < 1:
         raise OptionError(f"workers: expected 1 or more processes, found {workers}")
-    return render(job, fmt, target, progress, workers=workers)
+    return render_in_processes(job, fmt, target, workers, progress)
 
 
 def output_format(target: Path, fmt: str | None = None) -> str:

@@ -21,9 +21,11 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     """Render ``job`` into ``target`` as ``fmt``; the target changes only if everything succeeded.
 
     Frames stream one at a time into the sink, so memory does not grow with the
-    clip. They are drawn here, or on ``executor`` (any
-    ``concurrent.futures.Executor``) or ``workers`` processes, and written in
-    order; PNG frames drawn elsewhere are compressed there too.
+    clip. They are drawn here, on ``executor`` (any
+    ``concurrent.futures.Executor``, whose capacity ``workers`` gives), or on
+    ``workers`` processes started for the occasion, and written in order; PNG
+    frames drawn elsewhere are compressed there too.
+    (:func:`.chunks.render_in_processes` renders a video in chunks instead.)
     """
     from ..encode import open_sink
     from ..encode.sinks import png_bytes

@@ -16,6 +16,7 @@ import os
 import uuid
 from collections import deque
 from concurrent.futures import Executor, Future
+from dataclasses import dataclass
 from typing import Any, Callable, Iterator, Sequence
 
 import numpy as np
@@ -24,7 +25,8 @@ from numpy.typing import NDArray
 from ..errors import RenderError
 from .job import Frames, RenderJob
 
-__all__ = ["frame_stream", "draw_frame", "default_workers", "split_range"]
+__all__ = ["frame_stream", "draw_frame", "default_workers", "split_range", "Cost", "measure_cost",
+           "predicted_seconds", "choose_workers"]
 
 # Below about this many pixels per clip, starting worker processes (≈0.3 s
 # each, importing skia) costs more than the work they would share.
@@ -42,22 +44,96 @@ def draw_frame(frames: Frames, index: int) -> NDArray[np.uint8]:
         raise RenderError(f"frame {index}: {error}") from error
 
 
-def default_workers(job: RenderJob, fmt: str, cpus: int | None = None) -> int:
-    """How many processes to draw ``job``'s frames for ``fmt``: 1 unless it pays.
+# The encoder's CPU seconds per megapixel of frame: the bundled ffmpeg with this package's settings,
+# measured on a 2-core Xeon (benchmarks/bench_render.py). Drawing is timed on the machine at hand;
+# these put the encoder on the other side of the balance.
+_ENCODER_SECONDS_PER_MEGAPIXEL = {"mp4": 0.052, "webm": 0.114, "gif": 0.049}
+_CONTENTION = 1.25  # a lone drawing process, sharing the cores with the encoder's threads, draws this much slower
+_START_SECONDS = 0.5  # one more worker process: starting Python, importing skia, building the job's frames
+_TRANSFER_SECONDS_PER_BYTE = 4e-9  # a raw frame pickled back from a worker process
+_GAIN = 0.9  # more processes only when they are predicted to take at most this share of one's time
 
-    Video encoders (x264, VP9, ffmpeg's GIF palette) already keep every core
-    busy and drawing a frame costs a fraction of encoding it, so a video gets
-    one drawing process whatever its size. PNG frames are compressed where they
-    are drawn, which costs several times the drawing, so a PNG render of more
-    than a second or so of 1080p gets one process per core (at most 8).
+
+@dataclass(frozen=True)
+class Cost:
+    """What one frame of a job costs: ``draw`` seconds to draw it in one process, ``encode`` CPU
+    seconds to encode it (the video encoder's estimate, or PNG compression timed)."""
+
+    draw: float
+    encode: float
+
+
+def measure_cost(job: RenderJob, fmt: str) -> Cost:
+    """Time drawing one frame of ``job`` (its middle one, drawn twice, the second timed: the first
+    builds the job's tracks and surface) and estimate the encoder's share for ``fmt``."""
+    import time
+
+    from ..encode.sinks import png_bytes
+
+    frames = Frames(job)
+    middle = job.frame_range[len(job.frame_range) // 2]
+    draw_frame(frames, middle)
+    start = time.perf_counter()
+    picture = draw_frame(frames, middle)
+    draw = time.perf_counter() - start
+    if fmt == "png":
+        start = time.perf_counter()
+        png_bytes(picture)
+        return Cost(draw, time.perf_counter() - start)
+    width, height = job.frame_size
+    return Cost(draw, _ENCODER_SECONDS_PER_MEGAPIXEL.get(fmt, 0.05) * width * height / 1e6)
+
+
+def predicted_seconds(cost: Cost, fmt: str, frames: int, frame_bytes: int, processes: int, cpus: int) -> float:
+    """Predicted wall time of rendering ``frames`` frames with ``processes`` drawing processes on ``cpus`` cores.
+
+    PNG: each process draws and compresses, so the work divides among the
+    processes (up to the cores). Video: one process draws while the encoder
+    runs, so a frame takes the longer of drawing it (slowed by sharing the
+    cores) and the cores' time for all the work; more processes divide the
+    drawing (MP4 and WebM as chunks with encoders of their own, a GIF as
+    frames sent back to its one encoder, which costs a copy each).
+    """
+    start = _START_SECONDS * processes if processes > 1 else 0.0
+    if fmt == "png":
+        return frames * (cost.draw + cost.encode) / min(processes, cpus) + start
+    shared = cost.draw + cost.encode
+    if processes > 1 and fmt == "gif":
+        shared += _TRANSFER_SECONDS_PER_BYTE * frame_bytes
+    per_frame = max(cost.draw * _CONTENTION / processes, shared / cpus)
+    return frames * per_frame + start
+
+
+def choose_workers(cost: Cost, fmt: str, frames: int, frame_bytes: int, cpus: int) -> int:
+    """The number of drawing processes predicted fastest (at most ``cpus`` and 8), or 1 unless more
+    save at least a tenth of the time."""
+    alone = predicted_seconds(cost, fmt, frames, frame_bytes, 1, cpus)
+    best, best_seconds = 1, alone
+    for processes in range(2, min(cpus, 8) + 1):
+        seconds = predicted_seconds(cost, fmt, frames, frame_bytes, processes, cpus)
+        if seconds < best_seconds:
+            best, best_seconds = processes, seconds
+    return best if best_seconds <= _GAIN * alone else 1
+
+
+def default_workers(job: RenderJob, fmt: str, cpus: int | None = None, cost: Cost | None = None) -> int:
+    """How many processes to draw ``job``'s frames for ``fmt``: 1 unless the measured cost says more pay.
+
+    The cost of a frame is measured once (:func:`measure_cost`) and weighed by
+    :func:`choose_workers`: an encoder-bound video keeps one process (more
+    would only compete with the encoder for the cores), a detailed, stroked
+    scene whose drawing is the limit gets more, and PNG frames, compressed
+    where they are drawn, one per core. Clips too short to repay starting
+    processes are not measured.
     """
     if cpus is None:
         cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     width, height = job.frame_size
-    pixels = width * height * len(job.frame_range)
-    if fmt != "png" or cpus < 2 or pixels < _MIN_PARALLEL_PIXELS:
+    frames = len(job.frame_range)
+    if cpus < 2 or width * height * frames < _MIN_PARALLEL_PIXELS:
         return 1
-    return min(cpus, 8)
+    cost = cost or measure_cost(job, fmt)
+    return choose_workers(cost, fmt, frames, width * height * 4, cpus)
 
 
 def split_range(frames: range, parts: int) -> list[range]:
@@ -101,7 +177,8 @@ def frame_stream(job: RenderJob, executor: Executor | None = None, workers: int 
     Drawn here when ``executor`` is None and ``workers`` ≤ 1 (each array then
     reused by the next frame); otherwise in batches of ``batch`` frames on
     ``executor`` (or on a pool of ``workers`` processes made for the occasion),
-    at most two batches per worker in flight, each frame passed through
+    at most two batches per worker in flight (``workers`` is the executor's
+    capacity: its processes, or a cluster's worker threads), each frame passed through
     ``encode`` (a picklable function) where it was drawn. ``layout="bgra"``
     hands over the surface's own pixels when drawing here (see ``Frames``).
     """
@@ -121,7 +198,7 @@ def frame_stream(job: RenderJob, executor: Executor | None = None, workers: int 
     # a batch of about 32 MB amortises a round trip without holding much memory
     batch = batch or max(1, min(8, (32 << 20) // (width * height * 4)))
     # two batches per worker keep every worker busy while the sink takes the oldest
-    ahead = 2 * max(workers, getattr(executor, "_max_workers", 0) or 0, 1)
+    ahead = 2 * max(workers, 1)
     token = uuid.uuid4().hex
     pending: deque[Future[Sequence[Any]]] = deque()
     batches = iter(split_range(indices, -(-len(indices) // batch)))

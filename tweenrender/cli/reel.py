@@ -33,12 +33,13 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from ..encode.targets import check_output_name
     from .progress import ProgressBar
     from ..pipeline.demo_reel import plan_reel, write_reel
     from ..pipeline.library import output_format
     from ..scenefile import load_scene
 
-    target = Path(args.output)
+    target = check_output_name(args.output)
     fmt = output_format(target)
     scenes = [with_matching(load_scene(path), args) for path in args.scene]
     names = [Path(path).stem for path in args.scene]

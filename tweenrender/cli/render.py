@@ -47,6 +47,7 @@ def default_target(scene_path: str, fmt: str | None, compare: bool) -> Path:
 
 
 def run(args: argparse.Namespace) -> int:
+    from ..encode.targets import check_output_name
     from ..pipeline.job import pick_frames, total_frames
     from ..pipeline.library import output_format, write
     from ..scenefile import load_scene
@@ -55,8 +56,8 @@ def run(args: argparse.Namespace) -> int:
     if args.method and args.compare is not None:
         raise UsageError("--method and --compare do not go together: list the methods in --compare")
     compare = None if args.compare is None else (methods(args.compare) if args.compare else True)
-    target = Path(args.output) if args.output is not None else default_target(args.scene, args.format,
-                                                                               compare is not None)
+    target = check_output_name(args.output) if args.output is not None else \
+        default_target(args.scene, args.format, compare is not None)
     output_format(target, args.format)  # a name the format cannot be told from is refused before loading
     scene = load_scene(args.scene)
     frames = pick_frames(args.frames, total_frames(scene, args.fps))

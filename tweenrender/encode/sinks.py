@@ -16,6 +16,7 @@ from numpy.typing import NDArray
 
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
+from .targets import check_frames_folder
 
 __all__ = ["FORMATS", "PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",
            "ffmpeg_command", "png_bytes"]
@@ -65,6 +66,8 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
         raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
     if fmt in ("mp4", "webm") and (width % 2 or height % 2):
         raise OptionError(f"{fmt} video in yuv420p needs an even width and height, found {width}x{height}")
+    if fmt == "png":
+        check_frames_folder(target)
     prepare_folder(target)
     if fmt == "png":
         return PngSequence(target, frames)
@@ -126,6 +129,11 @@ class PngSequence:
         if self.count != self.expected:
             self.abort()
             raise EncodeError(f"{self.target}: wrote {self.count} frames, expected {self.expected}")
+        try:
+            check_frames_folder(self.target)  # again: files may have been saved there meanwhile
+        except OptionError:
+            self.abort()
+            raise
         commit_folder(self.temporary, self.target)
         return self.target
 

@@ -93,14 +93,17 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     format and size). ``progress`` is called with ``(done, total)`` frames. The target changes only
     when the whole output was written and checked.
     """
+    from ..encode.targets import check_frames_folder, check_output_name
     from .stream import render
     from .workers import default_workers
 
     if method is not None and compare not in (None, False):
         raise OptionError("method and compare do not go together: list the methods in compare")
-    target = Path(path)
+    target = check_output_name(path)
     fmt = output_format(target, format)
     _not_the_scene(target, scene)
+    if fmt == "png":
+        check_frames_folder(target)
     scene = with_matching(scene, cost, align, equal_counts)
     panels: tuple[str | None, ...]
     if compare is True:

@@ -67,23 +67,26 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 @contextlib.contextmanager
 def _terminate_cleanly() -> Iterator[None]:
-    """Turn SIGTERM (``kill``, ``timeout``, a container stopping) into ``SystemExit(143)``.
+    """Turn SIGTERM (``kill``, ``timeout``, a container stopping) into ``SystemExit(143)`` and SIGHUP
+    (the terminal closed) into ``SystemExit(129)``.
 
-    Python's default SIGTERM ends the process on the spot; as an exception it
+    Python's default for either ends the process on the spot; as an exception it
     unwinds through the sinks, which remove their temporaries.
     """
     def stop(signum: int, frame: object) -> None:
         raise SystemExit(128 + signum)
 
+    handled = [getattr(signal, name) for name in ("SIGTERM", "SIGHUP") if hasattr(signal, name)]
     try:
-        previous = signal.signal(signal.SIGTERM, stop)
+        previous = {signum: signal.signal(signum, stop) for signum in handled}
     except ValueError:  # not the main thread: leave signals alone
         yield
         return
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
 
 
 def _interrupted() -> int:

@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import EncodeError, OptionError
+from .lifeline import death_signal_setup
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 from .targets import check_frames_folder
 
@@ -159,9 +160,10 @@ class FFmpegVideo:
         self.log = tempfile.TemporaryFile()
         # unbuffered: Python's 8 KiB buffer would only add a copy of every frame. Its own
         # session: a terminal's Ctrl-C reaches only this process, which then stops ffmpeg
-        # itself (abort), instead of racing ffmpeg's own shutdown.
+        # itself (abort), instead of racing ffmpeg's own shutdown. It dies with this process.
         self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                        stderr=self.log, bufsize=0, start_new_session=True)
+                                        stderr=self.log, bufsize=0, start_new_session=True,
+                                        preexec_fn=death_signal_setup())
         _grow_pipe(self.process.stdin)
         self.count = 0
 
@@ -244,7 +246,7 @@ def probe_video(path: Path) -> tuple[int, tuple[int, int]]:
 
     done = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", str(path),
                            "-map", "0:v:0", "-c", "copy", "-f", "null", "-"],
-                          capture_output=True, text=True, errors="replace")
+                          capture_output=True, text=True, errors="replace", preexec_fn=death_signal_setup())
     said = done.stderr
     stream = re.search(r"Stream #0:\d+.*?: Video: [^\n]*?(?<!\w)(\d{1,5})x(\d{1,5})(?!\w)", said)
     counts = re.findall(r"frame=\s*(\d+)", said)

@@ -16,6 +16,7 @@ from numpy.typing import NDArray
 
 from ..errors import EncodeError, OptionError
 from .lifeline import death_signal_setup
+from .limits import check_frame_size
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 from .targets import check_frames_folder
 
@@ -65,8 +66,7 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     """
     if fmt not in FORMATS:
         raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
-    if fmt in ("mp4", "webm") and (width % 2 or height % 2):
-        raise OptionError(f"{fmt} video in yuv420p needs an even width and height, found {width}x{height}")
+    check_frame_size(fmt, width, height)
     if fmt == "png":
         check_frames_folder(target)
     prepare_folder(target)

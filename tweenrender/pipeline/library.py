@@ -93,6 +93,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     format and size). ``progress`` is called with ``(done, total)`` frames. The target changes only
     when the whole output was written and checked.
     """
+    from ..encode.limits import check_frame_size
     from ..encode.targets import check_frames_folder, check_output_name
     from .stream import render
     from .workers import default_workers
@@ -116,6 +117,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     picked = pick_frames(frames, total_frames(scene, rate))
     job = _job(scene, None, size, background, fps=rate, panels=panels, labels=bool(compare), frames=picked,
                paths=paths, onion=onion, strip=strip)
+    check_frame_size(fmt, *job.frame_size)  # before drawing a frame or starting ffmpeg
     if workers is None:
         workers = default_workers(job, fmt)
     elif workers < 1:

@@ -14,7 +14,7 @@ from importlib import import_module
 from typing import Iterator, Sequence
 
 from .. import __version__
-from ..errors import TweenrenderError, UsageError
+from ..errors import TweenrenderError, UsageError, printable
 
 __all__ = ["COMMANDS", "main", "build_parser"]
 
@@ -41,7 +41,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         args = parser.parse_args(argv)
     except UsageError as error:  # raised by a type= converter
-        print(f"tweenrender: error: {error}", file=sys.stderr)
+        print(f"tweenrender: error: {printable(str(error))}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         return _interrupted()
@@ -56,11 +56,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 1
     except TweenrenderError as error:
         _explain(args.verbose)
-        print(f"tweenrender: error: {_one_line(str(error))}", file=sys.stderr)
+        # one line by design: a line break in it came from a name, and is shown escaped like one
+        print(f"tweenrender: error: {printable(str(error)) or 'no message'}", file=sys.stderr)
         return error.exit_code
     except Exception as error:  # noqa: BLE001 - the last line of defence against tracebacks
         _explain(args.verbose)
-        print(f"tweenrender: error: unexpected {type(error).__name__}: {_one_line(str(error))} "
+        print(f"tweenrender: error: unexpected {type(error).__name__}: {printable(_one_line(str(error)))} "
               "(run with -v for details)", file=sys.stderr)
         return 1
 

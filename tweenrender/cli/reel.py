@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .args import check_frame_count, count, fps, max_frames_flag, methods, size
+from .args import check_frame_count, count, fps, max_frames_flag, methods, print_path, size
 from .matching_flags import add_matching_flags, with_matching
 from .overlay_flags import MAX_ONION
 
@@ -48,5 +48,5 @@ def run(args: argparse.Namespace) -> int:
     frames = sum(part.frames for part in parts)
     check_frame_count(frames, args.max_frames, "the reel")
     bar = ProgressBar(target.name, enabled=False if args.quiet else None)
-    print(write_reel(parts, fmt, target, args.size, args.fps, bar))
+    print_path(write_reel(parts, fmt, target, args.size, args.fps, bar))
     return 0

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..model import METHODS
-from .args import check_frame_count, count, fps, max_frames_flag, method, methods, size
+from .args import check_frame_count, count, fps, max_frames_flag, method, methods, print_path, size
 from .matching_flags import add_matching_flags
 from .overlay_flags import add_overlay_flags
 
@@ -63,8 +63,8 @@ def run(args: argparse.Namespace) -> int:
     frames = pick_frames(args.frames, total_frames(scene, args.fps))
     check_frame_count(len(frames), args.max_frames, args.scene)
     bar = ProgressBar(target.name, enabled=False if args.quiet else None)
-    print(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
-                fps=args.fps, frames=frames, paths=args.paths, onion=args.onion, strip=args.strip,
-                cost=args.cost, align=args.align, equal_counts=args.equal_counts, workers=args.workers,
-                progress=bar))
+    print_path(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
+                     fps=args.fps, frames=frames, paths=args.paths, onion=args.onion, strip=args.strip,
+                     cost=args.cost, align=args.align, equal_counts=args.equal_counts, workers=args.workers,
+                     progress=bar))
     return 0

@@ -7,7 +7,7 @@ import skia
 from numpy.typing import NDArray
 
 from ..model import Color
-from .fonts import font
+from .fonts import drawable, font
 
 __all__ = ["Raster", "paint_color", "polygon_path"]
 
@@ -106,7 +106,7 @@ class Raster:
     def text(self, words: str, x: float, y: float, size: float, color: Color, bold: bool = False) -> None:
         """Draw ``words`` with its baseline's left end at pixel ``(x, y)``."""
         self._fill.setColor(paint_color(color))
-        self.canvas.drawString(words, x, y, font(size, bold), self._fill)
+        self.canvas.drawString(drawable(words), x, y, font(size, bold), self._fill)
 
     def rgba(self) -> NDArray[np.uint8]:
         """The picture as straight (unpremultiplied) RGBA, ``(height, width, 4)``.

@@ -11,7 +11,7 @@ import contextlib
 import signal
 import sys
 from importlib import import_module
-from typing import Iterator, Sequence
+from typing import Iterator, NoReturn, Sequence
 
 from .. import __version__
 from ..errors import TweenrenderError, UsageError, printable
@@ -22,8 +22,16 @@ COMMANDS = ("render", "check", "stats", "correspond", "qcurves", "sheet", "reel"
 """The commands, in the order ``--help`` lists them; each is the module of that name beside this one."""
 
 
+class _Parser(argparse.ArgumentParser):
+    """An argument parser whose refusals are one line, like every other: a :class:`UsageError`
+    naming what is wrong and where to look, instead of a usage block and ``sys.exit(2)``."""
+
+    def error(self, message: str) -> NoReturn:  # type: ignore[override]
+        raise UsageError(f"{message} (see {self.prog} --help)")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="tweenrender",
         description="Inbetween 2-D keyframe polygons (linear, nonlinear Bézier, rigid, jointed paths) "
                     "and render them to PNG frames or video.")

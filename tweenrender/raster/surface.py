@@ -7,6 +7,7 @@ import skia
 from numpy.typing import NDArray
 
 from ..model import Color
+from .clip import clip_to_box
 from .fonts import drawable, font
 
 __all__ = ["Raster", "paint_color", "polygon_path"]
@@ -46,8 +47,12 @@ _SERIAL_OK = _check_serial()
 
 
 def polygon_path(points: NDArray[np.float64], closed: bool = True) -> skia.Path:
-    """A skia path through ``points (N, 2)`` pixels, N ≥ 1, closed or open."""
+    """A skia path through ``points (N, 2)`` pixels (finite), closed or open; vertices far off the canvas
+    are cut away first (see :mod:`.clip`), so every coordinate fits float32."""
     path = skia.Path()
+    points = clip_to_box(points, closed)
+    if len(points) == 0:
+        return path
     if _SERIAL_OK and path.readFromMemory(_serialised(points, closed)):
         return path
     path.reset()

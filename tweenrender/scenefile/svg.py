@@ -415,12 +415,15 @@ def _flatness(nodes: NDArray[np.float64]) -> float:
     first, last = nodes[0], nodes[-1]
     inner = nodes[1:-1]
     chord = last - first
-    length2 = float(chord @ chord)
-    s = np.clip((inner - first) @ chord / length2, 0.0, 1.0) if length2 > 0 else np.zeros(len(inner))
-    hull = np.max(np.hypot(*(inner - first - s[:, None] * chord).T))
-    n = len(nodes) - 1
-    u = np.arange(1, n)[:, None] / n
-    uniform = (1.0 - 2.0 ** (1 - n)) * np.max(np.hypot(*(inner - first - u * chord).T))
+    # control points near the float limit overflow to inf or NaN here, deliberately: such a
+    # curve never flattens, and _flatten_bezier refuses it
+    with np.errstate(over="ignore", invalid="ignore"):
+        length2 = float(chord @ chord)
+        s = np.clip((inner - first) @ chord / length2, 0.0, 1.0) if length2 > 0 else np.zeros(len(inner))
+        hull = np.max(np.hypot(*(inner - first - s[:, None] * chord).T))
+        n = len(nodes) - 1
+        u = np.arange(1, n)[:, None] / n
+        uniform = (1.0 - 2.0 ** (1 - n)) * np.max(np.hypot(*(inner - first - u * chord).T))
     return float(min(hull, uniform))
 
 

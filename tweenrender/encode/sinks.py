@@ -5,6 +5,7 @@ earlier output untouched."""
 from __future__ import annotations
 
 import re
+import signal
 import subprocess
 import sys
 import tempfile
@@ -186,10 +187,10 @@ class FFmpegVideo:
                 written = self.process.stdin.write(view)
                 view = view[written:]
         except (BrokenPipeError, OSError):
-            self.process.wait()
+            code = self.process.wait()
             message = self._ffmpeg_said()
             self.abort()
-            raise EncodeError(f"{self.target}: ffmpeg stopped after {self.count} frames: {message}") from None
+            raise EncodeError(f"{self.target}: ffmpeg {_ended(code)} after {self.count} frames: {message}") from None
         self.count += 1
 
     def close(self) -> Path:
@@ -202,7 +203,7 @@ class FFmpegVideo:
         if code != 0:
             message = self._ffmpeg_said()
             self.abort()
-            raise EncodeError(f"{self.target}: ffmpeg failed (exit {code}): {message}")
+            raise EncodeError(f"{self.target}: ffmpeg {_ended(code)}: {message}")
         try:
             frames, size = probe_video(self.temporary)
         except Exception as error:  # a file ffmpeg cannot read back is not an output
@@ -222,6 +223,18 @@ class FFmpegVideo:
             self.process.wait()
         discard(self.temporary)
         self.log.close()
+
+
+def _ended(code: int) -> str:
+    """How ffmpeg ended, from its exit status: "failed (exit 1)", or the signal that stopped it
+    ("stopped by SIGXFSZ (File size limit exceeded)": ``ulimit -f``; SIGKILL: often out of memory)."""
+    if code >= 0:
+        return f"failed (exit {code})"
+    try:
+        name = signal.Signals(-code).name
+    except ValueError:
+        name = f"signal {-code}"
+    return f"stopped by {name} ({signal.strsignal(-code) or 'no description'})"
 
 
 def _grow_pipe(pipe: object) -> None:

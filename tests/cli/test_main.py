@@ -24,6 +24,9 @@ def test_stats_json_reproduces_the_thesis_table(cli) -> None:
     assert methods["linear"]["ratio_min"] == pytest.approx(np.sqrt(0.5)) and methods["linear"]["ratio_max"] == 1.0
     assert methods["linear"]["edge_error_max"] == pytest.approx(1 - np.sqrt(0.5))
     assert methods["rigid"]["ratio_min"] == pytest.approx(1.0)
+    # linear at mid-turn: a square of side √2, area 2 of the keys' 4; nonlinear keeps the area
+    assert methods["linear"]["area_ratio"] == [pytest.approx(0.5)]
+    assert methods["nonlinear"]["area_ratio"] == [pytest.approx(1.0)]
 
 
 def test_stats_text_speaks_like_the_thesis(cli) -> None:

@@ -185,19 +185,21 @@ MUTANTS = [
 
 
 def run_tests(tree: Path, tests: tuple[str, ...], timeout: float) -> tuple[str, float]:
-    """'passed', 'failed' or 'timeout' for ``tests`` run in ``tree``, and the seconds it took."""
+    """'passed', 'failed' or 'timeout' for ``tests`` run in ``tree``, and the seconds it took;
+    pytest's report is left in ``tree/../pytest.log``."""
     env = {**os.environ, "PYTHONPATH": str(tree), "PYTHONDONTWRITEBYTECODE": "1"}
     started = time.monotonic()
     command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", "-o", "addopts=",
                "--hypothesis-seed=0", *tests]
-    process = subprocess.Popen(command, cwd=tree, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                               start_new_session=True)
-    try:
-        code = process.wait(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, 9)
-        process.wait()
-        return "timeout", time.monotonic() - started
+    with open(tree.parent / "pytest.log", "wb") as log:
+        process = subprocess.Popen(command, cwd=tree, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                   start_new_session=True)
+        try:
+            code = process.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, 9)
+            process.wait()
+            return "timeout", time.monotonic() - started
     if code not in (0, 1):
         raise RuntimeError(f"pytest exited {code} for {' '.join(tests)} (collection error or no tests)")
     return ("passed" if code == 0 else "failed"), time.monotonic() - started
@@ -211,6 +213,9 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--required", type=float, default=90.0, help="percent to kill (default 90)")
     args = parser.parse_args(argv)
     mutants = [m for m in MUTANTS if args.k.lower() in m.name.lower()]
+    if not mutants:
+        print(f"no mutant's name contains {args.k!r}")
+        return 2
     if args.list:
         for m in mutants:
             print(f"{m.file}: {m.name}")
@@ -228,6 +233,8 @@ def main(argv: list[str]) -> int:
         print(f"unmutated tree: {' '.join(targets)} ...", flush=True)
         fate, seconds = run_tests(tree, targets, args.timeout * 4)
         if fate != "passed":
+            report = (tree.parent / "pytest.log").read_text(errors="replace").splitlines()
+            print("\n".join(report[-30:]))
             print(f"the unmutated tree does not pass its own tests ({fate}); nothing to measure")
             return 2
         print(f"  passed in {seconds:.0f} s\n", flush=True)

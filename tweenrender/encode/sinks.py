@@ -16,9 +16,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import EncodeError, OptionError
+from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 from .lifeline import death_signal_setup
 from .limits import check_frame_size
-from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 from .targets import check_frames_folder
 
 __all__ = ["FORMATS", "PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video",

@@ -111,7 +111,8 @@ def frame_stream(job: RenderJob, executor: Executor | None = None, workers: int 
 
         from ..encode.lifeline import worker_setup
 
-        # workers die with this process, ignore the terminal's signals (this process stops them) and its stdout
+        # workers die with this process, leave Ctrl-C, SIGHUP and SIGTERM to it (it stops them), and let go of
+        # its stdout
         executor = ProcessPoolExecutor(max_workers=workers, initializer=worker_setup, initargs=(os.getpid(),))
     width, height = job.frame_size
     # a batch of about 32 MB amortises a round trip without holding much memory

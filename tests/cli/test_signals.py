@@ -58,16 +58,41 @@ def _alive(pid: int) -> bool:
     return found is not None and found[1] != "Z"
 
 
+_started: list[tuple[int, set[int]]] = []
+
+
+@pytest.fixture(autouse=True)
+def _leave_no_process():  # type: ignore[no-untyped-def]
+    """Whatever a test found, no render it started (nor a child of one) outlives it."""
+    yield
+    while _started:
+        pid, children = _started.pop()
+        for leftover in [pid, *children, *descendants(pid)]:
+            if _alive(leftover) and _ours(leftover):
+                os.kill(leftover, signal.SIGKILL)
+
+
+def _ours(pid: int) -> bool:
+    """Whether ``pid`` still runs a render or its ffmpeg (not some process that took over the number)."""
+    try:
+        command = Path(f"/proc/{pid}/cmdline").read_bytes()
+    except OSError:
+        return False
+    return b"tweenrender" in command or b"ffmpeg" in command
+
+
 def _start(folder: Path, scene: Path, target: Path, *flags: str, children: int) -> subprocess.Popen[bytes]:
     """Start a render into ``target``; return once it writes frames and has ``children`` processes."""
     before = set(folder.iterdir())
     process = subprocess.Popen([sys.executable, "-m", "tweenrender", "render", str(scene), "-o", str(target), "-q",
                                 *flags], stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+    _started.append((process.pid, set()))
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
         fresh = [p for p in set(folder.iterdir()) - before if p.name.startswith(f".{target.name}.")]
         started = fresh and (any(fresh[0].iterdir()) if fresh[0].is_dir() else fresh[0].stat().st_size > 0)
         if started and len(descendants(process.pid)) >= children:
+            _started[-1] = (process.pid, descendants(process.pid))
             return process
         assert process.poll() is None, process.communicate()
         time.sleep(0.02)

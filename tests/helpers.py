@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import os
+import pickle
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any, Callable
 
 import numpy as np
 
@@ -75,3 +78,51 @@ def assert_close_to_golden(picture: np.ndarray, name: str, update: bool) -> None
     difference = np.abs(picture.astype(int) - expected.astype(int))
     assert difference.mean() < 0.5 and np.percentile(difference, 99.9) < 64, \
         f"{name}: mean difference {difference.mean():.3f}, 99.9th percentile {np.percentile(difference, 99.9)}"
+
+
+def unprivileged(function: Callable[..., Any], *args: Any) -> Any:
+    """``function(*args)`` run in a forked child as an unprivileged user; its (picklable) result.
+
+    Root reads and writes whatever the permissions say, so a test of a permission
+    refusal drops to ``nobody`` first; anyone else runs it as they are. Every module of
+    the package is imported before dropping, since the interpreter's own files may not
+    be readable by ``nobody``. The folders involved must be reachable by that user
+    (see the ``open_tmp_path`` fixture).
+    """
+    import importlib
+    import pkgutil
+
+    import tweenrender
+
+    read, write = os.pipe()
+    child = os.fork()
+    if child == 0:  # pragma: no cover - runs in the child
+        os.close(read)
+        try:
+            for module in pkgutil.walk_packages(tweenrender.__path__, "tweenrender."):
+                if not module.name.endswith("__main__"):
+                    importlib.import_module(module.name)
+            if os.geteuid() == 0:
+                import pwd
+
+                try:
+                    user = pwd.getpwnam("nobody")
+                    uid, gid = user.pw_uid, user.pw_gid
+                except KeyError:
+                    uid = gid = 65534
+                os.setgroups([])
+                os.setgid(gid)
+                os.setuid(uid)
+            outcome: tuple[bool, Any] = (True, function(*args))
+        except BaseException as error:  # noqa: BLE001 - reported to the parent
+            outcome = (False, f"{type(error).__name__}: {error}")
+        with os.fdopen(write, "wb") as pipe:
+            pickle.dump(outcome, pipe)
+        os._exit(0)
+    os.close(write)
+    with os.fdopen(read, "rb") as pipe:
+        data = pipe.read()
+    os.waitpid(child, 0)
+    done, value = pickle.loads(data)
+    assert done, f"the unprivileged child failed: {value}"
+    return value

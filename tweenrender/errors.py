@@ -13,10 +13,23 @@
 
 from __future__ import annotations
 
+import unicodedata
 from pathlib import Path
 
 __all__ = ["TweenrenderError", "SceneError", "OptionError", "UsageError", "GeometryError", "RenderError",
-           "EncodeError"]
+           "EncodeError", "printable"]
+
+# control characters (newlines, carriage returns, ESC, C1), lone surrogates, line and paragraph separators
+_UNPRINTABLE = frozenset(("Cc", "Cs", "Zl", "Zp"))
+
+
+def printable(text: str) -> str:
+    """``text`` from outside (a scene's names, a file name) made safe for one line on a terminal:
+    control characters, lone surrogates and line separators become Python escapes (``\\n``,
+    ``\\x1b``, ``\\ud800``); everything else, accents and emoji included, is kept."""
+    if text.isprintable():
+        return text
+    return "".join(repr(c)[1:-1] if unicodedata.category(c) in _UNPRINTABLE else c for c in text)
 
 
 class TweenrenderError(Exception):

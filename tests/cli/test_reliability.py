@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from tweenrender.core.methods import interpolate
 
-from tests.helpers import SQUARE, run_module, write_scene
+from tests.helpers import SQUARE, run_module, unprivileged, write_scene
 from tests.scenefile.test_load_more import MORE_BAD
 
 METHODS = ("linear", "nonlinear", "rigid", "auto", "jointed")
@@ -102,53 +102,63 @@ def test_an_output_under_a_file_is_reported(cli, tmp_path: Path) -> None:
     assert scene.read_text() == SQUARE
 
 
-@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
-def test_a_read_only_folder_is_reported(cli, tmp_path: Path) -> None:
-    scene = write_scene(tmp_path, SQUARE)
-    locked = tmp_path / "locked"
+def test_a_read_only_folder_is_reported(open_tmp_path: Path) -> None:
+    """As an unprivileged user (root writes anywhere, so a root run drops to ``nobody`` first)."""
+    import contextlib
+    import io
+
+    from tweenrender.cli.main import main
+
+    scene = write_scene(open_tmp_path, SQUARE)
+    locked = open_tmp_path / "locked"
     locked.mkdir()
     locked.chmod(0o555)
-    try:
-        code, _, err = cli("render", scene, "-o", locked / "movie.mp4", "-q")
-    finally:
-        locked.chmod(0o755)
-    assert code == 1 and "not writable" in err
+
+    def render() -> tuple[int, str]:
+        said = io.StringIO()
+        with contextlib.redirect_stderr(said):
+            code = main(["render", str(scene), "-o", str(locked / "movie.mp4"), "-q"])
+        return code, said.getvalue()
+
+    code, err = unprivileged(render)
+    assert code == 1 and err == f"tweenrender: error: {locked}: the output folder is not writable\n"
+    assert _listing(locked) == []
 
 
-@pytest.fixture
-def tiny_disk(tmp_path: Path):
-    """A 32 KiB file system (a tmpfs; needs root), unmounted afterwards."""
-    mount = tmp_path / "tiny"
-    mount.mkdir()
-    done = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=32k", "tmpfs", str(mount)], capture_output=True)
-    if done.returncode != 0:
-        pytest.skip("cannot mount a small tmpfs here")
-    try:
-        yield mount
-    finally:
-        subprocess.run(["umount", str(mount)], capture_output=True)
+@pytest.mark.parametrize("output, seconds, limit", [("movie.mp4", 20, 32), ("movie.gif", 5, 32), ("frames", 2, 2)])
+def test_a_file_size_limit_is_reported_and_the_old_output_kept(tmp_path: Path, output: str, seconds: int,
+                                                               limit: int) -> None:
+    """A write refused half-way (here by ``ulimit -f``, in KiB, which needs no privilege; a full disk
+    fails the same way) is one line, exit 1, and leaves the earlier output and no temporary."""
+    import resource
 
-
-@pytest.mark.parametrize("output, seconds", [("movie.mp4", 20), ("movie.gif", 5), ("frames", 2)])
-def test_a_full_disk_is_reported_and_the_old_output_kept(cli, tmp_path: Path, tiny_disk: Path, output: str,
-                                                         seconds: int) -> None:
-    # at 640x480: 20 s is about 100 KB of H.264, 5 s 170 KB of GIF, 2 s 160 KB of PNG
+    # at 640x480: 20 s is about 100 KB of H.264, 5 s 170 KB of GIF; a PNG frame is 3 to 4 KB
     scene = write_scene(tmp_path, SQUARE.replace("size = [320, 240]", "size = [640, 480]")
                         .replace("time = 2", f"time = {seconds}"))
-    target = tiny_disk / output
+    disk = tmp_path / "disk"
+    disk.mkdir()
+    target = disk / output
     if output == "frames":
         target.mkdir()
         (target / "frame_0000.png").write_bytes(b"old frame")
     else:
         target.write_bytes(b"old movie")
-    code, _, err = cli("render", scene, "-o", target, "-q")
-    assert code == 1 and err.count("\n") == 1, err
-    assert "No space left on device" in err and "Traceback" not in err
+
+    def limited() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit << 10, limit << 10))
+
+    done = subprocess.run([sys.executable, "-m", "tweenrender", "render", str(scene), "-o", str(target), "-q"],
+                          capture_output=True, text=True, preexec_fn=limited, timeout=300)
+    err = done.stderr
+    assert done.returncode == 1 and err.count("\n") == 1, err
+    # Python's own writes get EFBIG; ffmpeg, which keeps the default action, is stopped by SIGXFSZ
+    words = "File too large" if output == "frames" else "stopped by SIGXFSZ (File size limit exceeded)"
+    assert err.startswith(f"tweenrender: error: {target}: ") and words in err and "Traceback" not in err
     if output == "frames":
         assert _listing(target) == ["frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
     else:
         assert target.read_bytes() == b"old movie"
-    assert _listing(tiny_disk) == [output]  # the temporary is gone
+    assert _listing(disk) == [output]  # the temporary is gone
 
 
 LONG = SQUARE.replace("time = 2", "time = 60").replace("size = [320, 240]", "size = [640, 480]")

@@ -133,3 +133,24 @@ def test_degenerate_input_is_finite(method) -> None:
     for k0, k1 in [(collinear, collinear[::-1] + 1), (repeated, repeated), (repeated, collinear),
                    (collinear, turned(collinear, 180.0))]:
         assert np.all(np.isfinite(method(k0, k1, np.linspace(0, 1, 7))))
+
+
+def test_rigid_between_keys_that_are_not_congruent() -> None:
+    """Maths §5.2 at intermediate t, in complex numbers: a 2×2 square to a 4×1 rectangle turned by 70°
+    and moved. φ = arg Σ conj(u0)·u1 (the least-squares turn), and
+    V(t) = lerp(C0, C1, t) + e^{itφ}·((1 − t)·u0 + t·e^{−iφ}·u1); the vertex mean moves straight."""
+    k0 = SQUARE
+    rectangle = np.array([[0, 0], [4, 0], [4, 1], [0, 1]], float)
+    k1 = turned(rectangle, 70.0, shift=(6.0, -2.0))
+    z0, z1 = k0 @ [1, 1j], k1 @ [1, 1j]
+    c0, c1 = z0.mean(), z1.mean()
+    u0, u1 = z0 - c0, z1 - c1
+    phi = np.angle(np.sum(np.conj(u0) * u1))
+    t = np.array([0.2, 0.5, 0.7])
+    expected = ((1 - t) * c0 + t * c1)[:, None] + np.exp(1j * t * phi)[:, None] * (
+        (1 - t)[:, None] * u0 + t[:, None] * np.exp(-1j * phi) * u1)
+    got = interpolate(k0, k1, t, "rigid")
+    assert np.allclose(got[..., 0] + 1j * got[..., 1], expected, atol=1e-12)
+    assert np.allclose(got.mean(axis=1), ((1 - t)[:, None] * k0.mean(axis=0) + t[:, None] * k1.mean(axis=0)))
+    # the change of shape is spread evenly: the spokes' lengths move straight from one key's to the other's
+    assert not np.allclose(got, interpolate(k0, k1, t, "linear"))

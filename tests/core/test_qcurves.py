@@ -457,3 +457,25 @@ def test_degenerate_classifications():
 def test_mismatched_keys_are_rejected_with_their_shapes():
     with pytest.raises(ValueError, match=r"\(3, 2\) and \(4, 2\)"):
         qcurves.control_points(np.zeros((3, 2)), np.zeros((4, 2)))
+
+
+def test_auto_goes_linear_when_only_some_vertices_change():
+    """A hexagon turned by 40° with one vertex pushed out by 10%: the three vertices away from it
+    still see a rigid turn, its neighbourhood does not; any non-rigid vertex makes the shape
+    non-rigid (thesis §2.3), so auto draws the linear paths."""
+    from tweenrender.core.methods import interpolate as _interpolate
+
+    angles = np.radians(np.arange(6) * 60.0)
+    hexagon = np.column_stack([np.cos(angles), np.sin(angles)]) * 2.0
+    a = np.radians(40.0)
+    k1 = hexagon @ np.array([[np.cos(a), np.sin(a)], [-np.sin(a), np.cos(a)]]) + [5.0, 1.0]
+    center = np.array([5.0, 1.0])
+    k1[0] = center + 1.1 * (k1[0] - center)  # vertex 0 pushed out from the center
+    kinds = qcurves.vertex_kinds(qcurves.control_points(hexagon, k1), 1e-6)
+    assert kinds[2:5] == ["rotation"] * 3 and kinds[0] == "nonrigid"  # the premise: some vertices are rigid
+    assert qcurves.classify(hexagon, k1).kind == "nonrigid"
+    t = np.array([0.25, 0.5, 0.75])
+    assert np.array_equal(_interpolate(hexagon, k1, t, "auto"), _interpolate(hexagon, k1, t, "linear"))
+    # and with every vertex unmoved but the turn, auto draws the nonlinear paths
+    k1_rigid = hexagon @ np.array([[np.cos(a), np.sin(a)], [-np.sin(a), np.cos(a)]]) + [5.0, 1.0]
+    assert np.array_equal(_interpolate(hexagon, k1_rigid, t, "auto"), _interpolate(hexagon, k1_rigid, t, "nonlinear"))

@@ -7,13 +7,13 @@ import sys
 from pathlib import Path
 from typing import Any, Callable, TypeVar
 
-from ..errors import UsageError
+from ..errors import UsageError, printable
 from ..model import METHODS
 
 Number = TypeVar("Number", int, float)
 
-__all__ = ["method", "methods", "size", "fps", "times", "count", "print_json", "png_target", "max_frames_flag",
-           "check_frame_count", "seconds"]
+__all__ = ["method", "methods", "size", "fps", "times", "count", "print_json", "print_path", "escaped", "png_target",
+           "max_frames_flag", "check_frame_count", "seconds"]
 
 
 def methods(text: str) -> tuple[str, ...]:
@@ -83,8 +83,24 @@ def times(text: str) -> list[float]:
 
 
 def print_json(data: Any) -> None:
-    json.dump(data, sys.stdout, indent=2)
+    json.dump(data, sys.stdout, indent=2)  # ASCII: names with control characters come out as \u escapes
     sys.stdout.write("\n")
+
+
+def print_path(path: Any) -> None:
+    """Print the path written, escaped like any text from outside (see :func:`~tweenrender.errors.printable`)."""
+    print(printable(str(path)))
+
+
+def escaped(report: Any) -> Any:
+    """A copy of a report (dicts, lists, numbers, text) with every text made printable, for the text reports."""
+    if isinstance(report, str):
+        return printable(report)
+    if isinstance(report, dict):
+        return {escaped(key): escaped(value) for key, value in report.items()}
+    if isinstance(report, (list, tuple)):
+        return type(report)(escaped(value) for value in report)
+    return report
 
 
 def png_target(args: Any, kind: str, what: str) -> Path:

@@ -6,7 +6,7 @@ import argparse
 import sys
 from typing import TYPE_CHECKING
 
-from ..errors import UsageError
+from ..errors import UsageError, printable
 from .args import print_json
 
 if TYPE_CHECKING:
@@ -47,12 +47,12 @@ def run(args: argparse.Namespace) -> int:
         try:
             _report(path, load_scene(path))
         except SceneError as error:
-            print(f"tweenrender: error: {error}", file=sys.stderr)
+            print(f"tweenrender: error: {printable(str(error))}", file=sys.stderr)
             failed += 1
     return 2 if failed else 0
 
 
 def _report(path: str, scene: "Scene") -> None:
     keys = sum(len(s.keys) for s in scene.shapes)
-    print(f"{path}: ok ({_count(len(scene.shapes), 'shape')}, {_count(keys, 'key')}, "
+    print(f"{printable(path)}: ok ({_count(len(scene.shapes), 'shape')}, {_count(keys, 'key')}, "
           f"{scene.duration:g} s at {scene.fps:g} fps)")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from .args import png_target, print_json
+from .args import escaped, png_target, print_json, print_path
 from .matching_flags import add_matching_flags, matching_of
 
 
@@ -32,6 +32,6 @@ def run(args: argparse.Namespace) -> int:
         if args.output is not None:
             write_match_picture(scene, report, target)
         return 0
-    print(correspond_text(report))
-    print(write_match_picture(scene, report, target))
+    print(correspond_text(escaped(report)))
+    print_path(write_match_picture(scene, report, target))
     return 0

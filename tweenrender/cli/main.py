@@ -11,10 +11,10 @@ import contextlib
 import signal
 import sys
 from importlib import import_module
-from typing import Iterator, Sequence
+from typing import Iterator, NoReturn, Sequence
 
 from .. import __version__
-from ..errors import TweenrenderError, UsageError
+from ..errors import TweenrenderError, UsageError, printable
 
 __all__ = ["COMMANDS", "main", "build_parser"]
 
@@ -22,8 +22,16 @@ COMMANDS = ("render", "check", "stats", "correspond", "qcurves", "sheet", "reel"
 """The commands, in the order ``--help`` lists them; each is the module of that name beside this one."""
 
 
+class _Parser(argparse.ArgumentParser):
+    """An argument parser whose refusals are one line, like every other: a :class:`UsageError`
+    naming what is wrong and where to look, instead of a usage block and ``sys.exit(2)``."""
+
+    def error(self, message: str) -> NoReturn:  # type: ignore[override]
+        raise UsageError(f"{message} (see {self.prog} --help)")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="tweenrender",
         description="Inbetween 2-D keyframe polygons (linear, nonlinear Bézier, rigid, jointed paths) "
                     "and render them to PNG frames or video.")
@@ -41,7 +49,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         args = parser.parse_args(argv)
     except UsageError as error:  # raised by a type= converter
-        print(f"tweenrender: error: {error}", file=sys.stderr)
+        print(f"tweenrender: error: {printable(str(error))}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         return _interrupted()
@@ -56,34 +64,38 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 1
     except TweenrenderError as error:
         _explain(args.verbose)
-        print(f"tweenrender: error: {_one_line(str(error))}", file=sys.stderr)
+        # one line by design: a line break in it came from a name, and is shown escaped like one
+        print(f"tweenrender: error: {printable(str(error)) or 'no message'}", file=sys.stderr)
         return error.exit_code
     except Exception as error:  # noqa: BLE001 - the last line of defence against tracebacks
         _explain(args.verbose)
-        print(f"tweenrender: error: unexpected {type(error).__name__}: {_one_line(str(error))} "
+        print(f"tweenrender: error: unexpected {type(error).__name__}: {printable(_one_line(str(error)))} "
               "(run with -v for details)", file=sys.stderr)
         return 1
 
 
 @contextlib.contextmanager
 def _terminate_cleanly() -> Iterator[None]:
-    """Turn SIGTERM (``kill``, ``timeout``, a container stopping) into ``SystemExit(143)``.
+    """Turn SIGTERM (``kill``, ``timeout``, a container stopping) into ``SystemExit(143)`` and SIGHUP
+    (the terminal closed) into ``SystemExit(129)``.
 
-    Python's default SIGTERM ends the process on the spot; as an exception it
+    Python's default for either ends the process on the spot; as an exception it
     unwinds through the sinks, which remove their temporaries.
     """
     def stop(signum: int, frame: object) -> None:
         raise SystemExit(128 + signum)
 
+    handled = [getattr(signal, name) for name in ("SIGTERM", "SIGHUP") if hasattr(signal, name)]
     try:
-        previous = signal.signal(signal.SIGTERM, stop)
+        previous = {signum: signal.signal(signum, stop) for signum in handled}
     except ValueError:  # not the main thread: leave signals alone
         yield
         return
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
 
 
 def _interrupted() -> int:

@@ -6,6 +6,8 @@ import sys
 import time
 from typing import TextIO
 
+from ..errors import printable
+
 __all__ = ["ProgressBar"]
 
 
@@ -13,7 +15,7 @@ class ProgressBar:
     """Call with ``(done, total)``; redraws at most ten times a second."""
 
     def __init__(self, label: str, stream: TextIO | None = None, enabled: bool | None = None) -> None:
-        self.label = label
+        self.label = printable(label)
         self.stream = stream or sys.stderr
         self.enabled = self.stream.isatty() if enabled is None else enabled
         self.started = time.monotonic()

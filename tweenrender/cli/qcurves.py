@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from .args import png_target, print_json
+from .args import escaped, png_target, print_json, print_path
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -29,6 +29,6 @@ def run(args: argparse.Namespace) -> int:
         if args.output is not None:
             write_qcurve_plot(report, target)
         return 0
-    print(qcurves_text(report))
-    print(write_qcurve_plot(report, target))
+    print(qcurves_text(escaped(report)))
+    print_path(write_qcurve_plot(report, target))
     return 0

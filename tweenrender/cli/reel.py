@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .args import check_frame_count, count, fps, max_frames_flag, methods, size
+from .args import check_frame_count, count, fps, max_frames_flag, methods, print_path, size
 from .matching_flags import add_balance_flag, add_matching_flags, with_matching
 from .overlay_flags import MAX_ONION
 
@@ -34,12 +34,13 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from ..encode.targets import check_output_name
     from .progress import ProgressBar
     from ..pipeline.demo_reel import plan_reel, write_reel
     from ..pipeline.library import output_format
     from ..scenefile import load_scene
 
-    target = Path(args.output)
+    target = check_output_name(args.output)
     fmt = output_format(target)
     scenes = [with_matching(load_scene(path), args) for path in args.scene]
     names = [Path(path).stem for path in args.scene]
@@ -48,5 +49,5 @@ def run(args: argparse.Namespace) -> int:
     frames = sum(part.frames for part in parts)
     check_frame_count(frames, args.max_frames, "the reel")
     bar = ProgressBar(target.name, enabled=False if args.quiet else None)
-    print(write_reel(parts, fmt, target, args.size, args.fps, bar))
+    print_path(write_reel(parts, fmt, target, args.size, args.fps, bar))
     return 0

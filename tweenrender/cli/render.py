@@ -10,7 +10,7 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..model import METHODS
-from .args import check_frame_count, count, fps, max_frames_flag, method, methods, seconds, size
+from .args import check_frame_count, count, fps, max_frames_flag, method, methods, print_path, seconds, size
 from .matching_flags import add_balance_flag, add_matching_flags
 from .overlay_flags import add_overlay_flags
 
@@ -57,6 +57,7 @@ def default_target(inputs: list[str], fmt: str | None, compare: bool) -> Path:
 
 
 def run(args: argparse.Namespace) -> int:
+    from ..encode.targets import check_output_name
     from ..pipeline.job import pick_frames, total_frames
     from ..pipeline.library import load_scene, output_format, write
     from .progress import ProgressBar
@@ -68,15 +69,15 @@ def run(args: argparse.Namespace) -> int:
     compare = None if args.compare is None else (methods(args.compare) if args.compare else True)
     if len(args.scene) > 1 and not all(Path(p).suffix.lower() == ".svg" for p in args.scene):
         raise UsageError("several inputs must all be SVG drawings (.svg); give one scene file at a time")
-    target = Path(args.output) if args.output is not None else default_target(args.scene, args.format,
-                                                                               compare is not None)
+    target = check_output_name(args.output) if args.output is not None else \
+        default_target(args.scene, args.format, compare is not None)
     output_format(target, args.format)  # a name the format cannot be told from is refused before loading
     scene = load_scene(args.scene if len(args.scene) > 1 else args.scene[0], args.step)
     frames = pick_frames(args.frames, total_frames(scene, args.fps))
     check_frame_count(len(frames), args.max_frames, args.scene[0])
     bar = ProgressBar(target.name, enabled=False if args.quiet else None)
-    print(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
-                fps=args.fps, frames=frames, background=args.background, paths=args.paths, onion=args.onion,
-                strip=args.strip, cost=args.cost, align=args.align, equal_counts=args.equal_counts,
-                balance=args.balance, workers=args.workers, cluster=args.cluster, progress=bar))
+    print_path(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
+                     fps=args.fps, frames=frames, background=args.background, paths=args.paths, onion=args.onion,
+                     strip=args.strip, cost=args.cost, align=args.align, equal_counts=args.equal_counts,
+                     balance=args.balance, workers=args.workers, cluster=args.cluster, progress=bar))
     return 0

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from .args import count, methods, png_target, size
+from .args import count, methods, png_target, print_path, size
 from .matching_flags import add_balance_flag, add_matching_flags, with_matching
 
 DEFAULT_COUNT = 7
@@ -36,5 +36,5 @@ def run(args: argparse.Namespace) -> int:
     target = png_target(args, "sheet", "a sheet")
     tracks = tracks_of(scene)
     view = scene_view(scene, tracks, rows)
-    print(write_sheet(scene, tracks, rows, view, target, args.count, args.size, args.paths))
+    print_path(write_sheet(scene, tracks, rows, view, target, args.count, args.size, args.paths))
     return 0

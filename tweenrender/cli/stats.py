@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from .args import print_json, times
+from .args import escaped, print_json, times
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -22,5 +22,5 @@ def run(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene)
     stats = stats_dict(scene, args.t)
     stats["scene"] = args.scene
-    print_json(stats) if args.json else print(stats_text(stats))
+    print_json(stats) if args.json else print(stats_text(escaped(stats)))
     return 0

@@ -134,7 +134,7 @@ def commit_folder(temporary: Path, target: Path) -> None:
         raise EncodeError(f"{target}: cannot move the finished frames into place ({os_reason(error)})") from None
     _fsync(target.parent, directory=True)
     if old is not None:
-        shutil.rmtree(old, ignore_errors=True)
+        discard(old)  # a folder, or the link that was the target (what it points to is kept)
 
 
 def discard(temporary: Path) -> None:

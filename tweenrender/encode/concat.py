@@ -10,6 +10,7 @@ from typing import Sequence
 
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, discard, prepare_folder, sibling
+from .lifeline import death_signal_setup
 
 __all__ = ["concat", "CONCAT_FORMATS"]
 
@@ -70,7 +71,7 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
     command = [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
                "-f", "concat", "-safe", "0", "-i", listing.name, *output, str(temporary)]
     try:
-        done = subprocess.run(command, capture_output=True, text=True)
+        done = subprocess.run(command, capture_output=True, text=True, preexec_fn=death_signal_setup())
         if done.returncode != 0:
             said = " | ".join(line for line in done.stderr.strip().splitlines()[-4:] if line.strip())
             raise EncodeError(f"{target}: ffmpeg could not join {len(paths)} parts: {said or 'no message'}")

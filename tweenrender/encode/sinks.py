@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import os
 import re
+import signal
 import subprocess
 import sys
 import tempfile
@@ -17,6 +18,9 @@ from numpy.typing import NDArray
 
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
+from .lifeline import death_signal_setup
+from .limits import check_frame_size
+from .targets import check_frames_folder
 
 __all__ = ["FORMATS", "ALPHA_FORMATS", "LOSSLESS", "PIXEL_FORMATS", "check_alpha", "Sink", "open_sink", "PngSequence",
            "FFmpegVideo", "probe_video", "ffmpeg_command", "encoder_options", "x264_tuning", "png_bytes"]
@@ -82,8 +86,9 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     if fmt not in FORMATS and fmt != LOSSLESS:
         raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
     check_alpha(fmt, alpha)
-    if fmt in ("mp4", "webm") and (width % 2 or height % 2):
-        raise OptionError(f"{fmt} video in yuv420p needs an even width and height, found {width}x{height}")
+    check_frame_size(fmt, width, height)
+    if fmt == "png":
+        check_frames_folder(target)
     prepare_folder(target)
     if fmt == "png":
         return PngSequence(target, frames)
@@ -179,6 +184,11 @@ class PngSequence:
         if self.count != self.expected:
             self.abort()
             raise EncodeError(f"{self.target}: wrote {self.count} frames, expected {self.expected}")
+        try:
+            check_frames_folder(self.target)  # again: files may have been saved there meanwhile
+        except OptionError:
+            self.abort()
+            raise
         commit_folder(self.temporary, self.target)
         return self.target
 
@@ -204,9 +214,10 @@ class FFmpegVideo:
         self.log = tempfile.TemporaryFile()
         # unbuffered: Python's 8 KiB buffer would only add a copy of every frame. Its own
         # session: a terminal's Ctrl-C reaches only this process, which then stops ffmpeg
-        # itself (abort), instead of racing ffmpeg's own shutdown.
+        # itself (abort), instead of racing ffmpeg's own shutdown. It dies with this process.
         self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                        stderr=self.log, bufsize=0, start_new_session=True)
+                                        stderr=self.log, bufsize=0, start_new_session=True,
+                                        preexec_fn=death_signal_setup())
         _grow_pipe(self.process.stdin)
         self.count = 0
 
@@ -229,10 +240,10 @@ class FFmpegVideo:
                 written = self.process.stdin.write(view)
                 view = view[written:]
         except (BrokenPipeError, OSError):
-            self.process.wait()
+            code = self.process.wait()
             message = self._ffmpeg_said()
             self.abort()
-            raise EncodeError(f"{self.target}: ffmpeg stopped after {self.count} frames: {message}") from None
+            raise EncodeError(f"{self.target}: ffmpeg {_ended(code)} after {self.count} frames: {message}") from None
         self.count += 1
 
     def close(self) -> Path:
@@ -245,7 +256,7 @@ class FFmpegVideo:
         if code != 0:
             message = self._ffmpeg_said()
             self.abort()
-            raise EncodeError(f"{self.target}: ffmpeg failed (exit {code}): {message}")
+            raise EncodeError(f"{self.target}: ffmpeg {_ended(code)}: {message}")
         try:
             frames, size = probe_video(self.temporary)
         except Exception as error:  # a file ffmpeg cannot read back is not an output
@@ -265,6 +276,18 @@ class FFmpegVideo:
             self.process.wait()
         discard(self.temporary)
         self.log.close()
+
+
+def _ended(code: int) -> str:
+    """How ffmpeg ended, from its exit status: "failed (exit 1)", or the signal that stopped it
+    ("stopped by SIGXFSZ (File size limit exceeded)": ``ulimit -f``; SIGKILL: often out of memory)."""
+    if code >= 0:
+        return f"failed (exit {code})"
+    try:
+        name = signal.Signals(-code).name
+    except ValueError:
+        name = f"signal {-code}"
+    return f"stopped by {name} ({signal.strsignal(-code) or 'no description'})"
 
 
 def _grow_pipe(pipe: object) -> None:
@@ -289,7 +312,7 @@ def probe_video(path: Path) -> tuple[int, tuple[int, int]]:
 
     done = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", str(path),
                            "-map", "0:v:0", "-c", "copy", "-f", "null", "-"],
-                          capture_output=True, text=True, errors="replace")
+                          capture_output=True, text=True, errors="replace", preexec_fn=death_signal_setup())
     said = done.stderr
     stream = re.search(r"Stream #0:\d+.*?: Video: [^\n]*?(?<!\w)(\d{1,5})x(\d{1,5})(?!\w)", said)
     counts = re.findall(r"frame=\s*(\d+)", said)

@@ -11,6 +11,7 @@ it; only its encoded result travels back:
 
 from __future__ import annotations
 
+import os
 import tempfile
 from concurrent.futures import Executor, Future
 from dataclasses import replace
@@ -40,17 +41,21 @@ def render_part(job: RenderJob, fmt: str) -> Any:
     a GIF's part), or for ``fmt`` png the list of each frame's PNG bytes. Meant
     to run on an executor's worker, whose files it does not keep.
     """
+    from ..encode.lifeline import Stopped
     from ..encode.sinks import png_bytes
     from .job import Frames
     from .stream import render
 
-    if fmt == "png":
-        frames = Frames(job)
-        return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
-    with tempfile.TemporaryDirectory(prefix="tweenrender-part-") as folder:
-        path = Path(folder) / f"part.{fmt}"
-        render(job, fmt, path)
-        return path.read_bytes()
+    try:
+        if fmt == "png":
+            frames = Frames(job)
+            return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
+        with tempfile.TemporaryDirectory(prefix="tweenrender-part-") as folder:
+            path = Path(folder) / f"part.{fmt}"
+            render(job, fmt, path)
+            return path.read_bytes()
+    except Stopped as stop:  # the part, its folder and its encoder are gone by now: end the worker
+        os._exit(stop.code if isinstance(stop.code, int) else 1)
 
 
 def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, chunks: int,
@@ -86,7 +91,9 @@ def render_in_processes(job: RenderJob, fmt: str, target: Path, workers: int,
 
     if workers <= 1 or fmt not in ("mp4", "webm"):
         return render(job, fmt, target, progress, workers=workers)
-    with ProcessPoolExecutor(max_workers=workers, initializer=_part_worker) as pool:
+    from ..encode.lifeline import part_worker_setup
+
+    with ProcessPoolExecutor(max_workers=workers, initializer=part_worker_setup, initargs=(os.getpid(),)) as pool:
         try:
             return render_chunks(job, fmt, target, pool, chunks=workers, progress=progress)
         except BaseException:
@@ -95,16 +102,6 @@ def render_in_processes(job: RenderJob, fmt: str, target: Path, workers: int,
             _stop_workers(pool)
             pool.shutdown(wait=True, cancel_futures=True)
             raise
-
-
-def _part_worker() -> None:
-    """Chunk worker initializer: Ctrl-C (sent to the whole process group) is the parent's to handle;
-    SIGTERM becomes ``SystemExit``, so the part being rendered is aborted and its files removed."""
-    import signal
-    import sys
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, lambda number, frame: sys.exit(128 + number))
 
 
 def _stop_workers(pool: Any) -> None:

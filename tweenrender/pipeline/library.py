@@ -110,14 +110,18 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     extra). ``progress`` is called with ``(done, total)`` frames. The target changes only when the
     whole output was written and checked.
     """
+    from ..encode.limits import check_frame_size
+    from ..encode.targets import check_frames_folder, check_output_name
     from .chunks import render_in_processes
     from .workers import default_workers
 
     if method is not None and compare not in (None, False):
         raise OptionError("method and compare do not go together: list the methods in compare")
-    target = Path(path)
+    target = check_output_name(path)
     fmt = output_format(target, format)
     _not_the_scene(target, scene)
+    if fmt == "png":
+        check_frames_folder(target)
     scene = with_balance(with_matching(scene, cost, align, equal_counts), balance)
     panels: tuple[str | None, ...]
     if compare is True:
@@ -133,6 +137,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     from ..encode.sinks import check_alpha
 
     check_alpha(fmt, job.scene.background[3] < 255)
+    check_frame_size(fmt, *job.frame_size)  # before drawing a frame or starting ffmpeg
     if cluster is not None:
         if workers is not None:
             raise OptionError("workers and cluster do not go together: the cluster's workers draw the frames")

@@ -163,13 +163,6 @@ def _draw_batch(token: str, job: RenderJob, indices: range, encode: Encode | Non
     return out
 
 
-def _ignore_interrupts() -> None:
-    """Worker initializer: Ctrl-C reaches the whole process group, but only the parent handles it."""
-    import signal
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-
-
 def frame_stream(job: RenderJob, executor: Executor | None = None, workers: int = 1,
                  batch: int | None = None, encode: Encode | None = None, layout: str = "rgba") -> Iterator[Any]:
     """``job``'s frames in order as straight RGBA ``(height, width, 4)`` (or ``encode(frame)`` of each).
@@ -193,7 +186,11 @@ def frame_stream(job: RenderJob, executor: Executor | None = None, workers: int 
     if executor is None:
         from concurrent.futures import ProcessPoolExecutor
 
-        executor = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_interrupts)
+        from ..encode.lifeline import worker_setup
+
+        # workers die with this process, leave Ctrl-C, SIGHUP and SIGTERM to it (it stops them), and let go of
+        # its stdout
+        executor = ProcessPoolExecutor(max_workers=workers, initializer=worker_setup, initargs=(os.getpid(),))
     width, height = job.frame_size
     # a batch of about 32 MB amortises a round trip without holding much memory
     batch = batch or max(1, min(8, (32 << 20) // (width * height * 4)))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from contextlib import contextmanager
 from functools import lru_cache
 from pathlib import Path
@@ -10,9 +11,10 @@ from typing import Iterator
 
 import skia
 
-__all__ = ["typeface", "font", "wrap"]
+__all__ = ["typeface", "font", "wrap", "drawable"]
 
 _FOLDER = Path(__file__).with_name("fonts")
+_SURROGATE = re.compile("[\ud800-\udfff]")
 
 
 @contextmanager
@@ -44,9 +46,21 @@ def typeface(bold: bool = False) -> skia.Typeface:
     return face if face is not None else skia.Typeface.MakeDefault()
 
 
+def drawable(words: str) -> str:
+    """``words`` as skia takes them: UTF-8 cannot carry a lone surrogate, so each becomes U+FFFD."""
+    return words if words.isascii() else _SURROGATE.sub("\ufffd", words)
+
+
+class _Font(skia.Font):
+    """A font that measures any ``str``, lone surrogates included (see :func:`drawable`)."""
+
+    def measureText(self, text: str, *args: object, **kwargs: object) -> float:  # noqa: N802 - skia's name
+        return super().measureText(drawable(text), *args, **kwargs)  # type: ignore[no-any-return]
+
+
 def font(size: float, bold: bool = False) -> skia.Font:
-    """An antialiased font of ``size`` pixels."""
-    f = skia.Font(typeface(bold), size)
+    """An antialiased font of ``size`` pixels; it measures any text, lone surrogates included."""
+    f = _Font(typeface(bold), size)
     f.setEdging(skia.Font.Edging.kAntiAlias)
     f.setSubpixel(True)
     return f

@@ -10,7 +10,8 @@ import skia
 from numpy.typing import NDArray
 
 from ..model import Color
-from .fonts import font
+from .clip import clip_to_box
+from .fonts import drawable, font
 
 __all__ = ["Raster", "paint_color", "polygon_path", "contours_path", "StrokeStyle", "fill_and_stroke",
            "hides_fill_edge"]
@@ -61,10 +62,16 @@ def polygon_path(points: NDArray[np.float64], closed: bool = True) -> skia.Path:
 
 def contours_path(contours: Sequence[NDArray[np.float64]], closed: Sequence[bool],
                   fill_rule: str = "nonzero") -> skia.Path:
-    """One skia path of every contour ``(N_i, 2)`` in pixels (each N_i ≥ 1), closed or open, under
-    ``fill_rule`` (``"nonzero"`` or ``"evenodd"``)."""
+    """One skia path of every contour ``(N_i, 2)`` in pixels (finite), closed or open, under ``fill_rule``
+    (``"nonzero"`` or ``"evenodd"``); vertices far off the canvas are cut away first (see :mod:`.clip`),
+    so every coordinate fits float32."""
     path = skia.Path()
     even = fill_rule == "evenodd"
+    kept = [(clip_to_box(points, shut), shut) for points, shut in zip(contours, closed)]
+    kept = [(points, shut) for points, shut in kept if len(points)]
+    contours, closed = [p for p, _ in kept], [s for _, s in kept]
+    if not contours:
+        return path
     if _SERIAL_OK and path.readFromMemory(_serialised(contours, closed, int(even))):
         return path
     path.reset()
@@ -199,7 +206,7 @@ class Raster:
     def text(self, words: str, x: float, y: float, size: float, color: Color, bold: bool = False) -> None:
         """Draw ``words`` with its baseline's left end at pixel ``(x, y)``."""
         self._fill.setColor(paint_color(color))
-        self.canvas.drawString(words, x, y, font(size, bold), self._fill)
+        self.canvas.drawString(drawable(words), x, y, font(size, bold), self._fill)
 
     def rgba(self) -> NDArray[np.uint8]:
         """The picture as straight (unpremultiplied) RGBA, ``(height, width, 4)``.

@@ -11,6 +11,8 @@ from numpy.typing import NDArray
 __all__ = ["Viewport", "fit_box"]
 
 Box = tuple[float, float, float, float]
+_MAX_SCALE = 1e307
+_FAR = 1e300  # pixel coordinates are kept within ±_FAR: finite, and their differences too
 
 
 def fit_box(polygons: Iterable[NDArray[np.float64]], margin: float = 0.08) -> Box:
@@ -35,16 +37,22 @@ class Viewport:
 
     @property
     def scale(self) -> float:
-        """Pixels per world unit."""
+        """Pixels per world unit (at most 1e307: a view of 1e-320 would make it infinite)."""
         x0, y0, x1, y1 = self.view
-        return min(self.width / (x1 - x0), self.height / (y1 - y0))
+        with np.errstate(over="ignore", divide="ignore"):
+            return float(min(self.width / (x1 - x0), self.height / (y1 - y0), _MAX_SCALE))
 
     def to_pixels(self, points: NDArray[np.float64]) -> NDArray[np.float64]:
-        """World ``(..., 2)`` → pixel ``(..., 2)`` (origin top-left, y down)."""
+        """World ``(..., 2)`` → pixel ``(..., 2)`` (origin top-left, y down), each within ±1e300.
+
+        A view of 1e-300 magnifies by 1e302: far vertices overflow to ±inf, deliberately, and are
+        brought back to ±1e300 (far off any canvas; see :mod:`.clip` for what is then drawn).
+        """
         x0, y0, x1, y1 = self.view
         s = self.scale
         ox = 0.5 * (self.width - s * (x1 - x0))
         oy = 0.5 * (self.height - s * (y1 - y0))
-        px = (points[..., 0] - x0) * s + ox
-        py = self.height - ((points[..., 1] - y0) * s + oy)
-        return np.stack([px, py], axis=-1)
+        with np.errstate(over="ignore", invalid="ignore"):
+            px = (points[..., 0] - x0) * s + ox
+            py = self.height - ((points[..., 1] - y0) * s + oy)
+        return np.clip(np.stack([px, py], axis=-1), -_FAR, _FAR)

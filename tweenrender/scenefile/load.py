@@ -86,6 +86,7 @@ def load_scene(path: str | Path | Sequence[str | Path], step: float = 1.0) -> Sc
         line = raw[: error.start].count(b"\n") + 1
         raise SceneError(path, f"line {line}", f"expected UTF-8 text, found byte 0x{raw[error.start]:02x} "
                                                f"(at byte {error.start})") from None
+    text = text.removeprefix("\ufeff")  # a byte order mark, as some editors write UTF-8
     return parse_scene(text, path, "json" if path.suffix.lower() == ".json" else "toml")
 
 

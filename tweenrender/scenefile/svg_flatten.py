@@ -16,6 +16,9 @@ from svgelements import Arc, Close, CubicBezier, Line, Move, QuadraticBezier
 __all__ = ["Refusal", "Budget", "MAX_DEPTH", "subpaths", "flatten", "distinct"]
 
 MAX_DEPTH = 48  # Bézier halvings; the flatness bound shrinks 4x per halving
+MAX_COORDINATE = 1e9
+"""World coordinates of control points and vertices, as in scene files: far beyond any drawing, and
+small enough that the flattening's products stay finite."""
 
 
 class Refusal(Exception):
@@ -73,6 +76,9 @@ def flatten(segments: list[object], to_world: NDArray[np.float64], tol: float, b
             placed = local @ linear.T + offset
         if not np.all(np.isfinite(placed)):
             raise Refusal("expected finite coordinates, found infinite or NaN ones after transforms")
+        largest = float(np.abs(placed).max(initial=0.0))
+        if largest > MAX_COORDINATE:
+            raise Refusal(f"expected coordinates within ±{MAX_COORDINATE:g} after transforms, found {largest:.3g}")
         return placed
 
     out: list[NDArray[np.float64]] = [world(segments[0].start)]  # type: ignore[attr-defined]

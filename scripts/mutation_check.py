@@ -1,0 +1,260 @@
+"""Mutation check: do the tests catch plausible bugs in the core, timeline, encoders and atomic writes?
+
+    python scripts/mutation_check.py            # every mutant, one after another (about 15 minutes)
+    python scripts/mutation_check.py -k ease    # only mutants whose name contains "ease"
+    python scripts/mutation_check.py --list     # the mutants, without running anything
+
+The tree (package, tests, scenes) is copied once to a temporary folder. Each mutant
+is one small textual change to one file of that copy (the original text must occur
+there exactly once, so a stale mutant is reported rather than silently skipped); the
+tests named for it run against the copy (``PYTHONPATH`` points there, so the copy's
+package is the one imported, in subprocesses too), and the file is put back. A mutant
+is *killed* when those tests fail (or run past the time limit), *survives* when they
+pass. The unmutated copy must pass the same tests first. Prints each mutant's fate
+and the score; exits 1 if fewer than ``--required`` percent (default 90) are killed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+SKIP = shutil.ignore_patterns(".venv", ".git", "output", "__pycache__", ".pytest_cache", ".hypothesis",
+                              "*.egg-info", "build", "dist", "docs", "benchmarks")
+
+
+@dataclass(frozen=True)
+class Mutant:
+    name: str
+    file: str  # relative to the root
+    before: str  # exact text, found once
+    after: str
+    tests: tuple[str, ...]  # pytest targets
+
+
+CORE = ("tests/core", "tests/cli/test_reliability.py", "tests/pipeline/test_library.py")
+STATS = ("tests/cli/test_main.py", "tests/core/test_measures.py")
+TIMELINE = ("tests/core/test_timeline.py", "tests/pipeline/test_library.py", "tests/raster/test_frames.py")
+ENCODE = ("tests/encode", "tests/cli/test_main.py")
+ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
+
+MUTANTS = [
+    # -- core: paths ---------------------------------------------------------------------------------
+    Mutant("linear: keys swapped", "tweenrender/core/paths.py",
+           "return (1.0 - t) * k0 + t * k1", "return t * k0 + (1.0 - t) * k1", CORE),
+    Mutant("bezier2: middle weight halved", "tweenrender/core/paths.py",
+           "2.0 * s * t * p1", "s * t * p1", CORE),
+    Mutant("nonlinear: middle control point on the reshaped frame", "tweenrender/core/paths.py",
+           "p1 = 2.0 * reshaped - 0.5 * (k0 + k1)", "p1 = reshaped", CORE),
+    Mutant("nonlinear: first key's distances only", "tweenrender/core/paths.py",
+           "dist = 0.5 * (np.linalg.norm(u0, axis=-1) + np.linalg.norm(u1, axis=-1))",
+           "dist = np.linalg.norm(u0, axis=-1)", CORE),
+    Mutant("nonlinear: 180° fallback turns the wrong way", "tweenrender/core/paths.py",
+           "rotate(u0, phi / 2)", "rotate(u0, -phi / 2)", CORE),
+    Mutant("rigid: second key's spokes turned the wrong way", "tweenrender/core/paths.py",
+           "u1 = rotate(k1 - c1, -phi)", "u1 = rotate(k1 - c1, phi)", CORE),
+    Mutant("rigid: spokes not blended (non-rigid change dropped)", "tweenrender/core/paths.py",
+           "spokes = linear(u0, u1, t)", "spokes = linear(u0, u0, t)", CORE),
+    Mutant("rigid: turn eased by t²", "tweenrender/core/paths.py",
+           "rotate(spokes, (t * phi)[:, None])", "rotate(spokes, (t * t * phi)[:, None])", CORE),
+    Mutant("rigid: center moves along the first key's", "tweenrender/core/paths.py",
+           "center = (1.0 - t)[:, None] * c0 + t[:, None] * c1", "center = (1.0 - t)[:, None] * c0 + t[:, None] * c0",
+           CORE),
+    # -- core: geometry and methods ------------------------------------------------------------------
+    Mutant("centroid: median instead of mean", "tweenrender/core/geometry.py",
+           "return points.mean(axis=-2)", "return np.median(points, axis=-2)", CORE),
+    Mutant("signed area: doubled", "tweenrender/core/geometry.py",
+           "return 0.5 * cross(points, np.roll(points, -1, axis=-2)).sum(axis=-1)",
+           "return cross(points, np.roll(points, -1, axis=-2)).sum(axis=-1)", CORE + STATS),
+    Mutant("best-fit rotation: atan2 arguments swapped", "tweenrender/core/geometry.py",
+           "phi = np.arctan2(s, c)", "phi = np.arctan2(c, s)", CORE),
+    Mutant("best-fit rotation: a half turn reported as -180°", "tweenrender/core/geometry.py",
+           "return np.where(phi <= -np.pi, np.pi, phi)", "return phi", CORE),
+    Mutant("nonlinear: no fallback near a half turn", "tweenrender/core/paths.py",
+           "flat = length <= _DEGENERATE * scale", "flat = length < 0.0", CORE),
+    Mutant("rotate: clockwise y", "tweenrender/core/geometry.py",
+           "s * x + c * y", "-s * x + c * y", CORE),
+    Mutant("perimeter: longest edge", "tweenrender/core/geometry.py",
+           "return edge_lengths(points).sum(axis=-1)", "return edge_lengths(points).max(axis=-1)", CORE + STATS),
+    Mutant("interpolate: the last key not forced", "tweenrender/core/methods.py",
+           "    frames[t == 1.0] = k1\n", "", CORE),
+    # -- core: Q-curves and auto ---------------------------------------------------------------------
+    Mutant("auto: non-rigid only when every vertex changes", "tweenrender/core/qcurves.py",
+           'if "nonrigid" in kinds:', 'if kinds and all(kind == "nonrigid" for kind in kinds):',
+           CORE + ("tests/cli/test_qcurves.py",)),
+    Mutant("auto: any turn taken as rigid", "tweenrender/core/qcurves.py",
+           "turning = (gap02 <= tol) & (np.linalg.norm(q1 - cos_phi[:, None] * qm, axis=-1) <= tol)",
+           "turning = np.linalg.norm(q1 - cos_phi[:, None] * qm, axis=-1) <= tol",
+           CORE + ("tests/cli/test_qcurves.py",)),
+    Mutant("auto: nonlinear for non-rigid change too", "tweenrender/core/qcurves.py",
+           'return "nonlinear" if motion.kind == "rotation" else "linear"',
+           'return "nonlinear" if motion.kind != "translation" else "linear"', CORE + ("tests/cli/test_qcurves.py",)),
+    # -- core: measures and correspondence -----------------------------------------------------------
+    Mutant("stats: area ratio over the perimeter mean", "tweenrender/core/measures.py",
+           "area_ratio=tuple(float(a / mean_area)", "area_ratio=tuple(float(a / mean)", STATS),
+    Mutant("stats: ratio minimum is the mean", "tweenrender/core/measures.py",
+           "ratio_min=float(swept_ratio.min())", "ratio_min=float(swept_ratio.mean())", STATS),
+    Mutant("correspondence: second key centred on the first's centroid", "tweenrender/core/correspond.py",
+           "return a - centroid(a), b - centroid(b)", "return a - centroid(a), b - centroid(a)",
+           ("tests/core/test_correspond.py", "tests/cli/test_correspond.py")),
+    # -- timeline ------------------------------------------------------------------------------------
+    Mutant("ease: in-out made linear", "tweenrender/core/timeline.py",
+           "return t * t * (3.0 - 2.0 * t)", "return t", TIMELINE),
+    Mutant("ease: in and out swapped", "tweenrender/core/timeline.py",
+           'if kind == "in":\n        return t * t\n    if kind == "out":\n        return 1.0 - (1.0 - t) ** 2',
+           'if kind == "in":\n        return 1.0 - (1.0 - t) ** 2\n    if kind == "out":\n        return t * t',
+           TIMELINE),
+    Mutant("ease: out is cubic", "tweenrender/core/timeline.py",
+           "return 1.0 - (1.0 - t) ** 2", "return 1.0 - (1.0 - t) ** 3", TIMELINE),
+    Mutant("ease: the segment takes the ease of the key that ends it", "tweenrender/core/timeline.py",
+           "segments.append(Segment(before.time, after.time, k0, k1, before.ease,",
+           "segments.append(Segment(before.time, after.time, k0, k1, after.ease,", TIMELINE),
+    Mutant("frame count: the last key's frame dropped", "tweenrender/core/timeline.py",
+           "return round(duration * fps) + 1", "return round(duration * fps)",
+           TIMELINE + ("tests/cli/test_main.py",)),
+    Mutant("local t: measured from time 0", "tweenrender/core/timeline.py",
+           "t = np.clip((times - self.start) / span, 0.0, 1.0)", "t = np.clip(times / span, 0.0, 1.0)", TIMELINE),
+    Mutant("local t: not clamped outside the segment", "tweenrender/core/timeline.py",
+           "t = np.clip((times - self.start) / span, 0.0, 1.0)", "t = (times - self.start) / span", TIMELINE),
+    Mutant("timeline: a time on a key picks the segment before", "tweenrender/core/timeline.py",
+           'np.searchsorted(starts, times, side="right")', 'np.searchsorted(starts, times, side="left")', TIMELINE),
+    # -- encode --------------------------------------------------------------------------------------
+    Mutant("PNG sink: fewer frames than expected accepted", "tweenrender/encode/sinks.py",
+           "if self.count != self.expected:", "if self.count > self.expected:", ENCODE),
+    Mutant("video sink: the frame count not checked", "tweenrender/encode/sinks.py",
+           "if frames != self.expected or size != (self.width, self.height):",
+           "if size != (self.width, self.height):", ENCODE),
+    Mutant("video sink: abort leaves the temporary", "tweenrender/encode/sinks.py",
+           "            self.process.wait()\n        discard(self.temporary)\n        self.log.close()",
+           "            self.process.wait()\n        self.log.close()", ENCODE + ("tests/cli/test_reliability.py",)),
+    Mutant("render: the sink told the wrong frame count", "tweenrender/pipeline/stream.py",
+           "job.rate, len(indices), pixel_format=layout)", "job.rate, len(indices) + 1, pixel_format=layout)", ENCODE),
+    Mutant("render: video at the default rate", "tweenrender/pipeline/stream.py",
+           "sink = open_sink(fmt, target, width, height, job.rate,",
+           "sink = open_sink(fmt, target, width, height, 24.0,", ENCODE),
+    Mutant("ffmpeg: frame rate rounded to whole frames", "tweenrender/encode/sinks.py",
+           '"-framerate", f"{fps:g}"', '"-framerate", f"{round(fps)}"', ENCODE),
+    Mutant("probe: the first progress line's frame count", "tweenrender/encode/sinks.py",
+           "return int(counts[-1]), (", "return int(counts[0]), (", ENCODE),
+    Mutant("chunks: parts joined in reverse", "tweenrender/pipeline/chunks.py",
+           "        for future in futures:\n            part = sibling(",
+           "        for future in futures[::-1]:\n            part = sibling(", ("tests/pipeline/test_workers.py",)),
+    Mutant("limits: odd sizes allowed for H.264", "tweenrender/encode/limits.py",
+           '_EVEN = ("mp4",)', "_EVEN = ()", ENCODE),
+    Mutant("limits: ffmpeg's picture check ignored", "tweenrender/encode/limits.py",
+           "if 8 * (width + 128) * (height + 128) >= _PICTURE_LIMIT:", "if False:", ENCODE),
+    Mutant("ffmpeg: no death signal", "tweenrender/encode/lifeline.py",
+           "        _set_death_signal()\n        if os.getppid() != parent:",
+           "        if os.getppid() != parent:", ("tests/encode/test_lifeline.py", "tests/cli/test_signals.py")),
+    # -- atomic writes and targets -------------------------------------------------------------------
+    Mutant("roll-back deletes the old folder", "tweenrender/encode/atomic.py",
+           "            if old is not None:\n                os.replace(old, target)\n            raise",
+           "            if old is not None:\n                shutil.rmtree(old, ignore_errors=True)\n            raise",
+           ATOMIC),
+    Mutant("commit: copy instead of an atomic move", "tweenrender/encode/atomic.py",
+           "        _fsync(temporary)\n        os.replace(temporary, target)",
+           "        _fsync(temporary)\n        shutil.copyfile(temporary, target)", ATOMIC),
+    Mutant("replacing: temporary kept on an interrupt", "tweenrender/encode/atomic.py",
+           "    except BaseException:\n        discard(temporary)\n        raise",
+           "    except BaseException:\n        raise", ("tests/encode/test_atomic.py", "tests/cli")),
+    Mutant("sweep: a live process's temporaries removed", "tweenrender/encode/atomic.py",
+           "if not match or _alive(int(match.group(1))):", "if not match:", ATOMIC),
+    Mutant("sweep: a stepped-aside folder not put back", "tweenrender/encode/atomic.py",
+           'if match.group(2) == ".old" and not target.exists():', "if False:", ATOMIC),
+    Mutant("prepare: an unwritable folder not reported", "tweenrender/encode/atomic.py",
+           "if not os.access(parent, os.W_OK):", "if False:", ATOMIC),
+    Mutant("frames folder: any .png counts as a frame", "tweenrender/encode/targets.py",
+           "FRAME_NAME.fullmatch(entry.name)", 'entry.name.endswith(".png")', ATOMIC),
+    Mutant("frames folder: not checked again before the swap", "tweenrender/encode/sinks.py",
+           "            check_frames_folder(self.target)  # again", "            pass  # again", ATOMIC),
+    Mutant("output name: a parent folder accepted", "tweenrender/encode/targets.py",
+           'elif target.name == "..":', 'elif target.name == "...":', ATOMIC),
+    Mutant("commit: the old link or folder left beside the target", "tweenrender/encode/atomic.py",
+           "        discard(old)  # a folder", "        pass  # a folder", ATOMIC),
+    Mutant("signals: a hang-up not handled", "tweenrender/cli/main.py",
+           '("SIGTERM", "SIGHUP")', '("SIGTERM",)', ("tests/cli/test_signals.py",)),
+]
+
+
+def run_tests(tree: Path, tests: tuple[str, ...], timeout: float) -> tuple[str, float]:
+    """'passed', 'failed' or 'timeout' for ``tests`` run in ``tree``, and the seconds it took;
+    pytest's report is left in ``tree/../pytest.log``."""
+    env = {**os.environ, "PYTHONPATH": str(tree), "PYTHONDONTWRITEBYTECODE": "1"}
+    started = time.monotonic()
+    command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", "-o", "addopts=",
+               "--hypothesis-seed=0", *tests]
+    with open(tree.parent / "pytest.log", "wb") as log:
+        process = subprocess.Popen(command, cwd=tree, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                   start_new_session=True)
+        try:
+            code = process.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, 9)
+            process.wait()
+            return "timeout", time.monotonic() - started
+    if code not in (0, 1):
+        raise RuntimeError(f"pytest exited {code} for {' '.join(tests)} (collection error or no tests)")
+    return ("passed" if code == 0 else "failed"), time.monotonic() - started
+
+
+def main(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("-k", default="", help="only mutants whose name contains this")
+    parser.add_argument("--list", action="store_true", help="list the mutants and stop")
+    parser.add_argument("--timeout", type=float, default=300.0, help="seconds per test run (default 300)")
+    parser.add_argument("--required", type=float, default=90.0, help="percent to kill (default 90)")
+    args = parser.parse_args(argv)
+    mutants = [m for m in MUTANTS if args.k.lower() in m.name.lower()]
+    if not mutants:
+        print(f"no mutant's name contains {args.k!r}")
+        return 2
+    if args.list:
+        for m in mutants:
+            print(f"{m.file}: {m.name}")
+        print(f"{len(mutants)} mutants")
+        return 0
+    with tempfile.TemporaryDirectory(prefix="tweenrender-mutants-") as folder:
+        tree = Path(folder) / "tree"
+        shutil.copytree(ROOT, tree, ignore=SKIP)
+        for m in mutants:  # every mutant must still apply to the code as it is
+            found = (tree / m.file).read_text().count(m.before)
+            if found != 1:
+                print(f"stale mutant {m.name!r}: its text occurs {found} times in {m.file}")
+                return 2
+        targets = tuple(sorted({t for m in mutants for t in m.tests}))
+        print(f"unmutated tree: {' '.join(targets)} ...", flush=True)
+        fate, seconds = run_tests(tree, targets, args.timeout * 4)
+        if fate != "passed":
+            report = (tree.parent / "pytest.log").read_text(errors="replace").splitlines()
+            print("\n".join(report[-30:]))
+            print(f"the unmutated tree does not pass its own tests ({fate}); nothing to measure")
+            return 2
+        print(f"  passed in {seconds:.0f} s\n", flush=True)
+        killed = 0
+        for number, m in enumerate(mutants, start=1):
+            path = tree / m.file
+            original = path.read_text()
+            path.write_text(original.replace(m.before, m.after))
+            try:
+                fate, seconds = run_tests(tree, m.tests, args.timeout)
+            finally:
+                path.write_text(original)
+            dead = fate != "passed"
+            killed += dead
+            word = {"failed": "killed", "timeout": "killed (timeout)", "passed": "SURVIVED"}[fate]
+            print(f"{number:3d}. {word:17} {seconds:5.0f} s  {m.file}: {m.name}", flush=True)
+    score = 100.0 * killed / len(mutants)
+    print(f"\n{killed} of {len(mutants)} mutants killed: {score:.1f} % (required {args.required:g} %)")
+    return 0 if score >= args.required else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

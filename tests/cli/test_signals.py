@@ -81,6 +81,13 @@ def _ours(pid: int) -> bool:
     return b"tweenrender" in command or b"ffmpeg" in command
 
 
+def _is_ffmpeg(pid: int) -> bool:
+    try:
+        return b"ffmpeg" in Path(f"/proc/{pid}/cmdline").read_bytes()
+    except OSError:
+        return False
+
+
 def _start(folder: Path, scene: Path, target: Path, *flags: str, children: int) -> subprocess.Popen[bytes]:
     """Start a render into ``target``; return once it writes frames and has ``children`` processes."""
     before = set(folder.iterdir())
@@ -91,7 +98,10 @@ def _start(folder: Path, scene: Path, target: Path, *flags: str, children: int) 
     while time.monotonic() < deadline:
         fresh = [p for p in set(folder.iterdir()) - before if p.name.startswith(f".{target.name}.")]
         started = fresh and (any(fresh[0].iterdir()) if fresh[0].is_dir() else fresh[0].stat().st_size > 0)
-        if started and len(descendants(process.pid)) >= children:
+        kids = descendants(process.pid)
+        # a video in chunks writes beside the target only once a chunk is done: its encoders show it started
+        started = started or sum(_is_ffmpeg(pid) for pid in kids) >= 2
+        if started and len(kids) >= children:
             _started[-1] = (process.pid, descendants(process.pid))
             return process
         assert process.poll() is None, process.communicate()

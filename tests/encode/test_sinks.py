@@ -100,5 +100,5 @@ def test_the_probe_reads_the_final_frame_count(monkeypatch) -> None:
     def ran(command: list[str], **options: object) -> subprocess.CompletedProcess[str]:
         return subprocess.CompletedProcess(command, 0, "", PROBE_OUTPUT)
 
-    monkeypatch.setattr(sinks.subprocess, "run", ran)
+    monkeypatch.setattr(sinks, "run_program", ran)
     assert sinks.probe_video(Path("probe.mp4")) == (3000, (64, 48))

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import os
 import signal
 import sys
 from importlib import import_module
@@ -82,7 +83,11 @@ def _terminate_cleanly() -> Iterator[None]:
     Python's default for either ends the process on the spot; as an exception it
     unwinds through the sinks, which remove their temporaries.
     """
+    me = os.getpid()
+
     def stop(signum: int, frame: object) -> None:
+        if os.getpid() != me:  # a child forked to start a program (ffmpeg), caught before its exec
+            os._exit(128 + signum)
         raise SystemExit(128 + signum)
 
     handled = [getattr(signal, name) for name in ("SIGTERM", "SIGHUP") if hasattr(signal, name)]

@@ -19,7 +19,7 @@ from typing import Iterator
 from ..errors import EncodeError
 
 __all__ = ["sibling", "prepare_folder", "commit_file", "commit_folder", "discard", "sweep", "replacing",
-           "os_reason"]
+           "os_reason", "alive"]
 
 
 def os_reason(error: OSError) -> str:
@@ -32,7 +32,8 @@ def sibling(target: Path, suffix: str = "") -> Path:
     return target.with_name(f".{target.name}.{os.getpid()}-{uuid.uuid4().hex[:8]}.part{suffix}")
 
 
-def _alive(pid: int) -> bool:
+def alive(pid: int) -> bool:
+    """Whether process ``pid`` runs (one not ours to signal counts as running)."""
     if pid == os.getpid():
         return True
     try:
@@ -54,7 +55,7 @@ def sweep(target: Path) -> list[Path]:
         return removed
     for entry in entries:
         match = pattern.fullmatch(entry.name)
-        if not match or _alive(int(match.group(1))):
+        if not match or alive(int(match.group(1))):
             continue
         if match.group(2) == ".old" and not target.exists():
             # killed between commit_folder's two renames: this is the earlier output, put it back

@@ -3,14 +3,12 @@ stream copy, lossless parts into a GIF (whose palette must see every frame)."""
 
 from __future__ import annotations
 
-import subprocess
-import tempfile
 from pathlib import Path
 from typing import Sequence
 
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, discard, prepare_folder, sibling
-from .lifeline import death_signal_setup
+from .lifeline import run_program
 
 __all__ = ["concat", "CONCAT_FORMATS"]
 
@@ -62,16 +60,21 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
         if rate is None:
             raise OptionError(f"{target}: joining GIF parts needs the frame rate")
         seconds = [_frames_of(path) / rate for path in paths]
-    with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as listing:
-        listing.writelines(_listed(p, s) for p, s in zip(paths, seconds))
+    # the list beside the target, like every temporary: a killed run's is swept by the next one
+    listing = sibling(target, ".txt")
+    try:
+        listing.write_text("".join(_listed(p, s) for p, s in zip(paths, seconds)))
+    except OSError as error:
+        discard(listing)
+        raise EncodeError(f"{target}: cannot write the list of parts beside it ({error.strerror or error})") from None
     if fmt == "gif":
         output = encoder_options("gif", alpha=alpha)
     else:
         output = ["-map", "0:v", "-c", "copy", *(["-movflags", "+faststart"] if fmt == "mp4" else []), "-f", fmt]
     command = [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
-               "-f", "concat", "-safe", "0", "-i", listing.name, *output, str(temporary)]
+               "-f", "concat", "-safe", "0", "-i", str(listing), *output, str(temporary)]
     try:
-        done = subprocess.run(command, capture_output=True, text=True, preexec_fn=death_signal_setup())
+        done = run_program(command, text=True)
         if done.returncode != 0:
             said = " | ".join(line for line in done.stderr.strip().splitlines()[-4:] if line.strip())
             raise EncodeError(f"{target}: ffmpeg could not join {len(paths)} parts: {said or 'no message'}")
@@ -86,7 +89,7 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
         discard(temporary)
         raise
     finally:
-        Path(listing.name).unlink(missing_ok=True)
+        discard(listing)
     return target
 
 

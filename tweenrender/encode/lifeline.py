@@ -10,13 +10,16 @@ its input, which closes when the parent dies.
 from __future__ import annotations
 
 import ctypes
+import contextlib
 import os
 import signal
+import subprocess
 import sys
 import threading
-from typing import Callable
+from typing import Any, Callable, Iterator
 
-__all__ = ["die_with_parent", "death_signal_setup", "watch_parent", "worker_setup", "part_worker_setup", "Stopped"]
+__all__ = ["die_with_parent", "death_signal_setup", "watch_parent", "worker_setup", "part_worker_setup", "Stopped", "stoppable",
+           "start_program", "run_program"]
 
 _PR_SET_PDEATHSIG = 1
 _POLL_SECONDS = 0.25
@@ -50,21 +53,27 @@ def _end_now() -> None:
     os._exit(1)
 
 
-def watch_parent(parent: int) -> threading.Thread:
-    """Start a daemon thread that ends this process once ``parent`` no longer runs (polled 4 times a second)."""
+def watch_parent(parent: int, grace: float = 0.0) -> threading.Thread:
+    """Start a daemon thread that ends this process once ``parent`` no longer runs (polled 4 times a
+    second), ``grace`` seconds after it notices (time for a death signal's own clean-up to finish)."""
     own_parent = os.getppid()
 
+    def gone() -> bool:
+        if os.getppid() != own_parent:  # re-parented: whoever started this process is gone
+            return True
+        try:
+            os.kill(parent, 0)
+        except ProcessLookupError:
+            return True
+        except OSError:
+            pass  # running, but not ours to signal
+        return False
+
     def watch() -> None:
-        while True:
-            if os.getppid() != own_parent:  # re-parented: whoever started this process is gone
-                _end_now()
-            try:
-                os.kill(parent, 0)
-            except ProcessLookupError:
-                _end_now()
-            except OSError:
-                pass  # running, but not ours to signal
+        while not gone():
             threading.Event().wait(_POLL_SECONDS)
+        threading.Event().wait(grace)
+        _end_now()
 
     thread = threading.Thread(target=watch, name="tweenrender-parent-watch", daemon=True)
     thread.start()
@@ -103,8 +112,38 @@ def death_signal_setup() -> Callable[[], None]:
         _set_death_signal()
         if os.getppid() != parent:
             os._exit(1)
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, _HELD)  # held by start_program while forking
 
     return setup
+
+
+_HELD = {getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name)}
+
+
+def start_program(command: list[str], **options: Any) -> subprocess.Popen[Any]:
+    """``subprocess.Popen(command, **options)`` for a program that dies with this process.
+
+    The signals that stop a render are held while it forks: Python runs its fork hooks then, and a
+    handler that raises there can only be reported, not obeyed. They arrive once the program has
+    started (and the program itself starts with them unblocked).
+    """
+    held = signal.pthread_sigmask(signal.SIG_BLOCK, _HELD)
+    try:
+        return subprocess.Popen(command, preexec_fn=death_signal_setup(), **options)
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, held)
+
+
+def run_program(command: list[str], **options: Any) -> subprocess.CompletedProcess[Any]:
+    """Like ``subprocess.run(command, capture_output=True, **options)``, started by :func:`start_program`."""
+    process = start_program(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, **options)
+    try:
+        out, err = process.communicate()
+    except BaseException:
+        process.kill()
+        process.wait()
+        raise
+    return subprocess.CompletedProcess(command, process.returncode, out, err)
 
 
 def worker_setup(parent: int) -> None:
@@ -123,8 +162,25 @@ def worker_setup(parent: int) -> None:
 
 
 class Stopped(SystemExit):
-    """Raised in a chunk worker by SIGTERM; whoever catches it after cleaning up must end the process
-    (``os._exit``): a process pool's worker would otherwise take it as a task's failure and wait on."""
+    """Raised in a chunk worker by SIGTERM inside :func:`stoppable`; whoever catches it after cleaning
+    up must end the process (``os._exit``): a process pool's worker would otherwise take it as a
+    task's failure and wait on."""
+
+
+_stoppable = False
+
+
+@contextlib.contextmanager
+def stoppable() -> Iterator[None]:
+    """Where SIGTERM raises :class:`Stopped` in a chunk worker (rendering a part, whose files and encoder
+    are then cleaned up); anywhere else the worker ends at once — it may be blocked sending a result
+    to a parent that is gone, where an exception would only be sent on after it and block again."""
+    global _stoppable
+    _stoppable = True
+    try:
+        yield
+    finally:
+        _stoppable = False
 
 
 def part_worker_setup(parent: int) -> None:
@@ -132,11 +188,19 @@ def part_worker_setup(parent: int) -> None:
     from the parent stopping it, or from the kernel when the parent dies — raises :class:`Stopped`,
     so the part it was writing and its encoder are cleaned up on the way out."""
     die_with_parent(parent, int(signal.SIGTERM))
+    # and, whatever the signal found it doing (sending a result to no one blocks for good), a watch
+    # that ends it a second after the parent is gone
+    watch_parent(parent, grace=1.0)
     for name in ("SIGINT", "SIGHUP"):
         if hasattr(signal, name):
             signal.signal(getattr(signal, name), signal.SIG_IGN)
 
+    me = os.getpid()
+
     def stop(number: int, frame: object) -> None:
+        # idle, or a child forked to start ffmpeg and caught before its exec: end at once, quietly
+        if not _stoppable or os.getpid() != me:
+            os._exit(128 + number)
         raise Stopped(128 + number)
 
     signal.signal(signal.SIGTERM, stop)

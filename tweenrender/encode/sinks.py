@@ -18,12 +18,12 @@ from numpy.typing import NDArray
 
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
-from .lifeline import death_signal_setup
+from .lifeline import run_program, start_program
 from .limits import check_frame_size
 from .targets import check_frames_folder
 
 __all__ = ["FORMATS", "ALPHA_FORMATS", "LOSSLESS", "PIXEL_FORMATS", "check_alpha", "Sink", "open_sink", "PngSequence",
-           "FFmpegVideo", "probe_video", "ffmpeg_command", "encoder_options", "x264_tuning", "png_bytes"]
+           "FFmpegVideo", "probe_video", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning", "png_bytes"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
 """Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout."""
@@ -93,6 +93,13 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     if fmt == "png":
         return PngSequence(target, frames)
     return FFmpegVideo(fmt, target, width, height, fps, frames, pixel_format, alpha)
+
+
+def ffmpeg_exe() -> str:
+    """The path of the ffmpeg bundled with imageio-ffmpeg (found, and checked by running it, once a process)."""
+    import imageio_ffmpeg
+
+    return imageio_ffmpeg.get_ffmpeg_exe()
 
 
 def check_alpha(fmt: str, alpha: bool) -> None:
@@ -215,9 +222,8 @@ class FFmpegVideo:
         # unbuffered: Python's 8 KiB buffer would only add a copy of every frame. Its own
         # session: a terminal's Ctrl-C reaches only this process, which then stops ffmpeg
         # itself (abort), instead of racing ffmpeg's own shutdown. It dies with this process.
-        self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                        stderr=self.log, bufsize=0, start_new_session=True,
-                                        preexec_fn=death_signal_setup())
+        self.process = start_program(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                                     stderr=self.log, bufsize=0, start_new_session=True)
         _grow_pipe(self.process.stdin)
         self.count = 0
 
@@ -310,9 +316,8 @@ def probe_video(path: Path) -> tuple[int, tuple[int, int]]:
     """
     import imageio_ffmpeg
 
-    done = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", str(path),
-                           "-map", "0:v:0", "-c", "copy", "-f", "null", "-"],
-                          capture_output=True, text=True, errors="replace", preexec_fn=death_signal_setup())
+    done = run_program([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", str(path),
+                        "-map", "0:v:0", "-c", "copy", "-f", "null", "-"], text=True, errors="replace")
     said = done.stderr
     stream = re.search(r"Stream #0:\d+.*?: Video: [^\n]*?(?<!\w)(\d{1,5})x(\d{1,5})(?!\w)", said)
     counts = re.findall(r"frame=\s*(\d+)", said)

@@ -34,6 +34,23 @@ def part_format(fmt: str) -> str:
     return LOSSLESS if fmt == "gif" else fmt
 
 
+_PART_PREFIX = "tweenrender-part-"
+"""Folders of parts being rendered, in the temporary folder: ``tweenrender-part-<render's pid>-<random>``."""
+
+
+def sweep_parts() -> None:
+    """Remove the part folders of renders that no longer run (killed with their workers before these
+    could clean up)."""
+    import shutil
+
+    from ..encode.atomic import alive
+
+    for folder in Path(tempfile.gettempdir()).glob(f"{_PART_PREFIX}*-*"):
+        owner = folder.name[len(_PART_PREFIX):].split("-", 1)[0]
+        if owner.isdigit() and not alive(int(owner)):
+            shutil.rmtree(folder, ignore_errors=True)
+
+
 def render_part(job: RenderJob, fmt: str) -> Any:
     """Render ``job`` (typically a ``frames`` chunk) for a ``fmt`` output where this runs.
 
@@ -41,19 +58,20 @@ def render_part(job: RenderJob, fmt: str) -> Any:
     a GIF's part), or for ``fmt`` png the list of each frame's PNG bytes. Meant
     to run on an executor's worker, whose files it does not keep.
     """
-    from ..encode.lifeline import Stopped
+    from ..encode.lifeline import Stopped, stoppable
     from ..encode.sinks import png_bytes
     from .job import Frames
     from .stream import render
 
     try:
-        if fmt == "png":
-            frames = Frames(job)
-            return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
-        with tempfile.TemporaryDirectory(prefix="tweenrender-part-") as folder:
-            path = Path(folder) / f"part.{fmt}"
-            render(job, fmt, path)
-            return path.read_bytes()
+        with stoppable():
+            if fmt == "png":
+                frames = Frames(job)
+                return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
+            with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getppid()}-") as folder:
+                path = Path(folder) / f"part.{fmt}"
+                render(job, fmt, path)
+                return path.read_bytes()
     except Stopped as stop:  # the part, its folder and its encoder are gone by now: end the worker
         os._exit(stop.code if isinstance(stop.code, int) else 1)
 
@@ -93,6 +111,12 @@ def render_in_processes(job: RenderJob, fmt: str, target: Path, workers: int,
         return render(job, fmt, target, progress, workers=workers)
     from ..encode.lifeline import part_worker_setup
 
+    sweep_parts()
+    # found (and checked by running it) once here, not by each worker: a worker should not fork
+    # but to start the encoder (see encode.lifeline.start_program)
+    from ..encode.sinks import ffmpeg_exe
+
+    ffmpeg_exe()
     with ProcessPoolExecutor(max_workers=workers, initializer=part_worker_setup, initargs=(os.getpid(),)) as pool:
         try:
             return render_chunks(job, fmt, target, pool, chunks=workers, progress=progress)

@@ -197,7 +197,7 @@ def stroke_costs(folder: Path) -> None:
     count = 12
     composer = frames.composer
     raster, view = composer.raster, composer.viewport
-    polygons = [frames.frame_polygons(None, i * 10) for i in range(count)]
+    polygons = [[at.contours[0] for at in frames.frame_shapes(None, i * 10)] for i in range(count)]
     paths = [[polygon_path(view.to_pixels(p)) for p in ps] for ps in polygons]
 
     def paint(**settings: object) -> skia.Paint:

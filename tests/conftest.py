@@ -44,3 +44,12 @@ def open_tmp_path():
             if path.is_dir() and not path.is_symlink():
                 path.chmod(0o755)
         shutil.rmtree(folder)
+
+
+@pytest.fixture(scope="module")
+def pool():
+    """Two worker processes shared by a module's tests."""
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(max_workers=2) as executor:
+        yield executor

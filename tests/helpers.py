@@ -126,3 +126,15 @@ def unprivileged(function: Callable[..., Any], *args: Any) -> Any:
     done, value = pickle.loads(data)
     assert done, f"the unprivileged child failed: {value}"
     return value
+
+
+SMALL = SQUARE.replace("size = [320, 240]", "size = [160, 120]").replace("time = 2\n", "time = 1\n")
+"""25 frames of a 160 × 120 square that slides right and turns a quarter."""
+
+
+def small_job(folder: Path, **changes):  # type: ignore[no-untyped-def]
+    """A :class:`RenderJob` of :data:`SMALL`, with ``changes`` to its fields."""
+    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.scenefile import load_scene
+
+    return RenderJob(load_scene(write_scene(folder, SMALL)), **changes)

@@ -8,25 +8,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests.helpers import SQUARE, decode, write_scene
+from tests.helpers import SMALL, SQUARE, decode, small_job, write_scene
 
 pytest.importorskip("skia")
 
-# 25 frames of a 160×120 square that slides right and turns a quarter
-SMALL = SQUARE.replace("size = [320, 240]", "size = [160, 120]").replace("time = 2\n", "time = 1\n")
-
-
-@pytest.fixture(scope="module")
-def pool():
-    with ProcessPoolExecutor(max_workers=2) as executor:
-        yield executor
-
-
-def _job(tmp_path: Path, **changes):  # type: ignore[no-untyped-def]
-    from tweenrender.pipeline.job import RenderJob
-    from tweenrender.scenefile import load_scene
-
-    return RenderJob(load_scene(write_scene(tmp_path, SMALL)), **changes)
+_job = small_job
 
 
 def _blue(frame: np.ndarray) -> np.ndarray:

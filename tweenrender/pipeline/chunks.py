@@ -142,21 +142,13 @@ def _stop_workers(pool: Any) -> None:
 def _join_frames(job: RenderJob, target: Path, futures: list[Future[Any]], progress: Progress | None) -> Path:
     from ..encode import open_sink
 
+    from .stream import stream_into
+
     width, height = job.frame_size
     total = len(job.frame_range)
     sink = open_sink("png", target, width, height, job.rate, total)
-    try:
-        done = 0
-        for future in futures:
-            for data in future.result():
-                sink.write_encoded(data)  # type: ignore[attr-defined]
-                done += 1
-                if progress is not None:
-                    progress(done, total)
-        return sink.close()
-    except BaseException:
-        sink.abort()
-        raise
+    pictures = (data for future in futures for data in future.result())  # each part's PNG bytes, in order
+    return stream_into(sink, pictures, total, progress, sink.write_encoded)  # type: ignore[attr-defined]
 
 
 def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: list[Future[Any]],

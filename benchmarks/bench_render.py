@@ -185,6 +185,8 @@ def stroke_costs(folder: Path) -> None:
     import numpy as np
     import skia
 
+    import distance_stroke
+
     from tweenrender.pipeline.job import Frames, RenderJob
     from tweenrender.raster.surface import polygon_path
     from tweenrender.scenefile import load_scene
@@ -198,7 +200,11 @@ def stroke_costs(folder: Path) -> None:
     composer = frames.composer
     raster, view = composer.raster, composer.viewport
     polygons = [[at.contours[0] for at in frames.frame_shapes(None, i * 10)] for i in range(count)]
-    paths = [[polygon_path(view.to_pixels(p)) for p in ps] for ps in polygons]
+    pixels = [[view.to_pixels(p) for p in ps] for ps in polygons]
+    paths = [[polygon_path(p) for p in ps] for ps in pixels]
+    ink = (29, 43, 80, 255)
+    scratch = distance_stroke.Scratch(raster.height, raster.width)
+    distance_stroke.stroke(raster.bgra(), pixels[0][:1], [True], 2.0, ink, scratch)  # compiled before timing
 
     def paint(**settings: object) -> skia.Paint:
         return skia.Paint(**{"AntiAlias": True, "Color": skia.ColorSetARGB(255, 29, 43, 80), **settings})
@@ -248,8 +254,12 @@ def stroke_costs(folder: Path) -> None:
         ("fill and stroke in one pass (kStrokeAndFill, one colour)", timed(lambda p: raster.canvas.drawPath(p, both))),
         ("fill + stroke as drawn before", timed(lambda p: (raster.canvas.drawPath(p, fill),
                                                           raster.canvas.drawPath(p, stroke)))),
-        ("fill + stroke as drawn now (draw_path)", timed(lambda p: (raster.canvas.drawPath(p, aliased),
-                                                                    raster.canvas.drawPath(p, stroke)))),
+        ("fill + stroke as drawn now (aliased fill under skia's stroke)",
+         timed(lambda p: (raster.canvas.drawPath(p, aliased), raster.canvas.drawPath(p, stroke)))),
+        ("stroke from distances (distance_stroke.py), nearest edge only",
+         timed(lambda p: distance_stroke.stroke(raster.bgra(), [p], [True], 2.0, ink, scratch, False), pixels)),
+        ("stroke from distances, two edges where they cross a pixel",
+         timed(lambda p: distance_stroke.stroke(raster.bgra(), [p], [True], 2.0, ink, scratch, True), pixels)),
     ]
     lengths = np.concatenate([np.hypot(*np.diff(view.to_pixels(p), axis=0).T) for p in polygons[0]])
     print(f"## Where a stroked frame's drawing goes (100 shapes x 500 vertices, 2 px outline, 1080p; {load()})")

@@ -48,7 +48,7 @@ def frames(column: str, segment, t: np.ndarray) -> np.ndarray:
 def segments(name: str):
     scene = load_scene(ROOT / "scenes" / f"{name}.toml")
     for shape in scene.shapes:
-        yield from build_track(shape, scene.matching, scene.unmatched, scene.balance_of(shape)).segments
+        yield from build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape)).segments
 
 
 def articulated() -> None:

@@ -52,6 +52,16 @@ def test_check_json_shows_the_scene_as_loaded(cli, tmp_path: Path) -> None:
     assert code == 0 and data["size"] == [320, 240] and data["fps"] == 24.0 and data["view"] == [-2, -2, 10, 7]
     key = data["shapes"][0]["keys"][1]
     assert key["time"] == 2.0 and key["points"] == [[7, 1], [7, 3], [5, 3], [5, 1]]
+    assert data["balance"] == "copies" and data["shapes"][0]["balance"] == "copies"
+
+
+def test_check_json_gives_each_shapes_balance(cli, tmp_path: Path) -> None:
+    second = SQUARE[SQUARE.index("[[shape]]"):].replace('name = "sq"', 'name = "sq2"\nbalance = "copies"')
+    two = SQUARE + second
+    scene = write_scene(tmp_path, 'balance = "spread"\n' + two)
+    data = json.loads(cli("check", scene, "--json")[1])
+    assert data["balance"] == "spread"
+    assert [shape["balance"] for shape in data["shapes"]] == ["spread", "copies"]
 
 
 def test_check_many(cli) -> None:

@@ -54,7 +54,7 @@ def test_keys_are_hit_and_the_vertex_mean_moves_straight() -> None:
 def _segments(name: str, balance: str = "copies"):
     scene = load_scene(SCENES / f"{name}.toml")
     for shape in scene.shapes:
-        yield from build_track(shape, scene.matching, balance).segments
+        yield from build_track(shape, scene.matching, balance=balance).segments
 
 
 @pytest.mark.parametrize("name", ["walk", "hinge", "roofbox"])

@@ -254,7 +254,7 @@ def _still(key: Key) -> ShapeAt:
                    not key.hidden and key.paint.visible)
 
 
-def build_track(shape: Shape, matching: Matching, unmatched: str = "grow", balance: str = "copies") -> Track:
+def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", balance: str = "copies") -> Track:
     """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through.
 
     ``unmatched`` is the rule for contours without a partner (``shape.unmatched`` overrides it);

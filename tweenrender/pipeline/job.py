@@ -58,7 +58,7 @@ def pick_frames(spec: str | range | None, total: int) -> range:
 
 
 def tracks_of(scene: Scene) -> tuple[Track, ...]:
-    return tuple(build_track(shape, scene.matching, scene.unmatched, scene.balance_of(shape))
+    return tuple(build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
                  for shape in scene.shapes)
 
 

@@ -24,6 +24,7 @@ def scene_dict(scene: Scene, view: Sequence[float]) -> dict[str, Any]:
         "view": list(view),
         "method": scene.method,
         "compare": list(scene.compare),
+        "balance": scene.balance,
         "unmatched": scene.unmatched,
         "shapes": [_shape(scene, shape) for shape in scene.shapes],
     }
@@ -34,6 +35,7 @@ def _shape(scene: Scene, shape: Shape) -> dict[str, Any]:
     return {
         "name": shape.name,
         "method": scene.method_of(shape),
+        "balance": scene.balance_of(shape),
         "joints": [list(j) for j in shape.joints],
         "fill_rule": shape.fill_rule,
         "cap": shape.cap,

@@ -25,7 +25,7 @@ def metric_panels(scene: Scene, methods: Sequence[str]) -> list[MPanel]:
 
     panels = []
     for shape in scene.shapes:
-        track = build_track(shape, scene.matching, scene.balance_of(shape))
+        track = build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
         for index, segment in enumerate(track.segments):
             series, crossing = {}, {}
             for method in methods:

@@ -39,7 +39,7 @@ def entries(scene: Scene, matching: Matching | None = None, closed_only: bool = 
     """
     matching = matching or scene.matching
     for shape in scene.shapes:
-        track = build_track(shape, matching, scene.unmatched, scene.balance_of(shape))
+        track = build_track(shape, matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
         for index, segment in enumerate(track.segments):
             if not all(segment.shown):
                 continue

@@ -1,6 +1,7 @@
 """Opaque MP4 and WebM frames go to ffmpeg as yuv420p planes made here: the planes hold BT.601 limited-range
-levels (the textbook values of the primaries), chroma is each 2 × 2 block's mean, and what players decode
-is the colour drawn, in place, and what the RGB path gave, labelled as BT.601 "tv"."""
+levels (the textbook values of the primaries), chroma pairs pixels across and halves the rows with swscale's
+bicubic filter (within a level of ffmpeg's own conversion), and what players decode is the colour drawn, in
+place, and what the RGB path gave, labelled as BT.601 "tv"."""
 
 from __future__ import annotations
 
@@ -44,20 +45,72 @@ def test_primaries_take_their_bt601_levels(name: str, order: str) -> None:
     assert set(planes[:24]) == {y} and set(planes[24:30]) == {u} and set(planes[30:]) == {v}
 
 
-def test_chroma_is_each_blocks_mean_and_an_edge_stays_put() -> None:
-    # columns 0-3 red, 4-7 blue; the lower half's block at columns 2-3 mixes red and blue pixels
-    frame = np.zeros((4, 8, 4), np.uint8)
+def test_chroma_pairs_pixels_across_and_an_edge_stays_put() -> None:
+    # columns 0-3 red, 4-7 blue, the same down every column (so the filter down the rows changes nothing);
+    # column 3 blue too in the lower half: the block of columns 2-3 there is half red, half blue
+    frame = np.zeros((8, 8, 4), np.uint8)
     frame[..., 3] = 255
     frame[:, :4, 2] = 255  # red (BGRA order)
     frame[:, 4:, 0] = 255  # blue
-    frame[2, 3] = (255, 0, 0, 255)  # one blue pixel in the block of rows 2-3, columns 2-3
-    frame[3, 3] = (255, 0, 0, 255)  # and a second: that block is half red, half blue
-    convert = Yuv420(8, 4)
+    convert = Yuv420(8, 8)
     convert(frame)
     assert convert.y[0].tolist() == [81] * 4 + [41] * 4  # each pixel its own Y: the edge where it was drawn
-    assert convert.u.tolist() == [[90, 90, 240, 240], [90, 165, 240, 240]]
-    assert convert.v.tolist() == [[240, 240, 110, 110], [240, 175, 110, 110]]
+    assert convert.u.tolist() == [[90, 90, 240, 240]] * 4
+    assert convert.v.tolist() == [[240, 240, 110, 110]] * 4
+    frame[:, 3] = (255, 0, 0, 255)
+    convert(frame)
     # (127.5, 0, 127.5): U = 128 + (112 - 37.797) / 2 = 165.1, V = 128 + (112 - 18.214) / 2 = 174.9
+    assert convert.u[:, 1].tolist() == [165] * 4 and convert.v[:, 1].tolist() == [175] * 4
+
+
+def _keys(x: float, a: float = -0.6) -> float:
+    """Keys' cubic convolution kernel (swscale's default "bicubic": B = 0, C = 0.6)."""
+    x = abs(x)
+    if x < 1:
+        return (a + 2) * x ** 3 - (a + 3) * x ** 2 + 1
+    return a * x ** 3 - 5 * a * x ** 2 + 8 * a * x - 4 * a if x < 2 else 0.0
+
+
+def test_the_filter_down_the_rows_is_bicubic_halving() -> None:
+    from tweenrender.encode.yuv420 import CHROMA_TAPS
+
+    # halving: a chroma row sits between its two pixel rows, so rows lie 0.5, 1.5, 2.5, 3.5 rows away, or
+    # 0.25 … 1.75 of the kernel's (doubled) reach
+    weights = np.array([_keys(d / 2) for d in (3.5, 2.5, 1.5, 0.5, 0.5, 1.5, 2.5, 3.5)])
+    assert sum(CHROMA_TAPS) == 64
+    assert np.abs(np.array(CHROMA_TAPS) / 64 - weights / weights.sum()).max() < 0.5 / 64
+    # a horizontal edge: rows 0-7 red (U 90.203, V 240), 8-15 blue (U 240, V 109.786). Chroma row i reads
+    # rows 2i - 3 … 2i + 4; row 2 has one blue row (weight -1), row 3 three (8 - 3 - 1 = 4), row 4 five (60),
+    # row 5 seven (65): U = (65 · 90.203 - 240) / 64 = 87.9, (60 · 90.203 + 4 · 240) / 64 = 99.6,
+    # (4 · 90.203 + 60 · 240) / 64 = 230.6, (-90.203 + 65 · 240) / 64 = 242.3; V likewise
+    frame = np.zeros((16, 4, 4), np.uint8)
+    frame[..., 3] = 255
+    frame[:8, :, 2] = 255
+    frame[8:, :, 0] = 255
+    convert = Yuv420(4, 16)
+    convert(frame)
+    assert convert.u[:, 0].tolist() == [90, 90, 88, 100, 231, 242, 240, 240]
+    assert convert.v[:, 0].tolist() == [240, 240, 242, 232, 118, 108, 110, 110]
+    assert (convert.u == convert.u[:, :1]).all()  # the same across
+
+
+def test_planes_are_ffmpegs_own_conversion_within_a_level() -> None:
+    import subprocess
+
+    import imageio_ffmpeg
+
+    rng = np.random.default_rng(4)
+    height, width = 240, 320  # blocks of 8 × 8 random colours: edges everywhere, across and down
+    frame = np.repeat(np.repeat(rng.integers(0, 256, (height // 8, width // 8, 4), dtype=np.uint8), 8, 0), 8, 1)
+    frame[..., 3] = 255
+    theirs = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-v", "error", "-f", "rawvideo", "-pix_fmt", "bgra",
+                             "-s", f"{width}x{height}", "-i", "-", "-f", "rawvideo", "-pix_fmt", "yuv420p", "-"],
+                            input=frame.tobytes(), capture_output=True, check=True).stdout
+    ours = Yuv420(width, height)(frame)
+    difference = np.abs(ours.astype(int) - np.frombuffer(theirs, np.uint8))
+    area = width * height
+    assert difference.max() <= 1
+    assert difference[:area].mean() < 0.02 and difference[area:].mean() < 0.3  # Y all but equal
 
 
 def test_any_picture_within_half_a_level_of_the_formulas() -> None:
@@ -68,12 +121,16 @@ def test_any_picture_within_half_a_level_of_the_formulas() -> None:
     planes = Yuv420(width, height)(frame)
     b, g, r = (frame[..., i].astype(float) for i in range(3))
     y = 16 + (65.481 * r + 128.553 * g + 24.966 * b) / 255
-    mean = [c.reshape(height // 2, 2, width // 2, 2).mean(axis=(1, 3)) for c in (r, g, b)]
-    u = 128 + (-37.797 * mean[0] - 74.203 * mean[1] + 112 * mean[2]) / 255
-    v = 128 + (112 * mean[0] - 93.786 * mean[1] - 18.214 * mean[2]) / 255
     area = width * height
-    for got, want in ((planes[:area], y), (planes[area:area * 5 // 4], u), (planes[area * 5 // 4:], v)):
-        assert np.abs(got - want.ravel()).max() <= 0.502
+    assert np.abs(planes[:area] - y.ravel()).max() <= 0.502
+    taps = np.array([-1, -3, 8, 28, 28, 8, -3, -1]) / 64
+    chroma = {(-37.797, -74.203, 112.0): planes[area:area * 5 // 4], (112.0, -93.786, -18.214): planes[area * 5 // 4:]}
+    for (red, green, blue), plane in chroma.items():
+        level = 128 + (red * r + green * g + blue * b) / 255
+        across = (level[:, 0::2] + level[:, 1::2]) / 2
+        padded = np.concatenate([across[:1]] * 3 + [across] + [across[-1:]] * 4)  # edge rows repeated
+        down = sum(t * padded[j:j + height:2] for j, t in enumerate(taps))
+        assert np.abs(plane - np.clip(down, 0, 255).ravel()).max() <= 0.502
 
 
 def test_odd_sizes_and_wrong_frames_are_refused() -> None:

@@ -12,8 +12,14 @@ Prints, in one run, each result with the load average at the time:
    ("encode-only"); medians of ``--rounds`` interleaved runs;
 2. where a stroked frame's drawing time goes, idea by idea;
 3. peak memory of the whole process tree (tweenrender + ffmpeg, RSS of every
-   descendant sampled from /proc every 20 ms) at 1080p and 4K, and x264 with
-   today's tuning against its own defaults (time, size, memory);
+   descendant sampled from /proc every 20 ms) at 1080p and 4K, opaque frames
+   sent as yuv420p made here (now) against RGB converted by ffmpeg (before),
+   interleaved: memory, time, file size, the conversion's cost a frame, and the
+   decoded pictures against the drawn ones; then x264 with today's tuning
+   against its own defaults (time, size, memory);
+   ``--only ffmpeg``: ffmpeg alone on those yuv420p frames, with today's
+   options and each option tried for memory (queues, sliced threads, glibc's
+   mmap threshold, no encoder at all);
 4. ``--cluster local:2`` against a local render;
 5. the machine: ``nproc``, the CPU model, Python, the load average.
 """
@@ -38,6 +44,10 @@ sys.path.insert(0, str(HERE))
 from make_busy import busy_scene, stroked_scene  # noqa: E402
 
 TWEENRENDER = [sys.executable, "-m", "tweenrender"]
+RGB_PIPE = [sys.executable, "-c", "import sys, tweenrender.encode.sinks as s; s.sends_yuv420 = lambda *a, **k: False; "
+            "from tweenrender.cli.main import main; sys.exit(main())"]
+"""``tweenrender`` as it was before opaque frames went to ffmpeg as yuv420p: RGB (skia's BGRA) through
+the pipe, converted by ffmpeg."""
 
 
 def _tree(pid: int) -> list[int]:
@@ -66,12 +76,13 @@ def _rss_kib(pid: int) -> int:
     return 0
 
 
-def run_measured(command: list[str]) -> tuple[float, float, int, int]:
-    """Run ``command``: (wall seconds, CPU seconds of it and its children, peak RSS in MiB of the
-    whole process tree and of the command's own process)."""
+def run_measured(command: list[str], env: dict[str, str] | None = None) -> tuple[float, float, int, int]:
+    """Run ``command`` (with ``env`` added to the environment): (wall seconds, CPU seconds of it and its
+    children, peak RSS in MiB of the whole process tree and of the command's own process)."""
     before = os.times()
     start = time.perf_counter()
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=ROOT)
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=ROOT,
+                               env={**os.environ, **(env or {})})
     peak = own = 0
     done = threading.Event()
 
@@ -272,18 +283,109 @@ def stroke_costs(folder: Path) -> None:
     print()
 
 
-def memory(folder: Path) -> None:
+def conversion_ms(scene: Path, size: tuple[int, int], count: int = 20) -> float:
+    """Milliseconds a ``size`` frame of ``scene`` takes to become yuv420p planes in this process."""
+    from tweenrender.encode.yuv420 import Yuv420
+    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.scenefile import load_scene
+
+    picture = Frames(RenderJob(load_scene(scene), size=size), "bgra")(12)
+    convert = Yuv420(*size)
+    convert(picture)
+    start = time.perf_counter()
+    for _ in range(count):
+        convert(picture)
+    return 1000 * (time.perf_counter() - start) / count
+
+
+def decoded_errors(scene: Path, videos: list[Path], frames: int) -> list[tuple[float, float]]:
+    """Each of ``videos`` (1080p renders of ``scene``) decoded to RGB against the frames drawn: mean and 99th
+    percentile of the absolute difference, over every channel of every 10th frame."""
+    import imageio_ffmpeg
+    import numpy as np
+
+    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.scenefile import load_scene
+
+    draw = Frames(RenderJob(load_scene(scene)))
+    readers = [imageio_ffmpeg.read_frames(str(v)) for v in videos]
+    width, height = next(readers[0])["size"]
+    for reader in readers[1:]:
+        next(reader)
+    errors: list[list[np.ndarray]] = [[] for _ in videos]
+    for index in range(frames):
+        pictures = [np.frombuffer(next(r), np.uint8).reshape(height, width, 3) for r in readers]
+        if index % 10 == 0:
+            drawn = draw(index)[..., :3].astype(np.int16)
+            for kept, picture in zip(errors, pictures):
+                kept.append(np.abs(picture.astype(np.int16) - drawn).ravel())
+    for reader in readers:
+        reader.close()
+    every = [np.concatenate(kept) for kept in errors]
+    return [(float(e.mean()), float(np.percentile(e, 99))) for e in every]
+
+
+def planes_against_ffmpeg(scene: Path, size: tuple[int, int] = (1920, 1080)) -> str:
+    """One drawn frame of ``scene`` made yuv420p here and by ffmpeg's own conversion (swscale, its defaults):
+    per plane, the mean and largest absolute difference and the share of samples that differ."""
+    import numpy as np
+
+    from tweenrender.encode.sinks import ffmpeg_exe
+    from tweenrender.encode.yuv420 import Yuv420
+    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.scenefile import load_scene
+
+    width, height = size
+    picture = Frames(RenderJob(load_scene(scene), size=size), "bgra")(60)
+    ours = Yuv420(width, height)(picture)
+    done = subprocess.run([ffmpeg_exe(), "-v", "error", "-f", "rawvideo", "-pix_fmt", "bgra", "-s", f"{width}x{height}",
+                           "-i", "-", "-f", "rawvideo", "-pix_fmt", "yuv420p", "-"],
+                          input=picture.tobytes(), capture_output=True, check=True)
+    theirs = np.frombuffer(done.stdout, np.uint8)
+    area = width * height
+    said = []
+    for name, part in (("Y", slice(0, area)), ("U", slice(area, area * 5 // 4)), ("V", slice(area * 5 // 4, None))):
+        difference = np.abs(ours[part].astype(int) - theirs[part].astype(int))
+        said.append(f"{name} mean {difference.mean():.3f}, max {difference.max()}, "
+                    f"{100 * (difference > 0).mean():.1f} % differ")
+    return "; ".join(said)
+
+
+def memory(folder: Path, rounds: int) -> None:
     from tweenrender.encode.sinks import ffmpeg_command, x264_tuning
 
     scene = folder / "busy.toml"
     scene.write_text(busy_scene(5.0))
-    print("## Peak memory of the process tree (tweenrender + ffmpeg), busy scene to MP4, default settings")
-    print("| size | frames | wall s | peak tree MiB | tweenrender alone MiB | load |")
-    print("|---|---|---|---|---|---|")
+    ways = {"before": RGB_PIPE, "now": TWEENRENDER}
+    print(f"## Peak memory of the process tree (tweenrender + ffmpeg), busy scene to MP4, default settings; "
+          f"RGB to ffmpeg (before) against yuv420p made here (now), {rounds} interleaved rounds")
+    print("| size | frames | frames sent as | wall s (median) | CPU s (median) | peak tree MiB (median; all) "
+          "| tweenrender alone MiB | file bytes | load |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    outputs: dict[str, Path] = {}
     for label, size, count in (("1080p", "1920x1080", 121), ("4K", "3840x2160", 48)):
-        wall, _, peak, own = run_measured([*TWEENRENDER, "render", str(scene), "-o", str(folder / "mem.mp4"), "-q",
-                                           "--size", size, "--frames", f"0:{count}"])
-        print(f"| {label} {size} | {count} | {wall:.1f} | {peak} | {own} | {load()} |")
+        runs: dict[str, list[tuple[float, float, int, int]]] = {way: [] for way in ways}
+        for _ in range(rounds):  # interleaved, so a burst of other work hits both alike
+            for way, command in ways.items():
+                outputs[way + label] = folder / f"{way}-{label}.mp4"
+                runs[way].append(run_measured([*command, "render", str(scene), "-o", str(outputs[way + label]),
+                                               "-q", "--size", size, "--frames", f"0:{count}"]))
+        for way, sent in (("before", "bgra, ffmpeg converts"), ("now", "yuv420p")):
+            done = runs[way]
+            peaks = ", ".join(str(r[2]) for r in done)
+            print(f"| {label} | {count} | {sent} | {median([r[0] for r in done]):.2f} | "
+                  f"{median([r[1] for r in done]):.2f} | {median([r[2] for r in done]):.0f} ({peaks}) | "
+                  f"{max(r[3] for r in done)} | {outputs[way + label].stat().st_size} | {load()} |")
+        ratio = {i: median([r[i] for r in runs["now"]]) / median([r[i] for r in runs["before"]]) for i in range(3)}
+        sizes = outputs["now" + label].stat().st_size / outputs["before" + label].stat().st_size
+        print(f"| {label} now / before | | | {ratio[0]:.3f} | {ratio[1]:.3f} | {ratio[2]:.3f} | | {sizes:.4f} | |")
+    width_height = [(1920, 1080), (3840, 2160)]
+    costs = ", ".join(f"{w}x{h} {conversion_ms(scene, (w, h)):.1f} ms" for w, h in width_height)
+    print(f"converting a drawn frame to yuv420p here: {costs} a frame ({load()})")
+    print(f"planes of a 1080p frame, made here against ffmpeg's conversion: {planes_against_ffmpeg(scene)}")
+    (before, before_p99), (now, now_p99) = decoded_errors(scene, [outputs["before1080p"], outputs["now1080p"]], 121)
+    print(f"1080p decoded against the frames drawn (every 10th frame, RGB): before mean {before:.3f} "
+          f"(99th percentile {before_p99:.0f}), now mean {now:.3f} (99th percentile {now_p99:.0f})")
     print()
     raw = folder / "busy.rgb"
     frames, _ = prerender_raw(scene, raw)
@@ -308,6 +410,68 @@ def memory(folder: Path) -> None:
     ratio_wall = median([r[0] for r in results["tuned"]]) / median([r[0] for r in results["plain"]])
     ratio_size = (folder / "tuned.mp4").stat().st_size / (folder / "plain.mp4").stat().st_size
     print(f"tuned / defaults: wall {ratio_wall:.3f}, size {ratio_size:.4f}; {load()}")
+    print()
+
+
+def prerender_yuv420(scene: Path, raw: Path, size: tuple[int, int], count: int) -> None:
+    """The first ``count`` frames of ``scene`` at ``size``, as the renderer now sends them (yuv420p), in ``raw``."""
+    from tweenrender.encode.yuv420 import Yuv420
+    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.pipeline.workers import frame_stream
+    from tweenrender.scenefile import load_scene
+
+    convert = Yuv420(*size)
+    with open(raw, "wb") as handle:
+        for frame in frame_stream(RenderJob(load_scene(scene), size=size, frames=range(count)), layout="bgra"):
+            handle.write(convert(frame).data)
+
+
+def ffmpeg_options(folder: Path, rounds: int) -> None:
+    """ffmpeg alone encoding the busy scene's yuv420p frames from a file, with today's options and with each
+    other option tried for memory: peak RSS, time and file size, interleaved."""
+    from tweenrender.encode.sinks import ffmpeg_command, x264_tuning
+
+    scene = folder / "busy.toml"
+    scene.write_text(busy_scene(5.0))
+    print(f"## ffmpeg alone on yuv420p frames (what renders send now): options tried for memory, medians of "
+          f"{rounds} interleaved ({load()})")
+    print("| size | ffmpeg | wall s | CPU s | peak MiB (all rounds) | file size / today's |")
+    print("|---|---|---|---|---|---|")
+    for label, (width, height), count in (("1080p", (1920, 1080), 121), ("4K", (3840, 2160), 48)):
+        raw = folder / f"busy-{label}.yuv"
+        prerender_yuv420(scene, raw, (width, height), count)
+        today = ffmpeg_command("mp4", width, height, 24, str(raw), str(folder / "today.mp4"), "yuv420p")
+        lookahead = today.index("-x264-params") + 1
+        sliced = list(today)
+        sliced[lookahead] += ":sliced-threads=1"
+        output = today.index("-an") + 1
+        queues = [*today[:output], "-max_muxing_queue_size", "1", *today[output:]]
+        source = today.index("-f")
+        variants: dict[str, tuple[list[str], dict[str, str]]] = {
+            "today's options": (today, {}),
+            "input -thread_queue_size 1": ([*today[:source], "-thread_queue_size", "1", *today[source:]], {}),
+            "-max_muxing_queue_size 1": (queues, {}),
+            "x264 sliced-threads=1": (sliced, {}),
+            "MALLOC_MMAP_THRESHOLD_=1048576": (today, {"MALLOC_MMAP_THRESHOLD_": str(1 << 20)}),
+            "no encoder (-c:v rawvideo -f null)": ([*today[:output], "-c:v", "rawvideo", "-f", "null", "-"], {}),
+        }
+        runs: dict[str, list[tuple[float, float, int, int]]] = {name: [] for name in variants}
+        sizes: dict[str, int] = {}
+        for _ in range(rounds):
+            for name, (command, env) in variants.items():
+                target = folder / "option.mp4"
+                if command[-1] != "-":
+                    command = [*command[:-1], str(target)]
+                runs[name].append(run_measured(command, env))
+                sizes[name] = target.stat().st_size if command[-1] != "-" else 0
+        raw.unlink()
+        base = sizes["today's options"]
+        for name, done in runs.items():
+            ratio = f"{sizes[name] / base:.4f}" if sizes[name] else "-"
+            peaks = ", ".join(str(r[2]) for r in done)
+            print(f"| {label} | {name} | {median([r[0] for r in done]):.2f} | {median([r[1] for r in done]):.2f} | "
+                  f"{median([r[2] for r in done]):.0f} ({peaks}) | {ratio} |")
+    print(f"({x264_tuning(1920, 1080)} at 1080p; {load()})")
     print()
 
 
@@ -343,7 +507,7 @@ def machine() -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3, help="interleaved runs of each comparison")
-    parser.add_argument("--only", choices=("stroked", "busy", "drawing", "memory", "cluster"))
+    parser.add_argument("--only", choices=("stroked", "busy", "drawing", "memory", "ffmpeg", "cluster"))
     args = parser.parse_args()
     machine()
     with tempfile.TemporaryDirectory(prefix="tweenrender-bench-") as name:
@@ -355,7 +519,9 @@ def main() -> None:
         if args.only in (None, "drawing"):
             stroke_costs(folder)
         if args.only in (None, "memory"):
-            memory(folder)
+            memory(folder, args.rounds)
+        if args.only in (None, "ffmpeg"):
+            ffmpeg_options(folder, args.rounds)
         if args.only in (None, "cluster"):
             cluster(folder, args.rounds)
     machine()

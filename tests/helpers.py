@@ -34,6 +34,16 @@ def decode(path: Path) -> tuple[dict, list[np.ndarray]]:
     return meta, frames
 
 
+def video_stream_line(path: Path, *decoder: str) -> str:
+    """ffmpeg's line about the video stream of ``path`` (codec, pixel format, colour tags, size), read with
+    ``decoder`` options if any (e.g. ``-c:v libvpx-vp9``, which sees VP9's alpha)."""
+    import imageio_ffmpeg
+
+    said = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", *decoder, "-i", str(path)],
+                          capture_output=True, text=True).stderr
+    return next(line for line in said.splitlines() if "Video:" in line)
+
+
 def write_scene(folder: Path, text: str, name: str = "scene.toml") -> Path:
     path = folder / name
     path.write_text(text)

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests.helpers import SQUARE, decode, read_png, small_job, write_scene
+from tests.helpers import SQUARE, decode, read_png, small_job, video_stream_line, write_scene
 
 pytest.importorskip("skia")
 
@@ -52,8 +52,10 @@ def test_video_chunks_decode_to_the_single_renders_frames(tmp_path: Path, pool: 
 
     job = _job(tmp_path)
     _, single = decode(render(job, fmt, tmp_path / f"whole.{fmt}"))
-    _, joined = decode(render_chunks(job, fmt, tmp_path / f"joined.{fmt}", pool, chunks=3))
+    target = render_chunks(job, fmt, tmp_path / f"joined.{fmt}", pool, chunks=3)
+    _, joined = decode(target)
     assert len(joined) == len(single) == 25
+    assert "yuv420p(tv, smpte170m" in video_stream_line(target)  # the parts' colour tags, copied
     # lossy codecs: each part is encoded on its own, so the same pictures within codec noise, and
     # each frame is nearer its own counterpart than any neighbour (nothing lost, doubled or swapped)
     for index, frame in enumerate(joined):

@@ -21,12 +21,20 @@ from .atomic import commit_file, commit_folder, discard, os_reason, prepare_fold
 from .lifeline import run_program, start_program
 from .limits import check_frame_size
 from .targets import check_frames_folder
+from .yuv420 import PIXEL_ORDERS, Yuv420
 
 __all__ = ["FORMATS", "ALPHA_FORMATS", "LOSSLESS", "PIXEL_FORMATS", "check_alpha", "Sink", "open_sink", "PngSequence",
-           "FFmpegVideo", "probe_video", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning", "png_bytes"]
+           "FFmpegVideo", "probe_video", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning", "png_bytes",
+           "sends_yuv420", "YUV420_TAGS"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
-"""Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout."""
+"""Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout. ffmpeg is also given
+yuv420p, the planes :mod:`.yuv420` makes of opaque rgba or bgra frames (see :func:`sends_yuv420`)."""
+
+YUV420_TAGS = ["-color_range", "tv", "-colorspace", "smpte170m"]
+"""What the planes of :mod:`.yuv420` are (BT.601 limited range), given with them to ffmpeg, which writes it into
+the file: a player then decodes them with that matrix whatever the frame size (an untagged HD video is read
+as BT.709 by many)."""
 
 # A pipe holds 64 KiB by default: each 8 MB frame then trickles through in 128
 # wake-ups. 1 MiB (Linux's limit for an unprivileged process) lets ffmpeg
@@ -136,15 +144,24 @@ def encoder_options(fmt: str, width: int = 0, height: int = 0, alpha: bool = Fal
     return codec
 
 
+def sends_yuv420(fmt: str, width: int, height: int, alpha: bool = False) -> bool:
+    """Whether a video sink converts opaque ``width × height`` frames for ``fmt`` to yuv420p itself (:mod:`.yuv420`)
+    rather than send RGB: MP4 and WebM without transparency, at even sizes (their encoders take yuv420p
+    anyway). ffmpeg then holds 1.5 bytes a pixel in each frame it queues instead of 4, and converts nothing."""
+    return fmt in ("mp4", "webm") and not alpha and width % 2 == 0 and height % 2 == 0
+
+
 def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, output: str,
                    pixel_format: str = "rgba", alpha: bool = False) -> list[str]:
     """The bundled ffmpeg's command line that encodes raw ``pixel_format`` frames from ``source`` as ``fmt``."""
     import imageio_ffmpeg
 
-    if pixel_format not in PIXEL_FORMATS:
-        raise OptionError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)}")
+    if pixel_format not in (*PIXEL_FORMATS, "yuv420p"):
+        raise OptionError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)} "
+                          "or yuv420p")
+    tags = YUV420_TAGS if pixel_format == "yuv420p" else []
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
-            "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}",
+            "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}", *tags,
             "-i", source, "-an", *encoder_options(fmt, width, height, alpha), output]
 
 
@@ -207,7 +224,9 @@ class FFmpegVideo:
     """Raw frames piped into the ffmpeg bundled with imageio-ffmpeg.
 
     ffmpeg is its own process, so it encodes frame n while this one draws
-    frame n + 1; ``write`` hands the array's memory to the pipe without a copy.
+    frame n + 1. ``write`` hands the array's memory to the pipe without a copy,
+    or, for an opaque MP4 or WebM (:func:`sends_yuv420`), its yuv420p planes
+    converted into one reused buffer.
     """
 
     def __init__(self, fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
@@ -216,8 +235,12 @@ class FFmpegVideo:
         self.width, self.height, self.fps, self.expected = width, height, fps, frames
         self.pixel_format = pixel_format
         self.channels = 3 if pixel_format == "rgb24" else 4
+        self.to_yuv420: Yuv420 | None = None
+        if pixel_format in PIXEL_ORDERS and sends_yuv420(fmt, width, height, alpha):
+            self.to_yuv420 = Yuv420(width, height, pixel_format)
         self.temporary = sibling(target, "." + fmt)
-        command = ffmpeg_command(fmt, width, height, fps, "pipe:0", str(self.temporary), pixel_format, alpha)
+        sent = pixel_format if self.to_yuv420 is None else "yuv420p"
+        command = ffmpeg_command(fmt, width, height, fps, "pipe:0", str(self.temporary), sent, alpha)
         self.log = tempfile.TemporaryFile()
         # unbuffered: Python's 8 KiB buffer would only add a copy of every frame. Its own
         # session: a terminal's Ctrl-C reaches only this process, which then stops ffmpeg
@@ -241,7 +264,8 @@ class FFmpegVideo:
             raise EncodeError(f"{self.target}: frame {self.count} is {rgba.dtype} {rgba.shape}, expected uint8 "
                               f"({self.height}, {self.width}, {self.channels}) {self.pixel_format}")
         try:
-            view = memoryview(np.ascontiguousarray(rgba)).cast("B")
+            data = np.ascontiguousarray(rgba) if self.to_yuv420 is None else self.to_yuv420(rgba)
+            view = memoryview(data).cast("B")
             while view:  # an unbuffered pipe may take part of a frame at a time
                 written = self.process.stdin.write(view)
                 view = view[written:]

@@ -34,7 +34,8 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     width, height = job.frame_size
     here = executor is None and workers <= 1
     # Over an opaque background premultiplied pixels are straight ones: a video
-    # encoder can take skia's own BGRA surface, with no conversion and no copy.
+    # sink can take skia's own BGRA surface without a copy (MP4 and WebM turn it
+    # into yuv420p planes, encode.yuv420; the other formats send it as it is).
     layout = "bgra" if here and fmt != "png" and job.scene.background[3] == 255 else "rgba"
     sink = open_sink(fmt, target, width, height, job.rate, len(indices), pixel_format=layout,
                      alpha=job.scene.background[3] < 255)

@@ -9,7 +9,10 @@ Prints, in one run, each result with the load average at the time:
    ``tweenrender render`` with workers chosen automatically and with
    ``--workers 1``, against the same bundled ffmpeg encoding the very same
    frames, pre-rendered to a raw RGB file, with the same settings
-   ("encode-only"); medians of ``--rounds`` interleaved runs;
+   ("encode-only"; ffmpeg then converts to yuv420p itself), and from the
+   yuv420p planes a render now sends it (the stricter floor: no conversion
+   left to ffmpeg, while the render makes them); medians of ``--rounds``
+   interleaved runs;
 2. where a stroked frame's drawing time goes, idea by idea;
 3. peak memory of the whole process tree (tweenrender + ffmpeg, RSS of every
    descendant sampled from /proc every 20 ms) at 1080p and 4K, opaque frames
@@ -112,17 +115,20 @@ def write_scene(folder: Path, seconds: float, name: str) -> Path:
     return path
 
 
-def prerender_raw(scene: Path, raw: Path) -> tuple[int, float]:
-    """Every frame of ``scene`` as raw RGB in ``raw``: (frames, seconds spent drawing)."""
+def prerender_raw(scene: Path, raw: Path, planes_file: Path) -> tuple[int, float]:
+    """Every frame of ``scene`` as raw RGB in ``raw`` and as the very yuv420p planes a render sends ffmpeg
+    (encode.yuv420) in ``planes_file``: (frames, seconds spent drawing)."""
     import numpy as np
 
+    from tweenrender.encode.yuv420 import Yuv420
     from tweenrender.pipeline.job import RenderJob
     from tweenrender.pipeline.workers import frame_stream
     from tweenrender.scenefile import load_scene
 
     job = RenderJob(load_scene(scene))
+    planes = Yuv420(*job.frame_size, "rgba")
     count, drawing = 0, 0.0
-    with open(raw, "wb") as handle:
+    with open(raw, "wb") as rgb, open(planes_file, "wb") as yuv:
         stream = frame_stream(job)
         while True:
             start = time.perf_counter()
@@ -130,7 +136,8 @@ def prerender_raw(scene: Path, raw: Path) -> tuple[int, float]:
             drawing += time.perf_counter() - start
             if frame is None:
                 break
-            handle.write(np.ascontiguousarray(frame[..., :3]).data)
+            rgb.write(np.ascontiguousarray(frame[..., :3]).data)
+            yuv.write(planes(frame).data)
             count += 1
     return count, drawing
 
@@ -151,11 +158,12 @@ def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
 
     scene = folder / f"{name}.toml"
     scene.write_text(text)
-    raw = folder / f"{name}.rgb"
-    frames, drawing = prerender_raw(scene, raw)
-    outputs = {key: folder / f"{name}-{key}.mp4" for key in ("alone", "auto", "one")}
+    raw, planes = folder / f"{name}.rgb", folder / f"{name}.yuv"
+    frames, drawing = prerender_raw(scene, raw, planes)
+    outputs = {key: folder / f"{name}-{key}.mp4" for key in ("alone", "planes", "auto", "one")}
     commands = {
         "alone": ffmpeg_command("mp4", 1920, 1080, 24, str(raw), str(outputs["alone"]), "rgb24"),
+        "planes": ffmpeg_command("mp4", 1920, 1080, 24, str(planes), str(outputs["planes"]), "yuv420p"),
         "auto": [*TWEENRENDER, "render", str(scene), "-o", str(outputs["auto"]), "-q"],
         "one": [*TWEENRENDER, "render", str(scene), "-o", str(outputs["one"]), "-q", "--workers", "1"],
     }
@@ -166,6 +174,7 @@ def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
             runs[key].append(run_measured(command))
         loads.append(os.getloadavg()[0])
     raw.unlink()
+    planes.unlink()
     from tweenrender.pipeline.job import RenderJob
     from tweenrender.pipeline.workers import default_workers, measure_cost
     from tweenrender.scenefile import load_scene
@@ -178,13 +187,16 @@ def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
     print(f"## {name}: {frames} frames of 1080p24, H.264 CRF 18 medium; medians of {rounds} interleaved rounds")
     print(f"drawing alone, in-process: {1000 * drawing / frames:.1f} ms/frame; measured cost: draw "
           f"{1000 * cost.draw:.1f} ms, encoder estimate {1000 * cost.encode:.1f} ms -> auto workers {chosen}")
-    print("| run | wall s (median) | all rounds | CPU s | peak tree MiB | ratio to encode-only |")
-    print("|---|---|---|---|---|---|")
-    for key, label in (("alone", "encode-only (ffmpeg from raw RGB)"), ("auto", "render, auto workers"),
-                       ("one", "render --workers 1")):
+    print("| run | wall s (median) | all rounds | CPU s | peak tree MiB | ratio to encode-only (RGB) | "
+          "ratio to encode-only (yuv420p) |")
+    print("|---|---|---|---|---|---|---|")
+    for key, label in (("alone", "encode-only: ffmpeg from raw RGB (it converts)"),
+                       ("planes", "encode-only: ffmpeg from the raw yuv420p a render sends"),
+                       ("auto", "render, auto workers"), ("one", "render --workers 1")):
         rounds_text = ", ".join(f"{r[0]:.2f}" for r in runs[key])
         peak = max(r[2] for r in runs[key])
-        print(f"| {label} | {wall[key]:.2f} | {rounds_text} | {cpu[key]:.2f} | {peak} | {wall[key] / wall['alone']:.3f} |")
+        print(f"| {label} | {wall[key]:.2f} | {rounds_text} | {cpu[key]:.2f} | {peak} | "
+              f"{wall[key] / wall['alone']:.3f} | {wall[key] / wall['planes']:.3f} |")
     print(f"auto / --workers 1: {wall['auto'] / wall['one']:.3f}; file size render / encode-only: "
           f"{outputs['auto'].stat().st_size / outputs['alone'].stat().st_size:.4f}; "
           f"load averages after each round: {', '.join(f'{x:.2f}' for x in loads)}")
@@ -387,11 +399,12 @@ def memory(folder: Path, rounds: int) -> None:
     print(f"1080p decoded against the frames drawn (every 10th frame, RGB): before mean {before:.3f} "
           f"(99th percentile {before_p99:.0f}), now mean {now:.3f} (99th percentile {now_p99:.0f})")
     print()
-    raw = folder / "busy.rgb"
-    frames, _ = prerender_raw(scene, raw)
+    raw, rgb = folder / "busy.yuv", folder / "busy.rgb"
+    frames, _ = prerender_raw(scene, rgb, raw)
+    rgb.unlink()
     print(f"## x264 tuned (threads and lookahead from the machine) vs x264's defaults, encode-only, {frames} "
           "frames of 1080p, medians of 3 interleaved")
-    tuned = ffmpeg_command("mp4", 1920, 1080, 24, str(raw), str(folder / "tuned.mp4"), "rgb24")
+    tuned = ffmpeg_command("mp4", 1920, 1080, 24, str(raw), str(folder / "tuned.mp4"), "yuv420p")
     options = x264_tuning(1920, 1080)
     start = tuned.index(options[0])
     plain = tuned[:start] + tuned[start + len(options):]

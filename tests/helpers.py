@@ -139,6 +139,10 @@ def unprivileged(function: Callable[..., Any], *args: Any) -> Any:
 
 
 SMALL = SQUARE.replace("size = [320, 240]", "size = [160, 120]").replace("time = 2\n", "time = 1\n")
+LONG = SQUARE.replace("time = 2", "time = 600").replace("size = [320, 240]", "size = [640, 480]")
+"""A render long enough to be stopped midway however slow the machine is at that moment (about half a
+minute uninterrupted): for tests that interrupt, terminate or kill one."""
+LONG_HD = LONG.replace("size = [640, 480]", "size = [1920, 1080]")
 """25 frames of a 160 × 120 square that slides right and turns a quarter."""
 
 

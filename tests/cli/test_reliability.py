@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from tweenrender.core.methods import interpolate
 
-from tests.helpers import SQUARE, run_module, unprivileged, write_scene
+from tests.helpers import LONG, SQUARE, run_module, unprivileged, write_scene
 from tests.scenefile.test_load_more import MORE_BAD
 
 METHODS = ("linear", "nonlinear", "rigid", "auto", "jointed")
@@ -161,7 +161,6 @@ def test_a_file_size_limit_is_reported_and_the_old_output_kept(tmp_path: Path, o
     assert _listing(disk) == [output]  # the temporary is gone
 
 
-LONG = SQUARE.replace("time = 2", "time = 60").replace("size = [320, 240]", "size = [640, 480]")
 
 
 def _start_and_wait_for_temporary(folder: Path, scene: Path, target: Path) -> subprocess.Popen[str]:

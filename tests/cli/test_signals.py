@@ -16,13 +16,11 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import SQUARE, write_scene
+from tests.helpers import LONG, LONG_HD, write_scene
 
 pytestmark = pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="lists processes through /proc")
 
-# a minute of 640x480 (1920x1080 for a video, so ffmpeg has seconds of work queued when the parent dies)
-LONG = SQUARE.replace("time = 2", "time = 60").replace("size = [320, 240]", "size = [640, 480]")
-LONG_HD = LONG.replace("size = [640, 480]", "size = [1920, 1080]")
+# LONG_HD for a video, so ffmpeg has seconds of work queued when the parent dies
 
 
 def _stat(pid: int) -> tuple[int, str] | None:

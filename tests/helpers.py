@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import pickle
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -15,6 +16,16 @@ ROOT = Path(__file__).resolve().parents[1]
 SCENES = ROOT / "scenes"
 GOLDEN = Path(__file__).resolve().parent / "golden"
 DATA = Path(__file__).resolve().parent / "data"
+
+
+def start_render(scene: Path, target: Path, *flags: str, text: bool = True,
+                 stdout: int | None = subprocess.PIPE) -> subprocess.Popen[Any]:
+    """``tweenrender render scene -o target -q *flags`` started in a session of its own, with Ctrl-C's default
+    action as from a terminal: a shell starts a background job (a test run with ``&``) with SIGINT ignored,
+    and a Python started so keeps ignoring it, which is right for it and wrong for a test of Ctrl-C."""
+    return subprocess.Popen([sys.executable, "-m", "tweenrender", "render", str(scene), "-o", str(target), "-q", *flags],
+                            stdout=stdout, stderr=subprocess.PIPE, text=text, start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
 
 
 def run_module(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:

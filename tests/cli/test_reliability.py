@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from tweenrender.core.methods import interpolate
 
-from tests.helpers import LONG, SQUARE, run_module, unprivileged, write_scene
+from tests.helpers import LONG, SQUARE, run_module, start_render, unprivileged, write_scene
 from tests.scenefile.test_load_more import MORE_BAD
 
 METHODS = ("linear", "nonlinear", "rigid", "auto", "jointed")
@@ -166,8 +166,7 @@ def test_a_file_size_limit_is_reported_and_the_old_output_kept(tmp_path: Path, o
 def _start_and_wait_for_temporary(folder: Path, scene: Path, target: Path) -> subprocess.Popen[str]:
     """Start a long render into ``target`` in its own session; return once its temporary exists."""
     before = set(folder.iterdir())
-    process = subprocess.Popen([sys.executable, "-m", "tweenrender", "render", str(scene), "-o", str(target), "-q"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    process = start_render(scene, target)
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
         fresh = [p for p in set(folder.iterdir()) - before if p.name.startswith(f".{target.name}.")]

@@ -10,13 +10,12 @@ import os
 import select
 import signal
 import subprocess
-import sys
 import time
 from pathlib import Path
 
 import pytest
 
-from tests.helpers import LONG, LONG_HD, write_scene
+from tests.helpers import LONG, LONG_HD, start_render, write_scene
 
 pytestmark = pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="lists processes through /proc")
 
@@ -89,8 +88,7 @@ def _is_ffmpeg(pid: int) -> bool:
 def _start(folder: Path, scene: Path, target: Path, *flags: str, children: int) -> subprocess.Popen[bytes]:
     """Start a render into ``target``; return once it writes frames and has ``children`` processes."""
     before = set(folder.iterdir())
-    process = subprocess.Popen([sys.executable, "-m", "tweenrender", "render", str(scene), "-o", str(target), "-q",
-                                *flags], stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+    process = start_render(scene, target, *flags, text=False)
     _started.append((process.pid, set()))
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:

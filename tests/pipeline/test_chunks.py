@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests.helpers import SQUARE, decode, read_png, small_job, video_stream_line, write_scene
+from tests.helpers import SQUARE, decode, read_png, small_job, start_render, video_stream_line, write_scene
 
 pytest.importorskip("skia")
 
@@ -121,14 +121,12 @@ def test_ctrl_c_stops_chunk_workers_at_once_and_leaves_nothing(tmp_path: Path) -
     import os
     import signal
     import subprocess
-    import sys
     import time
 
     # 1441 frames of 1080p in two chunks: each runs for many seconds
     scene = write_scene(tmp_path, SQUARE.replace("time = 2\n", "time = 60\n").replace("[320, 240]", "[1920, 1080]"))
     target = tmp_path / "out" / "clip.mp4"
-    render = subprocess.Popen([sys.executable, "-m", "tweenrender", "render", str(scene), "-o", str(target), "-q",
-                               "--workers", "2"], stderr=subprocess.PIPE, text=True, start_new_session=True)
+    render = start_render(scene, target, "--workers", "2", stdout=None)
     try:
         time.sleep(4.0)  # the workers have started and are rendering their chunks
         assert render.poll() is None

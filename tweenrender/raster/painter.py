@@ -7,14 +7,16 @@ import skia
 from numpy.typing import NDArray
 
 from ..model import Color
-from .fonts import font
+from .fonts import font, wrap
 from .surface import Raster, paint_color
 
-__all__ = ["Painter", "INK"]
+__all__ = ["Painter", "INK", "SOFT"]
 
 _WHITE: Color = (255, 255, 255, 255)
 INK: Color = (30, 34, 45, 255)
 """The diagrams' text and line colour."""
+SOFT: Color = (30, 34, 45, 150)
+"""The diagrams' secondary text."""
 
 
 class Painter:
@@ -55,6 +57,16 @@ class Painter:
             width = font(size, bold).measureText(words)
             x -= width if anchor == "right" else width / 2
         self.raster.text(words, x, y, size, color, bold)
+
+    def heading(self, title: str, subtitle: str, x: float, y: float, width: float) -> int:
+        """A panel's bold title and its subtitle, wrapped to the panel's ``width`` less margins, from the
+        panel's top left ``(x, y)`` in pixels; returns the subtitle's number of lines."""
+        s = self.scale
+        self.text(title, x + 14 * s, y + 24 * s, 16, bold=True)
+        lines = wrap(subtitle, 13 * s, width - 28 * s)
+        for k, line in enumerate(lines):
+            self.text(line, x + 14 * s, y + (44 + 17 * k) * s, 13, SOFT)
+        return len(lines)
 
     def text_width(self, words: str, size: float, bold: bool = False) -> float:
         """Pixels ``words`` take at ``size`` (before scaling)."""

@@ -18,7 +18,7 @@ import skia
 from numpy.typing import NDArray
 
 from ...model import Color
-from ..fonts import wrap
+from ..painter import SOFT as _SOFT
 from ..painter import Painter
 from ..surface import Raster, paint_color
 from .qcurve_plot import PALETTE
@@ -34,7 +34,6 @@ MEASURES: tuple[tuple[str, str], ...] = (
 """The charts of a panel: the measure's name in :class:`MPanel` ``series``, and its caption."""
 
 _INK: Color = (30, 34, 45, 255)
-_SOFT: Color = (30, 34, 45, 150)
 _GRID: Color = (30, 34, 45, 35)
 _FRAME: Color = (30, 34, 45, 70)
 _CROSS: Color = (205, 30, 40, 255)
@@ -140,13 +139,10 @@ def _chart(p: _Painter, panel: MPanel, name: str, caption: str, x: float, y: flo
 
 def _panel(p: _Painter, panel: MPanel, x: float, y: float, width: float, height: float) -> None:
     s = p.scale
-    p.text(panel.title, x + 14 * s, y + 24 * s, 16, bold=True)
-    lines = wrap(panel.subtitle, 13 * s, width - 28 * s)
-    for k, line in enumerate(lines):
-        p.text(line, x + 14 * s, y + (44 + 17 * k) * s, 13, _SOFT)
+    lines = p.heading(panel.title, panel.subtitle, x, y, width)
     methods = list(panel.series)
     # legend: one swatch per method
-    lx, ly = x + 14 * s, y + (64 + 17 * (len(lines) - 1)) * s
+    lx, ly = x + 14 * s, y + (64 + 17 * (lines - 1)) * s
     for k, method in enumerate(methods):
         color = PALETTE[k % len(PALETTE)]
         words = p.text_width(method, 12, True)

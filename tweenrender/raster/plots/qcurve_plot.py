@@ -18,7 +18,8 @@ import skia
 from numpy.typing import NDArray
 
 from ...model import Color
-from ..fonts import font, wrap
+from ..fonts import font
+from ..painter import SOFT as _SOFT
 from ..painter import Painter
 from ..surface import Raster, paint_color
 
@@ -32,7 +33,6 @@ PALETTE: tuple[Color, ...] = (
 """Curve colours, one per vertex in turn (the tab10 colours)."""
 
 _INK: Color = (30, 34, 45, 255)
-_SOFT: Color = (30, 34, 45, 150)
 _AXIS: Color = (30, 34, 45, 90)
 _ZERO: Color = (200, 30, 30, 255)
 _FRAME: Color = (30, 34, 45, 60)
@@ -168,11 +168,8 @@ def _zoom_box(q: NDArray[np.float64], r: float) -> tuple[float, float, float] | 
 
 def _panel(p: _Painter, panel: QPanel, x: float, y: float, width: float, height: float) -> None:
     s = p.scale
-    p.text(panel.title, x + 14 * s, y + 24 * s, 16, bold=True)
-    lines = wrap(panel.subtitle, 13 * s, width - 28 * s)
-    for k, line in enumerate(lines):
-        p.text(line, x + 14 * s, y + (44 + 17 * k) * s, 13, _SOFT)
-    top, bottom = y + (56 + 17 * (len(lines) - 1)) * s, y + height - 30 * s
+    lines = p.heading(panel.title, panel.subtitle, x, y, width)
+    top, bottom = y + (56 + 17 * (lines - 1)) * s, y + height - 30 * s
     side = min(width - 28 * s, bottom - top)
     left = x + (width - side) / 2
     r = axis_range(panel.q)

@@ -115,9 +115,9 @@ def write_scene(folder: Path, seconds: float, name: str) -> Path:
     return path
 
 
-def prerender_raw(scene: Path, raw: Path, planes_file: Path) -> tuple[int, float]:
-    """Every frame of ``scene`` as raw RGB in ``raw`` and as the very yuv420p planes a render sends ffmpeg
-    (encode.yuv420) in ``planes_file``: (frames, seconds spent drawing)."""
+def prerender_raw(scene: Path, planes_file: Path, raw: Path | None = None) -> tuple[int, float]:
+    """Every frame of ``scene`` as the very yuv420p planes a render sends ffmpeg (encode.yuv420) in
+    ``planes_file`` and, if ``raw`` is given, as raw RGB there: (frames, seconds spent drawing)."""
     import numpy as np
 
     from tweenrender.encode.yuv420 import Yuv420
@@ -128,7 +128,7 @@ def prerender_raw(scene: Path, raw: Path, planes_file: Path) -> tuple[int, float
     job = RenderJob(load_scene(scene))
     planes = Yuv420(*job.frame_size, "rgba")
     count, drawing = 0, 0.0
-    with open(raw, "wb") as rgb, open(planes_file, "wb") as yuv:
+    with open(planes_file, "wb") as yuv, open(raw or os.devnull, "wb") as rgb:
         stream = frame_stream(job)
         while True:
             start = time.perf_counter()
@@ -136,7 +136,8 @@ def prerender_raw(scene: Path, raw: Path, planes_file: Path) -> tuple[int, float
             drawing += time.perf_counter() - start
             if frame is None:
                 break
-            rgb.write(np.ascontiguousarray(frame[..., :3]).data)
+            if raw is not None:
+                rgb.write(np.ascontiguousarray(frame[..., :3]).data)
             yuv.write(planes(frame).data)
             count += 1
     return count, drawing
@@ -159,7 +160,7 @@ def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
     scene = folder / f"{name}.toml"
     scene.write_text(text)
     raw, planes = folder / f"{name}.rgb", folder / f"{name}.yuv"
-    frames, drawing = prerender_raw(scene, raw, planes)
+    frames, drawing = prerender_raw(scene, planes, raw)
     outputs = {key: folder / f"{name}-{key}.mp4" for key in ("alone", "planes", "auto", "one")}
     commands = {
         "alone": ffmpeg_command("mp4", 1920, 1080, 24, str(raw), str(outputs["alone"]), "rgb24"),
@@ -399,9 +400,8 @@ def memory(folder: Path, rounds: int) -> None:
     print(f"1080p decoded against the frames drawn (every 10th frame, RGB): before mean {before:.3f} "
           f"(99th percentile {before_p99:.0f}), now mean {now:.3f} (99th percentile {now_p99:.0f})")
     print()
-    raw, rgb = folder / "busy.yuv", folder / "busy.rgb"
-    frames, _ = prerender_raw(scene, rgb, raw)
-    rgb.unlink()
+    raw = folder / "busy.yuv"
+    frames, _ = prerender_raw(scene, raw)
     print(f"## x264 tuned (threads and lookahead from the machine) vs x264's defaults, encode-only, {frames} "
           "frames of 1080p, medians of 3 interleaved")
     tuned = ffmpeg_command("mp4", 1920, 1080, 24, str(raw), str(folder / "tuned.mp4"), "yuv420p")

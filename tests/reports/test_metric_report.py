@@ -9,6 +9,7 @@ import pytest
 
 from tests.helpers import write_scene
 from tweenrender.core.measures import SWEEP, curves
+from tweenrender.core.timeline import build_track
 from tweenrender.scenefile import load_scene
 
 SCENE = """size = [160, 120]
@@ -38,8 +39,6 @@ def test_metric_panels_measure_the_scenes_balance(tmp_path: Path, balance: str) 
     # the same keys balanced by hand: a copy of a square's corner sits on that corner, a spread one
     # on one of its edges, so the two balance rules give different inbetweens (and measures)
     square = np.array([[0, 0], [4, 0], [4, 4], [0, 4]], float)
-    from tweenrender.core.timeline import build_track
-
     expected = {}
     for rule in ("copies", "spread"):
         track = build_track(scene.shapes[0], scene.matching, unmatched=scene.unmatched, balance=rule)

@@ -134,3 +134,16 @@ def test_help_and_version_still_print_and_exit_0(tmp_path: Path) -> None:
     assert done.returncode == 0 and done.stdout.startswith("usage: tweenrender render") and done.stderr == ""
     done = _run("--version", cwd=tmp_path)
     assert done.returncode == 0 and done.stdout.startswith("tweenrender ")
+
+
+@pytest.mark.parametrize("transform", ["matrix(0 5e-324 0 1 0 0)", "matrix(0 5e-324 0 1 0 0) scale(3)",
+                                       "matrix(1 2 2 4 0 0)"])
+def test_a_collapsing_svg_transform_prints_nothing_on_stderr(tmp_path: Path, transform: str) -> None:
+    """A transform with a subnormal entry made numpy's LU determinant divide by zero (a warning on
+    stderr); whatever the matrix, the element is drawn or dropped quietly."""
+    drawing = tmp_path / "odd.svg"
+    drawing.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">'
+                       f'<path transform="{transform}" stroke="red" d="M2 2 L10 2 L10 10 Z"/>'
+                       '<rect x="3" y="3" width="10" height="8"/></svg>')
+    done = _run("render", drawing, drawing, "-o", "frames", "-q", "--frames", "0:2", cwd=tmp_path)
+    assert done.returncode == 0 and done.stderr == "", done.stderr

@@ -225,7 +225,7 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
             world_box = into
         else:
             world_box = (x, world[0], world[1], world[2])
-        scale = math.sqrt(abs(np.linalg.det(to_world[:2, :2])))
+        scale = math.sqrt(abs(_determinant(to_world)))
         if tolerance is None:
             tolerance = math.hypot(world_box[2] - world_box[0], world_box[3] - world_box[1]) * _DRAWING_TOLERANCE
         tol = _check_tolerance(tolerance)
@@ -279,13 +279,21 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
 # -- paint ---------------------------------------------------------------------------------------------
 
 
+def _determinant(matrix: np.ndarray) -> float:
+    """The determinant of the linear part of an affine ``matrix (3, 3)``, in closed form on Python floats:
+    numpy's LU route warns (divide by zero) on subnormal entries, and float overflow gives inf or nan
+    quietly here."""
+    (a, c), (b, d) = matrix[:2, :2].tolist()
+    return a * d - b * c
+
+
 def _paint(d: Drawn, scale: float) -> tuple[Paint, str, str, str, float]:
     """The element's paint (stroke width in world units), fill rule, cap, join and miter limit."""
     style = d.style
     fill = _color(style.get("fill", "black"), style, d.document, _number(style.get("fill-opacity"), 1.0))
     stroke = _color(style.get("stroke", "none"), style, d.document, _number(style.get("stroke-opacity"), 1.0))
     width_text = style.get("stroke-width", "1")
-    width = _stroke_width(width_text, d) * math.sqrt(abs(np.linalg.det(d.ctm[:2, :2]))) * scale
+    width = _stroke_width(width_text, d) * math.sqrt(abs(_determinant(d.ctm))) * scale
     fill_rule = "evenodd" if style.get("fill-rule", "nonzero").strip() == "evenodd" else "nonzero"
     cap = style.get("stroke-linecap", "butt").strip()
     join = style.get("stroke-linejoin", "miter").strip()
@@ -388,9 +396,8 @@ def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budge
     element drawn without a stroke, whose fill closes every subpath anyway) every subpath of
     three vertices or more is.
     """
-    with np.errstate(over="ignore", invalid="ignore"):
-        if not np.all(np.isfinite(to_world)) or abs(np.linalg.det(to_world[:2, :2])) == 0:
-            return []  # a transform that collapses the element: nothing is drawn (as in SVG)
+    if not np.all(np.isfinite(to_world)) or abs(_determinant(to_world)) == 0:
+        return []  # a transform that collapses the element: nothing is drawn (as in SVG)
     shape = _geometry(d.node, d.document)
     if shape is None:
         return []

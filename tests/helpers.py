@@ -163,3 +163,56 @@ def small_job(folder: Path, **changes):  # type: ignore[no-untyped-def]
     from tweenrender.scenefile import load_scene
 
     return RenderJob(load_scene(write_scene(folder, SMALL)), **changes)
+
+
+def stroke_coverage(contours: list[np.ndarray], closed: list[bool], width: float, size: tuple[int, int],
+                    samples: int = 16) -> np.ndarray:
+    """Brute force: the fraction of each pixel's ``samples²`` points within ``width / 2`` of the polylines
+    (a round-joined, round-capped stroke), ``(rows, cols)`` for ``size = (cols, rows)``."""
+    cols, rows = size
+    axis_x, axis_y = (np.arange(cols * samples) + 0.5) / samples, (np.arange(rows * samples) + 0.5) / samples
+    inside = np.zeros((rows * samples, cols * samples), dtype=bool)
+    r = width / 2
+    for vertices, shut in zip(contours, closed):
+        ends = np.roll(vertices, -1, axis=0) if shut else vertices[1:]
+        for p, q in zip(vertices if shut else vertices[:-1], ends):
+            xs = np.flatnonzero((axis_x >= min(p[0], q[0]) - r) & (axis_x <= max(p[0], q[0]) + r))
+            ys = np.flatnonzero((axis_y >= min(p[1], q[1]) - r) & (axis_y <= max(p[1], q[1]) + r))
+            if not len(xs) or not len(ys):
+                continue
+            px, py = np.meshgrid(axis_x[xs], axis_y[ys])
+            edge = q - p
+            length2 = edge @ edge
+            t = np.clip(((px - p[0]) * edge[0] + (py - p[1]) * edge[1]) / length2, 0, 1) if length2 else 0.0
+            inside[ys[0]:ys[-1] + 1, xs[0]:xs[-1] + 1] |= np.hypot(px - p[0] - t * edge[0],
+                                                                   py - p[1] - t * edge[1]) <= r
+    return inside.reshape(rows, samples, cols, samples).mean(axis=(1, 3))
+
+
+def stroke_cases() -> list[tuple[str, list[np.ndarray], list[bool], float]]:
+    """Outlines to stroke on a 48 × 40 canvas: smooth at four widths, a 30° and a 90° V (open), random
+    spikes, an open wiggle, a lone point."""
+    rng = np.random.default_rng(3)
+    cases = []
+    for width in (1.0, 2.0, 3.5, 8.0):
+        turn = np.linspace(0, 2 * np.pi, 120, endpoint=False)
+        radius = rng.uniform(8, 15)
+        outline = np.stack([24.3 + 1.2 * radius * np.cos(turn),
+                            20.1 + radius * np.sin(turn) * (0.8 + 0.2 * np.cos(3 * turn))], 1)
+        cases.append((f"smooth, {width:g} px", [outline], [True], width))
+    for angle in (30, 90):
+        half = np.radians(angle) / 2
+        tip = np.array([24.3, 12.2])
+        one = tip + np.outer(np.linspace(18, 0, 40, endpoint=False), [np.sin(half), np.cos(half)])
+        two = tip + np.outer(np.linspace(0, 18, 41), [-np.sin(half), np.cos(half)])
+        cases.append((f"a {angle}° V of straight arms, 2 px", [np.concatenate([one, two])], [False], 2.0))
+    for seed in range(2):
+        spikes = np.random.default_rng(seed)
+        turn = np.sort(spikes.uniform(0, 2 * np.pi, 100))
+        radius = spikes.uniform(6, 17, 100)
+        cases.append((f"random spikes, 2 px ({seed})", [np.stack([24 + radius * np.cos(turn),
+                                                                   20 + radius * np.sin(turn)], 1)], [True], 2.0))
+    x = np.linspace(4, 44, 60)
+    cases.append(("an open wiggle, 3 px", [np.stack([x, 20 + 9 * np.sin(x / 4)], 1)], [False], 3.0))
+    cases.append(("a lone point, closed, 5 px", [np.array([[20.3, 17.8], [20.3, 17.8]])], [True], 5.0))
+    return cases

@@ -10,7 +10,8 @@ from numpy.typing import NDArray
 
 from ..core.timeline import ShapeAt
 from ..model import Color, Scene, Shape
-from .surface import Raster, StrokeStyle, contours_path
+from .round_stroke import worth_compiling
+from .surface import Raster, StrokeStyle
 from .view import Box, Viewport
 
 __all__ = ["Composer", "Layer", "draw_shape"]
@@ -41,7 +42,7 @@ class Composer:
         self.panel_width, self.height = width, height
         self.width = width * len(self.labels)
         self.viewport = Viewport(view, width, height)
-        self.raster = Raster(self.width, height)
+        self.raster = Raster(self.width, height, round_strokes=worth_compiling(scene))
         # extras per panel (see raster.overlays): ``under``/``over`` hooks called with
         # (canvas, panel index, panel width, height, time), the canvas in panel pixels
         self.layers: list[Layer] = []
@@ -97,8 +98,8 @@ def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
     width = paint.stroke_width * (viewport.scale if shape.stroke_scales else 1.0)
     style = StrokeStyle(shape.cap, shape.join, shape.miter_limit)
     if at.fade is None:
-        path = contours_path([p for p, _ in kept], [shut for _, shut in kept], shape.fill_rule)
-        raster.draw_path(path, paint.fill, paint.stroke, width, style, paint.opacity * alpha)
+        raster.draw_contours([p for p, _ in kept], [shut for _, shut in kept], shape.fill_rule, paint.fill,
+                             paint.stroke, width, style, paint.opacity * alpha)
         return
     # a cross-fade: the shape as in the first key, plus the shape as in the second, weighted
     sides = [side for p, side in zip(pixels, at.sides) if len(p) >= 2 and np.all(np.isfinite(p))]
@@ -109,7 +110,7 @@ def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
         if not own:
             continue
         canvas.saveLayer(None, skia.Paint(Alphaf=weight, BlendMode=skia.BlendMode.kPlus))
-        raster.draw_path(contours_path([p for p, _ in own], [s for _, s in own], shape.fill_rule),
-                         paint.fill, paint.stroke, width, style)
+        raster.draw_contours([p for p, _ in own], [s for _, s in own], shape.fill_rule, paint.fill, paint.stroke,
+                             width, style)
         canvas.restore()
     canvas.restore()

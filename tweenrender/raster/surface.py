@@ -12,9 +12,10 @@ from numpy.typing import NDArray
 from ..model import Color
 from .clip import clip_to_box
 from .fonts import drawable, font
+from .round_stroke import MIN_WIDTH, draws_on, stroke_contours
 
-__all__ = ["Raster", "paint_color", "polygon_path", "contours_path", "StrokeStyle", "fill_and_stroke",
-           "hides_fill_edge"]
+__all__ = ["Raster", "paint_color", "polygon_path", "contours_path", "clipped_contours", "StrokeStyle",
+           "fill_and_stroke", "hides_fill_edge"]
 
 # skia's serialised path (version 5): int32 header (version | fill type << 8),
 # point, conic and verb counts, then float32 points and one byte per verb,
@@ -65,11 +66,23 @@ def contours_path(contours: Sequence[NDArray[np.float64]], closed: Sequence[bool
     """One skia path of every contour ``(N_i, 2)`` in pixels (finite), closed or open, under ``fill_rule``
     (``"nonzero"`` or ``"evenodd"``); vertices far off the canvas are cut away first (see :mod:`.clip`),
     so every coordinate fits float32."""
-    path = skia.Path()
-    even = fill_rule == "evenodd"
+    contours, closed = clipped_contours(contours, closed)
+    return _path_of(contours, closed, fill_rule)
+
+
+def clipped_contours(contours: Sequence[NDArray[np.float64]],
+                     closed: Sequence[bool]) -> tuple[list[NDArray[np.float64]], list[bool]]:
+    """``contours`` (each ``(N_i, 2)`` pixels, finite) cut to the box of :mod:`.clip`, empty ones dropped,
+    with their ``closed`` flags."""
     kept = [(clip_to_box(points, shut), shut) for points, shut in zip(contours, closed)]
     kept = [(points, shut) for points, shut in kept if len(points)]
-    contours, closed = [p for p, _ in kept], [s for _, s in kept]
+    return [p for p, _ in kept], [s for _, s in kept]
+
+
+def _path_of(contours: list[NDArray[np.float64]], closed: list[bool], fill_rule: str) -> skia.Path:
+    """The skia path of contours already cut by :func:`clipped_contours`."""
+    path = skia.Path()
+    even = fill_rule == "evenodd"
     if not contours:
         return path
     if _SERIAL_OK and path.readFromMemory(_serialised(contours, closed, int(even))):
@@ -118,12 +131,14 @@ def hides_fill_edge(stroke: skia.Paint, fill: skia.Paint, matrix: skia.Matrix | 
     return stroke.getStrokeWidth() * scale >= 2.0
 
 
-def fill_and_stroke(canvas: skia.Canvas, path: skia.Path, fill: skia.Paint | None, stroke: skia.Paint | None) -> None:
+def fill_and_stroke(canvas: skia.Canvas, path: skia.Path, fill: skia.Paint | None, stroke: skia.Paint | None,
+                    hidden_by: skia.Paint | None = None) -> None:
     """Fill ``path`` with ``fill`` (if given), then stroke it with ``stroke`` (if given): the plain two
     draws, except that a fill wholly edged by an opaque stroke skips its antialiasing (see
-    :func:`hides_fill_edge`)."""
+    :func:`hides_fill_edge`). ``hidden_by``: the stroke that will be drawn over the fill by other means."""
+    edge = stroke if stroke is not None else hidden_by
     if fill is not None:
-        if stroke is not None and fill.isAntiAlias() and hides_fill_edge(stroke, fill, canvas.getTotalMatrix()):
+        if edge is not None and fill.isAntiAlias() and hides_fill_edge(edge, fill, canvas.getTotalMatrix()):
             fill = skia.Paint(fill)
             fill.setAntiAlias(False)
         canvas.drawPath(path, fill)
@@ -141,11 +156,14 @@ class Raster:
     """One skia surface of ``width × height`` pixels, reused frame after frame.
 
     The surface draws straight into a numpy array (premultiplied BGRA, no copy),
-    which :meth:`bgra` hands out as it is.
+    which :meth:`bgra` hands out as it is. With ``round_strokes`` set,
+    :meth:`draw_contours` draws round-joined strokes with the compiled kernel of
+    :mod:`.round_stroke` wherever it can draw what skia would.
     """
 
-    def __init__(self, width: int, height: int) -> None:
+    def __init__(self, width: int, height: int, round_strokes: bool = False) -> None:
         self.width, self.height = width, height
+        self.round_strokes = round_strokes
         self._pixels = np.zeros((height, width, 4), dtype=np.uint8)
         self.surface = skia.Surface(self._pixels, colorType=skia.kBGRA_8888_ColorType,
                                     alphaType=skia.kPremul_AlphaType)
@@ -197,6 +215,38 @@ class Raster:
         if strokes:
             self._stroke.setStrokeCap(skia.Paint.kRound_Cap)
             self._stroke.setStrokeJoin(skia.Paint.kRound_Join)
+
+    def draw_contours(self, contours: Sequence[NDArray[np.float64]], closed: Sequence[bool], fill_rule: str,
+                      fill: Color | None, stroke: Color | None = None, stroke_width: float = 0.0,
+                      style: StrokeStyle = StrokeStyle(), opacity: float = 1.0) -> None:
+        """Fill and/or stroke ``contours`` (each ``(N_i, 2)`` pixels, finite) as one path under ``fill_rule``;
+        as :meth:`draw_path`, with the stroke drawn by the compiled kernel where :attr:`round_strokes` allows
+        and it draws what skia would (a round join, round caps or no open end, at least a pixel wide, no
+        layer between; see :func:`.round_stroke.draws_on`)."""
+        contours, closed = clipped_contours(contours, closed)
+        path = _path_of(contours, closed, fill_rule)
+        fills = fill is not None and fill[3] > 0
+        strokes = stroke is not None and stroke[3] > 0 and stroke_width > 0
+        placed = None
+        if (self.round_strokes and strokes and opacity > 0 and not (opacity < 1.0 and fills)
+                and style.join == "round" and (style.cap == "round" or all(closed))):
+            placed = draws_on(self.canvas, self._pixels)
+        if placed is None or placed[0] * stroke_width < MIN_WIDTH:
+            self.draw_path(path, fill, stroke, stroke_width, style, opacity)
+            return
+        scale, dx, dy, clip = placed
+        if fills:
+            fill_paint = skia.Paint(self._fill)
+            fill_paint.setColor(paint_color(fill, opacity))  # type: ignore[arg-type]
+            stroke_paint = skia.Paint(self._stroke)
+            stroke_paint.setColor(paint_color(stroke, opacity))  # type: ignore[arg-type]
+            stroke_paint.setStrokeWidth(stroke_width)
+            fill_and_stroke(self.canvas, path, fill_paint, None, hidden_by=stroke_paint)
+        r, g, b, _ = stroke  # type: ignore[misc]
+        alpha = int(round(stroke[3] * opacity))  # type: ignore[index]
+        premultiplied = np.array([b, g, r, 255.0]) * (alpha / 255.0)
+        stroke_contours(self._pixels, contours, closed, scale * stroke_width, premultiplied, scale, (dx, dy),
+                        (clip.left(), clip.top(), clip.right(), clip.bottom()))
 
     def line(self, a: tuple[float, float], b: tuple[float, float], color: Color, width: float = 1.0) -> None:
         self._stroke.setColor(paint_color(color))

@@ -1,0 +1,182 @@
+"""The compiled round stroke: its coverage against brute force (beside skia's own), its blending, and
+where :class:`Raster` uses it or leaves the stroke to skia."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tests.helpers import stroke_cases, stroke_coverage
+
+skia = pytest.importorskip("skia")
+
+from tweenrender.raster.round_stroke import stroke_contours, worth_compiling  # noqa: E402
+from tweenrender.raster.surface import Raster, StrokeStyle, contours_path  # noqa: E402
+
+SIZE = (48, 40)
+WHITE = np.array([255.0, 255.0, 255.0, 255.0])
+
+
+def _black() -> np.ndarray:
+    pixels = np.zeros((SIZE[1], SIZE[0], 4), np.uint8)
+    pixels[..., 3] = 255
+    return pixels
+
+
+def _skia_coverage(contours: list[np.ndarray], closed: list[bool], width: float) -> np.ndarray:
+    pixels = _black()
+    surface = skia.Surface(pixels, colorType=skia.kBGRA_8888_ColorType)
+    surface.getCanvas().drawPath(contours_path(contours, closed), skia.Paint(
+        AntiAlias=True, Style=skia.Paint.kStroke_Style, StrokeWidth=width, Color=skia.ColorWHITE,
+        StrokeJoin=skia.Paint.kRound_Join, StrokeCap=skia.Paint.kRound_Cap))
+    return pixels[..., 0] / 255
+
+
+@pytest.mark.parametrize("case", stroke_cases(), ids=lambda case: case[0])
+def test_coverage_is_as_close_to_the_exact_area_as_skias(case) -> None:
+    label, contours, closed, width = case
+    truth = stroke_coverage(contours, closed, width, SIZE)
+    pixels = _black()
+    stroke_contours(pixels, contours, closed, width, WHITE)
+    ours = np.abs(pixels[..., 0] / 255 - truth)
+    theirs = np.abs(_skia_coverage(contours, closed, width) - truth)
+    assert ours.mean() <= theirs.mean() + 1e-4, label
+    # where two parts of a spiky outline cross one pixel the two-edge model is approximate
+    assert ours.max() <= (0.36 if "spikes" in label else 0.16), label
+
+
+def test_a_straight_stroke_has_the_closed_form_coverage_and_blends_source_over() -> None:
+    # a horizontal 2 px stroke centred on y = 20.25 spans y 19.25 to 21.25: three quarters of row 19,
+    # all of row 20, a quarter of row 21; drawn 60 % opaque red over a blue background
+    pixels = np.zeros((SIZE[1], SIZE[0], 4), np.uint8)
+    pixels[...] = (200, 0, 0, 255)  # BGRA blue
+    alpha = 153
+    colour = np.array([0.0, 0.0, 255.0, 255.0]) * (alpha / 255)  # premultiplied BGRA red
+    stroke_contours(pixels, [np.array([[5.0, 20.25], [40.0, 20.25]])], [False], 2.0, colour)
+    for row, covered in ((18, 0.0), (19, 0.75), (20, 1.0), (21, 0.25), (22, 0.0)):
+        a = covered * alpha / 255
+        expected = (200 * (1 - a), 0, 255 * a, 255)
+        assert np.abs(pixels[row, 20].astype(float) - expected).max() <= 1.0, row
+
+
+def test_degenerate_outlines_draw_without_nan_or_escape() -> None:
+    pixels = _black()
+    far = 2.0 ** 21
+    touched = stroke_contours(pixels, [np.array([[-far, -far], [far, far]]),  # across the canvas, ends far off
+                                       np.array([[40.0, 5.0]]),  # one point: nothing
+                                       np.array([[30.0, 30.0], [30.0, 30.0], [30.0, 30.0]])],  # a dot
+                              [False, True, True], 3.0, WHITE)
+    assert touched > 0
+    # the diagonal through the canvas: the pixel on it is lit, one 5 px off it is not
+    assert pixels[20, 20, 0] == 255 and pixels[20, 26, 0] == 0
+    assert pixels[30, 30, 0] == 255  # the dot
+    assert pixels[5, 40, 0] == 0
+    assert stroke_contours(_black(), [], [], 2.0, WHITE) == 0
+
+
+def test_the_clip_box_is_kept() -> None:
+    pixels = _black()
+    stroke_contours(pixels, [np.array([[2.0, 20.0], [46.0, 20.0]])], [False], 4.0, WHITE, clip=(10, 0, 30, 40))
+    assert pixels[20, 10:30, 0].min() == 255
+    assert pixels[:, :10, 0].max() == 0 and pixels[:, 30:, 0].max() == 0
+
+
+def _spiky(count: int = 300) -> list[np.ndarray]:
+    rng = np.random.default_rng(7)
+    turn = np.linspace(0, 2 * np.pi, count, endpoint=False)
+    radius = 14 + rng.uniform(-3, 3, count)
+    return [np.stack([32 + radius * np.cos(turn), 24 + radius * np.sin(turn)], 1)]
+
+
+def _drawn(round_strokes: bool, style: StrokeStyle = StrokeStyle(), opacity: float = 1.0,
+           transform: tuple[str, float] | None = None, fill: tuple[int, int, int, int] | None = (59, 111, 216, 255),
+           width: float = 2.0, closed: bool = True) -> np.ndarray:
+    raster = Raster(64, 48, round_strokes=round_strokes)
+    raster.clear((250, 248, 240, 255))
+    raster.canvas.save()
+    if transform is not None:
+        how, amount = transform
+        if how == "scale":
+            raster.canvas.scale(amount, amount)
+        elif how == "stretch":
+            raster.canvas.scale(amount, 1.0)
+        elif how == "layer":
+            raster.canvas.saveLayerAlpha(None, int(amount))
+        elif how == "round clip":
+            raster.canvas.clipRRect(skia.RRect.MakeRectXY(skia.Rect.MakeWH(64, 48), 9, 9))
+    raster.draw_contours(_spiky(), [closed], "nonzero", fill, (29, 43, 80, 255), width, style, opacity)
+    raster.canvas.restore()
+    if transform is not None and transform[0] == "layer":
+        raster.canvas.restore()
+    return raster.rgba().astype(int)
+
+
+def test_raster_draws_round_strokes_like_skia_does() -> None:
+    ours, skias = _drawn(True), _drawn(False)
+    difference = np.abs(ours - skias)
+    assert not np.array_equal(ours, skias)  # the kernel drew it
+    assert difference.mean() < 1.5 and difference.max() <= 120  # antialiasing differences only
+    assert (difference[..., :3].max(axis=2) > 40).mean() < 0.01
+
+
+@pytest.mark.parametrize("variant", [
+    {"style": StrokeStyle(join="miter")}, {"style": StrokeStyle(join="bevel")},
+    {"style": StrokeStyle(cap="butt"), "closed": False}, {"opacity": 0.5},
+    {"transform": ("stretch", 1.5)}, {"transform": ("layer", 128)}, {"transform": ("round clip", 0)},
+    {"width": 0.5},
+], ids=["miter", "bevel", "open-butt", "translucent-with-fill", "stretched", "in-a-layer", "round-clip", "thin"])
+def test_strokes_the_kernel_cannot_draw_are_skias_bit_for_bit(variant: dict) -> None:
+    assert np.array_equal(_drawn(True, **variant), _drawn(False, **variant))
+
+
+@pytest.mark.parametrize("variant", [
+    {"transform": ("scale", 1.5)}, {"fill": None, "opacity": 0.5}, {"style": StrokeStyle(cap="butt")},
+], ids=["uniform-scale", "translucent-stroke-alone", "closed-with-butt-caps"])
+def test_strokes_it_can_draw_are_drawn_by_it_and_agree_with_skia(variant: dict) -> None:
+    ours, skias = _drawn(True, **variant), _drawn(False, **variant)
+    assert not np.array_equal(ours, skias)
+    assert np.abs(ours - skias).mean() < 1.5
+
+
+def test_only_scenes_with_many_round_stroked_segments_use_it(tmp_path: Path) -> None:
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
+    from make_busy import busy_scene, stroked_scene
+
+    from tweenrender.scenefile import load_scene
+
+    for text, expected in ((stroked_scene(1.0), True), (busy_scene(1.0), False),
+                           (stroked_scene(1.0).replace('stroke = "#1d2b50"', "stroke = \"none\""), False)):
+        scene = tmp_path / "scene.toml"
+        scene.write_text(text)
+        assert worth_compiling(load_scene(scene)) is expected
+
+
+def test_side_by_side_panels_keep_the_kernels_strokes_inside_their_own(tmp_path: Path) -> None:
+    # the detailed stroked scene, shrunk, in two panels (each translated and clipped): drawn with the
+    # kernel and with skia, the pictures agree to antialiasing, panel edges included
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
+    from make_busy import stroked_scene
+
+    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.scenefile import load_scene
+
+    scene = tmp_path / "stroked.toml"
+    scene.write_text(stroked_scene(1.0).replace("size = [1920, 1080]", "size = [480, 270]")
+                     .replace("view = [0, 0, 32, 18]", "view = [4, 2, 20, 11]"))
+    pictures = []
+    for kernel in (True, False):
+        frames = Frames(RenderJob(load_scene(scene), methods=("linear", "nonlinear")), "rgba")
+        frames(0)
+        assert frames.composer.raster.round_strokes  # a scene this detailed uses the kernel
+        frames.composer.raster.round_strokes = kernel
+        pictures.append(frames(12).astype(int))
+    difference = np.abs(pictures[0] - pictures[1])
+    assert difference.mean() < 1.5
+    # a 6 px band each side of the divider: no stroke of one panel drawn into the other
+    assert difference[:, 480 - 6:480 + 6].mean() < 3.0

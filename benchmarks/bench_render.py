@@ -209,9 +209,8 @@ def stroke_costs(folder: Path) -> None:
     import numpy as np
     import skia
 
-    import distance_stroke
-
     from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.raster.round_stroke import stroke_contours
     from tweenrender.raster.surface import polygon_path
     from tweenrender.scenefile import load_scene
 
@@ -226,9 +225,8 @@ def stroke_costs(folder: Path) -> None:
     polygons = [[at.contours[0] for at in frames.frame_shapes(None, i * 10)] for i in range(count)]
     pixels = [[view.to_pixels(p) for p in ps] for ps in polygons]
     paths = [[polygon_path(p) for p in ps] for ps in pixels]
-    ink = (29, 43, 80, 255)
-    scratch = distance_stroke.Scratch(raster.height, raster.width)
-    distance_stroke.stroke(raster.bgra(), pixels[0][:1], [True], 2.0, ink, scratch)  # compiled before timing
+    ink = np.array([80.0, 43.0, 29.0, 255.0])  # premultiplied BGRA
+    stroke_contours(raster.bgra(), pixels[0][:1], [True], 2.0, ink)  # loaded before timing
 
     def paint(**settings: object) -> skia.Paint:
         return skia.Paint(**{"AntiAlias": True, "Color": skia.ColorSetARGB(255, 29, 43, 80), **settings})
@@ -278,12 +276,13 @@ def stroke_costs(folder: Path) -> None:
         ("fill and stroke in one pass (kStrokeAndFill, one colour)", timed(lambda p: raster.canvas.drawPath(p, both))),
         ("fill + stroke as drawn before", timed(lambda p: (raster.canvas.drawPath(p, fill),
                                                           raster.canvas.drawPath(p, stroke)))),
-        ("fill + stroke as drawn now (aliased fill under skia's stroke)",
+        ("fill + stroke, aliased fill under skia's stroke",
          timed(lambda p: (raster.canvas.drawPath(p, aliased), raster.canvas.drawPath(p, stroke)))),
-        ("stroke from distances (distance_stroke.py), nearest edge only",
-         timed(lambda p: distance_stroke.stroke(raster.bgra(), [p], [True], 2.0, ink, scratch, False), pixels)),
-        ("stroke from distances, two edges where they cross a pixel",
-         timed(lambda p: distance_stroke.stroke(raster.bgra(), [p], [True], 2.0, ink, scratch, True), pixels)),
+        ("stroke from distances (raster/round_stroke.py, compiled)",
+         timed(lambda p: stroke_contours(raster.bgra(), [p], [True], 2.0, ink), pixels)),
+        ("fill + stroke as drawn now (aliased fill under the compiled stroke)",
+         timed(lambda p: (raster.canvas.drawPath(polygon_path(p), aliased),
+                          stroke_contours(raster.bgra(), [p], [True], 2.0, ink)), pixels)),
     ]
     lengths = np.concatenate([np.hypot(*np.diff(view.to_pixels(p), axis=0).T) for p in polygons[0]])
     print(f"## Where a stroked frame's drawing goes (100 shapes x 500 vertices, 2 px outline, 1080p; {load()})")

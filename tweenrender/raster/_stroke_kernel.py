@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 from numba import njit
 
-__all__ = ["coverage", "stroke_segments"]
+__all__ = ["coverage", "polyline_segments", "stroke_segments"]
 
 _HALF_DIAGONAL = 0.7072
 """A pixel whose centre lies farther than ``r + √½`` from every segment is not covered at all."""
@@ -168,6 +168,33 @@ def _both(u1: float, n1x: float, n1y: float, u2: float, n2x: float, n2y: float, 
         j = i + 1 if i + 1 < count else 0
         area += buffers[0, i, 0] * buffers[0, j, 1] - buffers[0, j, 0] * buffers[0, i, 1]
     return 0.5 * abs(area)
+
+
+@_jit
+def polyline_segments(points: np.ndarray, counts: np.ndarray, closed: np.ndarray, scale: float, dx: float,
+                      dy: float) -> np.ndarray:
+    """The segments ``(M, 4)`` (``ax, ay, bx, by``) of contours laid end to end in ``points (N, 2)``,
+    ``counts[k]`` vertices each (contours of fewer than 2 are skipped), closed or open, each vertex taken to
+    ``scale · p + (dx, dy)``."""
+    total = 0
+    for k in range(counts.shape[0]):
+        if counts[k] >= 2:
+            total += counts[k] if closed[k] else counts[k] - 1
+    segments = np.empty((total, 4))
+    start = 0
+    row = 0
+    for k in range(counts.shape[0]):
+        n = counts[k]
+        if n >= 2:
+            for i in range(n if closed[k] else n - 1):
+                j = start + (i + 1) % n
+                segments[row, 0] = scale * points[start + i, 0] + dx
+                segments[row, 1] = scale * points[start + i, 1] + dy
+                segments[row, 2] = scale * points[j, 0] + dx
+                segments[row, 3] = scale * points[j, 1] + dy
+                row += 1
+        start += n
+    return segments
 
 
 @_jit

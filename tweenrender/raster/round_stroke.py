@@ -61,13 +61,14 @@ def worth_compiling(scene: Scene) -> bool:
     return total >= MIN_SEGMENTS
 
 
-def draws_on(canvas: skia.Canvas, pixels: NDArray[np.uint8]) -> tuple[float, float, float, skia.IRect] | None:
-    """``(scale, dx, dy, clip)`` when ``canvas`` draws straight onto ``pixels`` (its top layer is that
-    memory) under a rectangular clip and a uniform scale with translation; ``None`` otherwise."""
+def draws_on(canvas: skia.Canvas, address: int) -> tuple[float, float, float, skia.IRect] | None:
+    """``(scale, dx, dy, clip)`` when ``canvas`` draws straight onto the pixels at ``address`` (its top
+    layer is that memory) under a rectangular clip and a uniform scale with translation; ``None``
+    otherwise."""
     if not canvas.isClipRect():
         return None
     top = canvas.accessTopLayerPixels()  # a layer's own memory inside saveLayer (peekPixels gives the base)
-    if top is None or np.asarray(top).__array_interface__["data"][0] != pixels.ctypes.data:
+    if top is None or np.asarray(top).__array_interface__["data"][0] != address:
         return None
     matrix = canvas.getTotalMatrix()
     if not matrix.isScaleTranslate():
@@ -85,19 +86,16 @@ def stroke_contours(pixels: NDArray[np.uint8], contours: Sequence[NDArray[np.flo
     after ``scale`` and ``offset``) ``width`` device pixels wide, in ``premultiplied (4,)`` colour (0..255,
     the pixels' channel order, alpha last), source-over onto premultiplied ``pixels (H, W, 4)`` inside
     ``clip`` (left, top, right, bottom; default the whole). Returns the number of pixels touched."""
-    runs = []
-    for points, shut in zip(contours, closed):
-        if len(points) < 2:
-            continue
-        ends = np.roll(points, -1, axis=0) if shut else points[1:]
-        runs.append(np.concatenate([points if shut else points[:-1], ends], axis=1))
-    if not runs:
+    if not contours:
         return 0
-    segments = np.concatenate(runs) * scale
-    segments[:, 0::2] += offset[0]
-    segments[:, 1::2] += offset[1]
+    kernel = _kernel()
+    points = contours[0] if len(contours) == 1 else np.concatenate(contours)
+    segments = kernel.polyline_segments(np.ascontiguousarray(points, dtype=np.float64),
+                                        np.array([len(c) for c in contours], dtype=np.int64),
+                                        np.array(closed, dtype=np.bool_), float(scale), float(offset[0]),
+                                        float(offset[1]))
     height, wide = pixels.shape[:2]
     left, top, right, bottom = clip if clip is not None else (0, 0, wide, height)
     left, top, right, bottom = max(0, left), max(0, top), min(wide, right), min(height, bottom)
-    return int(_kernel().stroke_segments(pixels, segments, width / 2, np.asarray(premultiplied, dtype=np.float64),
-                                         left, top, right, bottom))
+    return int(kernel.stroke_segments(pixels, segments, width / 2, np.asarray(premultiplied, dtype=np.float64),
+                                      left, top, right, bottom))

@@ -105,6 +105,7 @@ class StrokeStyle:
 
 _CAPS = {"butt": skia.Paint.kButt_Cap, "round": skia.Paint.kRound_Cap, "square": skia.Paint.kSquare_Cap}
 _JOINS = {"miter": skia.Paint.kMiter_Join, "round": skia.Paint.kRound_Join, "bevel": skia.Paint.kBevel_Join}
+_ROUND = StrokeStyle()
 
 
 def hides_fill_edge(stroke: skia.Paint, fill: skia.Paint, matrix: skia.Matrix | None = None) -> bool:
@@ -174,6 +175,8 @@ class Raster:
         self._fill = skia.Paint(AntiAlias=True, Style=skia.Paint.kFill_Style)
         self._stroke = skia.Paint(AntiAlias=True, Style=skia.Paint.kStroke_Style,
                                   StrokeJoin=skia.Paint.kRound_Join, StrokeCap=skia.Paint.kRound_Cap)
+        self._restyled = False  # the stroke paint has other caps or joins than round ones
+        self._address = self._pixels.ctypes.data
 
     def clear(self, color: Color) -> None:
         self.canvas.clear(paint_color(color))
@@ -195,26 +198,38 @@ class Raster:
         if opacity <= 0 or not (fills or strokes):
             return
         layer = opacity < 1.0 and fills and strokes
-        alpha = 1.0 if layer else opacity
-        fill_paint = stroke_paint = None
-        if fills:
-            fill_paint = self._fill
-            fill_paint.setColor(paint_color(fill, alpha))  # type: ignore[arg-type]
-        if strokes:
-            stroke_paint = self._stroke
-            stroke_paint.setColor(paint_color(stroke, alpha))  # type: ignore[arg-type]
-            stroke_paint.setStrokeWidth(stroke_width)
-            stroke_paint.setStrokeCap(_CAPS[style.cap])
-            stroke_paint.setStrokeJoin(_JOINS[style.join])
-            stroke_paint.setStrokeMiter(style.miter_limit)
+        fill_paint, stroke_paint = self._paints(fill if fills else None, stroke if strokes else None, stroke_width,
+                                                style, 1.0 if layer else opacity)
         if layer:
             self.canvas.saveLayerAlpha(None, int(round(255 * opacity)))
         fill_and_stroke(self.canvas, path, fill_paint, stroke_paint)
         if layer:
             self.canvas.restore()
-        if strokes:
+
+    def _paints(self, fill: Color | None, stroke: Color | None, stroke_width: float, style: StrokeStyle,
+                alpha: float) -> tuple[skia.Paint | None, skia.Paint | None]:
+        """The raster's fill and stroke paints set for ``fill`` and ``stroke`` (``None``: not drawn) at
+        ``alpha``; the stroke's caps and joins go back to round at the next call (``line`` strokes
+        with round ones too)."""
+        if self._restyled:
             self._stroke.setStrokeCap(skia.Paint.kRound_Cap)
             self._stroke.setStrokeJoin(skia.Paint.kRound_Join)
+            self._stroke.setStrokeMiter(_ROUND.miter_limit)
+            self._restyled = False
+        fill_paint = stroke_paint = None
+        if fill is not None:
+            fill_paint = self._fill
+            fill_paint.setColor(paint_color(fill, alpha))
+        if stroke is not None:
+            stroke_paint = self._stroke
+            stroke_paint.setColor(paint_color(stroke, alpha))
+            stroke_paint.setStrokeWidth(stroke_width)
+            if style != _ROUND:
+                stroke_paint.setStrokeCap(_CAPS[style.cap])
+                stroke_paint.setStrokeJoin(_JOINS[style.join])
+                stroke_paint.setStrokeMiter(style.miter_limit)
+                self._restyled = True
+        return fill_paint, stroke_paint
 
     def draw_contours(self, contours: Sequence[NDArray[np.float64]], closed: Sequence[bool], fill_rule: str,
                       fill: Color | None, stroke: Color | None = None, stroke_width: float = 0.0,
@@ -230,17 +245,13 @@ class Raster:
         placed = None
         if (self.round_strokes and strokes and opacity > 0 and not (opacity < 1.0 and fills)
                 and style.join == "round" and (style.cap == "round" or all(closed))):
-            placed = draws_on(self.canvas, self._pixels)
+            placed = draws_on(self.canvas, self._address)
         if placed is None or placed[0] * stroke_width < MIN_WIDTH:
             self.draw_path(path, fill, stroke, stroke_width, style, opacity)
             return
         scale, dx, dy, clip = placed
         if fills:
-            fill_paint = skia.Paint(self._fill)
-            fill_paint.setColor(paint_color(fill, opacity))  # type: ignore[arg-type]
-            stroke_paint = skia.Paint(self._stroke)
-            stroke_paint.setColor(paint_color(stroke, opacity))  # type: ignore[arg-type]
-            stroke_paint.setStrokeWidth(stroke_width)
+            fill_paint, stroke_paint = self._paints(fill, stroke, stroke_width, style, opacity)
             fill_and_stroke(self.canvas, path, fill_paint, None, hidden_by=stroke_paint)
         r, g, b, _ = stroke  # type: ignore[misc]
         alpha = int(round(stroke[3] * opacity))  # type: ignore[index]
@@ -249,9 +260,8 @@ class Raster:
                         (clip.left(), clip.top(), clip.right(), clip.bottom()))
 
     def line(self, a: tuple[float, float], b: tuple[float, float], color: Color, width: float = 1.0) -> None:
-        self._stroke.setColor(paint_color(color))
-        self._stroke.setStrokeWidth(width)
-        self.canvas.drawLine(a[0], a[1], b[0], b[1], self._stroke)
+        _, paint = self._paints(None, color, width, _ROUND, 1.0)
+        self.canvas.drawLine(a[0], a[1], b[0], b[1], paint)
 
     def text(self, words: str, x: float, y: float, size: float, color: Color, bold: bool = False) -> None:
         """Draw ``words`` with its baseline's left end at pixel ``(x, y)``."""

@@ -11,11 +11,12 @@ misses some of it, so the nearest segment whose nearest point lies inside it
 (not at an end) is kept too, and its part is added less the part both cover
 (the pixel clipped by both edges, ``_both``).
 
-Pass one visits, per segment, exactly the pixels whose centres lie within
-``r + √½`` of it (the capsule's cross-section with each pixel row, an interval
-in closed form) and keeps each pixel's two nearest in canvas-sized scratch
-planes; pass two blends every pixel touched once, source-over, and clears its
-scratch again.
+The work goes row by row, so that a row's scratch stays in the cache: each
+segment whose capsule (the points within ``r + √½``, beyond which a pixel is not
+covered at all) reaches the row visits the row's pixels inside the capsule's
+box and the slab along it, and keeps in each the two nearest segments and the
+offset from the nearest one's nearest point; then the row's touched pixels are
+blended once, source-over.
 """
 
 from __future__ import annotations
@@ -33,20 +34,16 @@ _HALF_DIAGONAL = 0.7072
 """A pixel whose centre lies farther than ``r + √½`` from every segment is not covered at all."""
 
 
-_FAST = {"nsz", "arcp", "contract", "afn", "reassoc"}
-"""Fast-math flags that keep infinities and NaN checks (``nnan``, ``ninf`` would drop them)."""
-
-
 def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
     """Compile lazily with an on-disk cache; without it where no cache folder is usable (see
     ``core/_cyclic_dtw.py``)."""
     try:
-        return njit(cache=True, nogil=True, error_model="numpy", fastmath=_FAST)(func)
+        return njit(cache=True, nogil=True, error_model="numpy")(func)
     except RuntimeError:
-        return njit(cache=False, nogil=True, error_model="numpy", fastmath=_FAST)(func)
+        return njit(cache=False, nogil=True, error_model="numpy")(func)
 
 
-_inline = njit(inline="always", error_model="numpy", fastmath=_FAST)
+_inline = njit(inline="always", error_model="numpy")
 
 
 @_jit
@@ -66,44 +63,6 @@ def coverage(u: float, nx: float, ny: float) -> float:
     if u > 0.0:
         return 1.0 - (outer - u) ** 2 / (2.0 * a * b)
     return (outer + u) ** 2 / (2.0 * a * b)
-
-
-@_inline
-def _row_span(ax: float, ay: float, ex: float, ey: float, length2: float, inv_ex: float, inv_ey: float,
-              band: float, yc: float, far: float) -> tuple[float, float]:
-    """``(left, right)``: the stretch of the line ``y = yc`` within ``reach`` (``far = reach²``) of the
-    segment from ``(ax, ay)`` along ``(ex, ey)``; ``left > right`` when there is none. ``inv_ex``, ``inv_ey``
-    are ``1 / ex``, ``1 / ey`` (0 where those are 0), ``band = reach · |e|``. The capsule is convex, so its
-    cross-section is one interval: the union of the two end discs' and the band's."""
-    left, right = np.inf, -np.inf
-    dy = yc - ay
-    h2 = far - dy * dy
-    if h2 >= 0.0:
-        h = math.sqrt(h2)
-        left, right = ax - h, ax + h
-    dy_end = dy - ey
-    h2 = far - dy_end * dy_end
-    if h2 >= 0.0:
-        h = math.sqrt(h2)
-        left, right = min(left, ax + ex - h), max(right, ax + ex + h)
-    if length2 > 0.0:
-        # the band: 0 <= (p - a) · e <= |e|², |(p - a) × e| <= reach |e|
-        lo, hi = -np.inf, np.inf
-        along = dy * ey
-        if inv_ex != 0.0:
-            s0, s1 = -along * inv_ex, (length2 - along) * inv_ex
-            lo, hi = min(s0, s1), max(s0, s1)
-        elif along < 0.0 or along > length2:
-            return left, right
-        across = dy * ex
-        if inv_ey != 0.0:
-            s0, s1 = (across - band) * inv_ey, (across + band) * inv_ey
-            lo, hi = max(lo, min(s0, s1)), min(hi, max(s0, s1))
-        elif abs(across) > band:
-            return left, right
-        if lo <= hi:
-            left, right = min(left, ax + lo), max(right, ax + hi)
-    return left, right
 
 
 @_inline
@@ -218,22 +177,28 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
     reach = radius + _HALF_DIAGONAL
     far = reach * reach
     inverse = np.empty(m)
-    constants = np.empty((m, 3))  # 1 / ex, 1 / ey (0 where 0), reach · |e|
+    constants = np.empty((m, 4))  # x0, x1 of the box; ex / ey and reach · |e| / |ey| of the slab (-1: none)
     firsts = np.empty(m, np.int64)
     lasts = np.empty(m, np.int64)
     for s in range(m):
         ax, ay, bx, by = segments[s, 0], segments[s, 1], segments[s, 2], segments[s, 3]
         ex, ey = bx - ax, by - ay
         length2 = ex * ex + ey * ey
-        constants[s, 0] = 1.0 / ex if ex != 0.0 else 0.0
-        constants[s, 1] = 1.0 / ey if ey != 0.0 else 0.0
-        constants[s, 2] = reach * math.sqrt(length2)
+        constants[s, 0] = min(ax, bx) - reach
+        constants[s, 1] = max(ax, bx) + reach
+        if ey != 0.0 and length2 > 0.0:
+            constants[s, 2] = ex / ey
+            constants[s, 3] = reach * math.sqrt(length2) / abs(ey)
+        else:
+            constants[s, 2] = 0.0
+            constants[s, 3] = -1.0
         inverse[s] = 1.0 / length2 if length2 > 0.0 else 0.0
         firsts[s] = max(top, int(math.ceil(min(ay, by) - reach - 0.5)))
         lasts[s] = min(bottom - 1, int(math.floor(max(ay, by) + reach - 0.5)))
     order = np.argsort(firsts, kind="mergesort")
     width = pixels.shape[1]
     gain = np.zeros((width, 2))
+    vector = np.empty((width, 2))  # from the nearest segment's nearest point to the pixel's centre
     owner = np.zeros((width, 2), np.int64)
     touched = np.empty(width, np.int64)
     active = np.empty(m, np.int64)
@@ -273,10 +238,12 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
             ax, ay = segments[s, 0], segments[s, 1]
             ex, ey = segments[s, 2] - ax, segments[s, 3] - ay
             inv = inverse[s]
-            low, high = _row_span(ax, ay, ex, ey, ex * ex + ey * ey, constants[s, 0], constants[s, 1], constants[s, 2],
-                                  yc, far)
-            if low > high:
-                continue
+            low, high = constants[s, 0], constants[s, 1]
+            if constants[s, 3] >= 0.0:  # the slab |(p - a) × e| <= reach |e| crosses the row here
+                centre = ax + (yc - ay) * constants[s, 2]
+                low, high = max(low, centre - constants[s, 3]), min(high, centre + constants[s, 3])
+                if low > high:
+                    continue
             start = max(left, int(math.ceil(max(low, left - 1.0) - 0.5)))
             stop = min(right - 1, int(math.floor(min(high, right + 1.0) - 0.5)))
             dy = yc - ay
@@ -297,6 +264,7 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
                     elif owner[x, 0] & 1 and nearest > gain[x, 1]:
                         gain[x, 1], owner[x, 1] = nearest, owner[x, 0] >> 1
                     gain[x, 0], owner[x, 0] = g, 2 * s + (t == along)
+                    vector[x, 0], vector[x, 1] = px, py
                 elif g > gain[x, 1] and t == along:
                     gain[x, 1], owner[x, 1] = g, s
         total += count
@@ -304,12 +272,19 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
             x = touched[i]
             nearest, second = gain[x, 0], gain[x, 1]
             gain[x, 0] = gain[x, 1] = 0.0
+            s = owner[x, 0] >> 1
+            cx = x + 0.5
             if nearest >= inside:
                 c = 1.0
             else:
-                s = owner[x, 0] >> 1
-                cx = x + 0.5
-                u, nx, ny = _edge(segments, inverse, s, cx, yc, radius, -1)
+                px, py = vector[x, 0], vector[x, 1]
+                d2 = px * px + py * py
+                if d2 == 0.0:
+                    u, nx, ny = radius, 1.0, 0.0
+                else:
+                    d = math.sqrt(d2)
+                    inv = 1.0 / d
+                    u, nx, ny = radius - d, px * inv, py * inv
                 c = coverage(u, nx, ny)
             if c < 1.0 and second > 0.0:  # a second edge within r + √½ of the centre
                 other = owner[x, 1]

@@ -198,6 +198,11 @@ def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
         peak = max(r[2] for r in runs[key])
         print(f"| {label} | {wall[key]:.2f} | {rounds_text} | {cpu[key]:.2f} | {peak} | "
               f"{wall[key] / wall['alone']:.3f} | {wall[key] / wall['planes']:.3f} |")
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    floor = (cpu["planes"] + drawing) / cores
+    print(f"floor on {cores} cores: (encoder CPU {cpu['planes']:.2f} s + drawing {drawing:.2f} s) / {cores} = "
+          f"{floor:.2f} s, {floor / wall['alone']:.2f}x encode-only (RGB): no render that draws and encodes "
+          f"these frames here can be faster")
     print(f"auto / --workers 1: {wall['auto'] / wall['one']:.3f}; file size render / encode-only: "
           f"{outputs['auto'].stat().st_size / outputs['alone'].stat().st_size:.4f}; "
           f"load averages after each round: {', '.join(f'{x:.2f}' for x in loads)}")
@@ -516,12 +521,24 @@ def machine() -> None:
     print()
 
 
+def installed_bytecode() -> None:
+    """Compile the package's bytecode, as ``pip install`` does: renders started here then load it, as they
+    do when installed, however ``PYTHONDONTWRITEBYTECODE`` is set (it stops writing, not reading), rather
+    than compiling every module from source in every process (about 35 ms each)."""
+    import compileall
+
+    import tweenrender
+
+    compileall.compile_dir(str(Path(tweenrender.__file__).parent), quiet=1)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3, help="interleaved runs of each comparison")
     parser.add_argument("--only", choices=("stroked", "busy", "drawing", "memory", "ffmpeg", "cluster"))
     args = parser.parse_args()
     machine()
+    installed_bytecode()
     with tempfile.TemporaryDirectory(prefix="tweenrender-bench-") as name:
         folder = Path(name)
         if args.only in (None, "stroked"):

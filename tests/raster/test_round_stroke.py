@@ -7,6 +7,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from tests.helpers import stroke_cases, stroke_coverage
 
@@ -180,3 +182,29 @@ def test_side_by_side_panels_keep_the_kernels_strokes_inside_their_own(tmp_path:
     assert difference.mean() < 1.5
     # a 6 px band each side of the divider: no stroke of one panel drawn into the other
     assert difference[:, 480 - 6:480 + 6].mean() < 3.0
+
+
+@pytest.mark.parametrize("rise", [1e-310, 1e-12, -1e-9, 0.0])
+def test_a_nearly_level_segment_on_a_pixel_centre_row_draws_its_band(rise: float) -> None:
+    # ey far below a pixel (subnormal, even): the slab along it would need ex / ey; the box is used
+    pixels = _black()
+    stroke_contours(pixels, [np.array([[3.0, 20.5], [45.0, 20.5 + rise]])], [False], 2.0, WHITE)
+    assert pixels[20, 4:44, 0].min() == 255 and pixels[18, :, 0].max() == 0 and pixels[23, :, 0].max() == 0
+    assert 126 <= pixels[19, 10, 0] <= 129 and 126 <= pixels[21, 10, 0] <= 129  # its edges: half a pixel each
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.floats(-6, 30), st.floats(-6, 30)), min_size=2, max_size=7),
+       st.booleans(), st.floats(1.0, 6.0))
+def test_any_polyline_is_covered_like_brute_force_and_nothing_beyond_its_reach(points, closed, width) -> None:
+    outline = np.array(points, dtype=float)
+    size = (24, 24)
+    pixels = np.zeros((size[1], size[0], 4), np.uint8)
+    pixels[..., 3] = 255
+    stroke_contours(pixels, [outline], [closed], width, WHITE)
+    ours = pixels[..., 0] / 255
+    truth = stroke_coverage([outline], [closed], width, size, samples=8)
+    assert np.abs(ours - truth).mean() <= 0.02
+    # a pixel whose whole square lies farther than half the width from the outline stays untouched
+    far = stroke_coverage([outline], [closed], width + 2 * 1.5, size, samples=1) == 0
+    assert ours[far].max(initial=0) == 0

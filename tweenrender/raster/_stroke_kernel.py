@@ -186,7 +186,7 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
         length2 = ex * ex + ey * ey
         constants[s, 0] = min(ax, bx) - reach
         constants[s, 1] = max(ax, bx) + reach
-        if ey != 0.0 and length2 > 0.0:
+        if abs(ey) >= 1e-6:  # below that the box is a few rows high anyway, and ex / ey may overflow
             constants[s, 2] = ex / ey
             constants[s, 3] = reach * math.sqrt(length2) / abs(ey)
         else:

@@ -44,6 +44,7 @@ CORE = ("tests/core", "tests/cli/test_reliability.py", "tests/pipeline/test_libr
 STATS = ("tests/cli/test_main.py", "tests/core/test_measures.py")
 TIMELINE = ("tests/core/test_timeline.py", "tests/pipeline/test_library.py", "tests/raster/test_frames.py")
 ENCODE = ("tests/encode", "tests/cli/test_main.py")
+STROKE = ("tests/raster/test_round_stroke.py",)
 ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
 
 MUTANTS = [
@@ -171,6 +172,21 @@ MUTANTS = [
     Mutant("ffmpeg: no death signal", "tweenrender/encode/lifeline.py",
            "        _set_death_signal()\n        if os.getppid() != parent:",
            "        if os.getppid() != parent:", ("tests/encode/test_lifeline.py", "tests/cli/test_signals.py")),
+    # -- raster: the compiled round stroke -----------------------------------------------------------
+    Mutant("round stroke: no second edge where two cross a pixel", "tweenrender/raster/_stroke_kernel.py",
+           "if c < 1.0 and second > 0.0:", "if False:", STROKE),
+    Mutant("round stroke: reach of half a pixel, not half a diagonal", "tweenrender/raster/_stroke_kernel.py",
+           "_HALF_DIAGONAL = 0.7072", "_HALF_DIAGONAL = 0.5", STROKE),
+    Mutant("round stroke: the stroke's alpha ignored where it blends", "tweenrender/raster/_stroke_kernel.py",
+           "keep = 1.0 - alpha * c", "keep = 1.0 - c", STROKE),
+    Mutant("round stroke: a closed outline's last segment left out", "tweenrender/raster/_stroke_kernel.py",
+           "j = start + (i + 1) % n", "j = start + min(i + 1, n - 1)", STROKE),
+    Mutant("round stroke: the clip box ignored", "tweenrender/raster/round_stroke.py",
+           "left, top, right, bottom = clip if clip is not None else (0, 0, wide, height)",
+           "left, top, right, bottom = (0, 0, wide, height)", STROKE),
+    Mutant("round stroke: drawn under a layer onto the surface", "tweenrender/raster/round_stroke.py",
+           'if top is None or np.asarray(top).__array_interface__["data"][0] != address:', "if top is None:",
+           STROKE),
     # -- atomic writes and targets -------------------------------------------------------------------
     Mutant("roll-back deletes the old folder", "tweenrender/encode/atomic.py",
            "            if old is not None:\n                os.replace(old, target)\n            raise",

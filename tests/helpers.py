@@ -216,3 +216,22 @@ def stroke_cases() -> list[tuple[str, list[np.ndarray], list[bool], float]]:
     cases.append(("an open wiggle, 3 px", [np.stack([x, 20 + 9 * np.sin(x / 4)], 1)], [False], 3.0))
     cases.append(("a lone point, closed, 5 px", [np.array([[20.3, 17.8], [20.3, 17.8]])], [True], 5.0))
     return cases
+
+
+def ring_scene(shapes: int, vertices: int, size: tuple[int, int] = (480, 270), stroke: str = "#1d2b50",
+               join: str = "round") -> str:
+    """A scene's TOML text: ``shapes`` jagged rings of ``vertices`` vertices on a grid, each with a 2 px
+    ``stroke`` and ``join``, turning a quarter between keys at 0 and 1 s."""
+    rng = np.random.default_rng(5)
+    lines = [f"size = [{size[0]}, {size[1]}]", "fps = 24", 'background = "#fdfdf8"', "view = [0, 0, 16, 9]", ""]
+    columns = max(1, int(np.ceil(np.sqrt(shapes * 16 / 9))))
+    for s in range(shapes):
+        cx, cy = 1 + (s % columns) * 14 / columns, 1 + (s // columns) * 7 / max(1, shapes // columns)
+        radius = 0.6 * (1 + 0.1 * rng.uniform(-1, 1, vertices))
+        lines += ["[[shape]]", f'name = "r{s}"', 'fill = "#3b6fd8"', f'stroke = "{stroke}"', "stroke_width = 2.0",
+                  f'join = "{join}"', ""]
+        for time, turn in ((0, 0.0), (1, np.pi / 2)):
+            angle = np.linspace(0, 2 * np.pi, vertices, endpoint=False) + turn
+            points = np.stack([cx + radius * np.cos(angle), cy + radius * np.sin(angle)], 1).round(4)
+            lines += ["[[shape.key]]", f"time = {time}", f"points = {points.tolist()}", ""]
+    return "\n".join(lines)

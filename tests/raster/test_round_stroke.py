@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tests.helpers import stroke_cases, stroke_coverage
+from tests.helpers import ring_scene, stroke_cases, stroke_coverage
 
 skia = pytest.importorskip("skia")
 
@@ -143,34 +143,24 @@ def test_strokes_it_can_draw_are_drawn_by_it_and_agree_with_skia(variant: dict) 
 
 
 def test_only_scenes_with_many_round_stroked_segments_use_it(tmp_path: Path) -> None:
-    import sys
-
-    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
-    from make_busy import busy_scene, stroked_scene
-
     from tweenrender.scenefile import load_scene
 
-    for text, expected in ((stroked_scene(1.0), True), (busy_scene(1.0), False),
-                           (stroked_scene(1.0).replace('stroke = "#1d2b50"', "stroke = \"none\""), False)):
+    # 40 rings of 500 vertices: 20 000 segments a frame, the least that uses the kernel
+    for text, expected in ((ring_scene(40, 500), True), (ring_scene(40, 499), False), (ring_scene(24, 40), False),
+                           (ring_scene(40, 500, stroke="none"), False), (ring_scene(40, 500, join="miter"), False)):
         scene = tmp_path / "scene.toml"
         scene.write_text(text)
         assert worth_compiling(load_scene(scene)) is expected
 
 
 def test_side_by_side_panels_keep_the_kernels_strokes_inside_their_own(tmp_path: Path) -> None:
-    # the detailed stroked scene, shrunk, in two panels (each translated and clipped): drawn with the
-    # kernel and with skia, the pictures agree to antialiasing, panel edges included
-    import sys
-
-    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
-    from make_busy import stroked_scene
-
+    # a detailed stroked scene in two panels (each translated and clipped): drawn with the kernel and
+    # with skia, the pictures agree to antialiasing, panel edges included
     from tweenrender.pipeline.job import Frames, RenderJob
     from tweenrender.scenefile import load_scene
 
-    scene = tmp_path / "stroked.toml"
-    scene.write_text(stroked_scene(1.0).replace("size = [1920, 1080]", "size = [480, 270]")
-                     .replace("view = [0, 0, 32, 18]", "view = [4, 2, 20, 11]"))
+    scene = tmp_path / "rings.toml"
+    scene.write_text(ring_scene(40, 500).replace("view = [0, 0, 16, 9]", "view = [3, 1, 11, 5.5]"))  # rings cut
     pictures = []
     for kernel in (True, False):
         frames = Frames(RenderJob(load_scene(scene), methods=("linear", "nonlinear")), "rgba")

@@ -198,3 +198,17 @@ def test_any_polyline_is_covered_like_brute_force_and_nothing_beyond_its_reach(p
     # a pixel whose whole square lies farther than half the width from the outline stays untouched
     far = stroke_coverage([outline], [closed], width + 2 * 1.5, size, samples=1) == 0
     assert ours[far].max(initial=0) == 0
+
+
+@pytest.mark.parametrize("slope", [1.0, 0.4142, 0.0])
+def test_a_straight_band_has_the_exact_area_at_every_pixel(slope: float) -> None:
+    # a 2 px band at 45°, 22.5° and level, its ends far off the canvas: each pixel's coverage is the area
+    # of the square inside one or two straight edges, which brute force with 256 × 256 samples a pixel
+    # gives to within 0.004; the pixels a diagonal edge just grazes (centres up to √½ beyond it) included
+    size = (12, 12)
+    line = np.array([[-20.0, 5.3 - 25.3 * slope], [40.0, 5.3 + 34.7 * slope]])
+    pixels = np.zeros((size[1], size[0], 4), np.uint8)
+    pixels[..., 3] = 255
+    stroke_contours(pixels, [line], [False], 2.0, WHITE)
+    truth = stroke_coverage([line], [False], 2.0, size, samples=256)
+    assert np.abs(pixels[..., 0] / 255 - truth).max() <= 0.004 + 0.5 / 255

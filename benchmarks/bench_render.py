@@ -186,8 +186,9 @@ def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
     wall = {key: median([r[0] for r in value]) for key, value in runs.items()}
     cpu = {key: median([r[1] for r in value]) for key, value in runs.items()}
     print(f"## {name}: {frames} frames of 1080p24, H.264 CRF 18 medium; medians of {rounds} interleaved rounds")
-    print(f"drawing alone, in-process: {1000 * drawing / frames:.1f} ms/frame; measured cost: draw "
-          f"{1000 * cost.draw:.1f} ms, encoder estimate {1000 * cost.encode:.1f} ms -> auto workers {chosen}")
+    print(f"drawing alone, in-process: {1000 * drawing / frames:.1f} ms/frame; cost measured here: draw "
+          f"{1000 * cost.draw:.1f} ms, encoder estimate {1000 * cost.encode:.1f} ms -> {chosen} worker(s) "
+          f"(each render measures for itself, so near the balance it may choose otherwise: see its peak memory)")
     print("| run | wall s (median) | all rounds | CPU s | peak tree MiB | ratio to encode-only (RGB) | "
           "ratio to encode-only (yuv420p) |")
     print("|---|---|---|---|---|---|---|")

@@ -212,3 +212,11 @@ def test_a_straight_band_has_the_exact_area_at_every_pixel(slope: float) -> None
     stroke_contours(pixels, [line], [False], 2.0, WHITE)
     truth = stroke_coverage([line], [False], 2.0, size, samples=256)
     assert np.abs(pixels[..., 0] / 255 - truth).max() <= 0.004 + 0.5 / 255
+
+
+def test_coordinates_scaled_past_any_canvas_or_to_infinity_are_safe() -> None:
+    pixels = _black()
+    huge = np.array([[1e300, 5.0], [3.0, 1e300], [-1e300, -1e300], [10.0, 10.0]])
+    stroke_contours(pixels, [huge], [True], 2.0, WHITE, scale=1e10)  # some ends overflow to ±inf
+    stroke_contours(pixels, [np.array([[2.0, 3.0], [40.0, 30.0]])], [False], 2.0, WHITE, scale=1e-300)
+    assert np.isfinite(pixels).all() and pixels[..., 3].min() == 255

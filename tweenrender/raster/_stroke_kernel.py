@@ -66,6 +66,13 @@ def coverage(u: float, nx: float, ny: float) -> float:
 
 
 @_inline
+def _within(value: float, low: int, high: int) -> float:
+    """``value`` held to ``[low - 1, high + 1]`` before it becomes an integer: a far or infinite bound then
+    converts exactly (an out-of-range float has no integer)."""
+    return min(max(value, low - 1.0), high + 1.0)
+
+
+@_inline
 def _edge(segments: np.ndarray, inverse: np.ndarray, s: int, cx: float, cy: float, radius: float,
           shared: int) -> tuple[float, float, float]:
     """``(u, nx, ny)``: how far ``(cx, cy)`` lies inside segment ``s``'s capsule and the unit normal of the
@@ -193,8 +200,8 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
             constants[s, 2] = 0.0
             constants[s, 3] = -1.0
         inverse[s] = 1.0 / length2 if length2 > 0.0 else 0.0
-        firsts[s] = max(top, int(math.ceil(min(ay, by) - reach - 0.5)))
-        lasts[s] = min(bottom - 1, int(math.floor(max(ay, by) + reach - 0.5)))
+        firsts[s] = max(top, int(math.ceil(_within(min(ay, by) - reach - 0.5, top, bottom))))
+        lasts[s] = min(bottom - 1, int(math.floor(_within(max(ay, by) + reach - 0.5, top, bottom))))
     order = np.argsort(firsts, kind="mergesort")
     width = pixels.shape[1]
     gain = np.zeros((width, 2))
@@ -244,8 +251,8 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
                 low, high = max(low, centre - constants[s, 3]), min(high, centre + constants[s, 3])
                 if low > high:
                     continue
-            start = max(left, int(math.ceil(max(low, left - 1.0) - 0.5)))
-            stop = min(right - 1, int(math.floor(min(high, right + 1.0) - 0.5)))
+            start = max(left, int(math.ceil(_within(low - 0.5, left, right))))
+            stop = min(right - 1, int(math.floor(_within(high - 0.5, left, right))))
             dy = yc - ay
             along_y = dy * ey
             for x in range(start, stop + 1):

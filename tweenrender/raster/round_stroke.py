@@ -94,6 +94,7 @@ def stroke_contours(pixels: NDArray[np.uint8], contours: Sequence[NDArray[np.flo
                                         np.array([len(c) for c in contours], dtype=np.int64),
                                         np.array(closed, dtype=np.bool_), float(scale), float(offset[0]),
                                         float(offset[1]))
+    segments = segments[np.isfinite(segments).all(axis=1)]  # a scale may overflow: such segments are off-canvas
     height, wide = pixels.shape[:2]
     left, top, right, bottom = clip if clip is not None else (0, 0, wide, height)
     left, top, right, bottom = max(0, left), max(0, top), min(wide, right), min(height, bottom)

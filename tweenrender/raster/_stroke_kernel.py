@@ -167,16 +167,17 @@ def polyline_segments(points: np.ndarray, counts: np.ndarray, closed: np.ndarray
 def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, color: np.ndarray,
                     left: int, top: int, right: int, bottom: int) -> int:
     """Blend the round-joined, round-capped stroke of ``segments (M, 4)`` (``ax, ay, bx, by`` in device
-    pixels, finite, within ±2²²) with half-width ``radius`` (> 0) in premultiplied ``color (4,)`` (0..255,
+    pixels, finite; bounds far off the box are held to it) with half-width ``radius`` (> 0) in premultiplied ``color (4,)`` (0..255,
     the pixels' channel order, alpha last) over ``pixels (H, W, 4)`` uint8 premultiplied, source-over,
     inside the box ``[left, right) × [top, bottom)`` (within the pixels). Returns the number of pixels
     touched.
 
     Row by row (each row's work stays in cache): the segments whose capsules reach the row are kept
-    active; each visits the row's pixels within ``r + √½`` of it, leaving per pixel ``gain = reach² - d²``
-    of the nearest segment so far and of the nearest one whose nearest point lies inside it, not at an
-    end (a vertex's disc lies in both its segments' capsules, so only such a segment can add an edge of
-    its own); then the row's touched pixels are blended.
+    active; each visits the row's pixels inside its box and the slab along it and, in those within
+    ``reach = r + √½`` of it, leaves ``gain = reach² - d²`` of the nearest segment so far and of the
+    nearest one whose nearest point lies inside it, not at an end (a vertex's disc lies in both its
+    segments' capsules, so only such a segment can add an edge of its own); then the row's touched
+    pixels are blended.
     """
     m = segments.shape[0]
     if m == 0 or right <= left or bottom <= top:

@@ -16,11 +16,10 @@ A step is named by what it advances (the order is the tie preference, see
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from typing import Any
 
 import numpy as np
-from numba import njit
+
+from .jit import cached_jit as _jit
 
 __all__ = [
     "STEP_B", "STEP_AB", "STEP_A",
@@ -29,21 +28,6 @@ __all__ = [
 ]
 
 STEP_B, STEP_AB, STEP_A = 0, 1, 2
-
-
-def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
-    """Compile lazily with an on-disk cache; without the cache where no cache folder is usable.
-
-    numba caches next to this file (``__pycache__``) or, when that is read-only,
-    in the user's cache folder (``NUMBA_CACHE_DIR`` overrides both). When neither
-    can be written numba refuses ``cache=True`` at decoration time: compiling on
-    every run is slower but still correct. ``error_model="numpy"`` lets a division
-    by zero give ``inf`` (a collapse the S&G constants forbid) instead of raising.
-    """
-    try:
-        return njit(cache=True, error_model="numpy")(func)
-    except RuntimeError:
-        return njit(cache=False, error_model="numpy")(func)
 
 
 # --------------------------------------------------------------------------- distance

@@ -22,26 +22,16 @@ blended once, source-over.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from typing import Any
 
 import numpy as np
 from numba import njit
+
+from ..core.jit import cached_jit as _jit
 
 __all__ = ["coverage", "polyline_segments", "stroke_segments"]
 
 _HALF_DIAGONAL = 0.7072
 """A pixel whose centre lies farther than ``r + √½`` from every segment is not covered at all."""
-
-
-def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
-    """Compile lazily with an on-disk cache; without it where no cache folder is usable (see
-    ``core/_cyclic_dtw.py``)."""
-    try:
-        return njit(cache=True, nogil=True, error_model="numpy")(func)
-    except RuntimeError:
-        return njit(cache=False, nogil=True, error_model="numpy")(func)
-
 
 _inline = njit(inline="always", error_model="numpy")
 

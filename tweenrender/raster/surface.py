@@ -239,7 +239,6 @@ class Raster:
         and it draws what skia would (a round join, round caps or no open end, at least a pixel wide, no
         layer between; see :func:`.round_stroke.draws_on`)."""
         contours, closed = clipped_contours(contours, closed)
-        path = _path_of(contours, closed, fill_rule)
         fills = fill is not None and fill[3] > 0
         strokes = stroke is not None and stroke[3] > 0 and stroke_width > 0
         placed = None
@@ -247,12 +246,13 @@ class Raster:
                 and style.join == "round" and (style.cap == "round" or all(closed))):
             placed = draws_on(self.canvas, self._address)
         if placed is None or placed[0] * stroke_width < MIN_WIDTH:
-            self.draw_path(path, fill, stroke, stroke_width, style, opacity)
+            self.draw_path(_path_of(contours, closed, fill_rule), fill, stroke, stroke_width, style, opacity)
             return
         scale, dx, dy, clip = placed
         if fills:
             fill_paint, stroke_paint = self._paints(fill, stroke, stroke_width, style, opacity)
-            fill_and_stroke(self.canvas, path, fill_paint, None, hidden_by=stroke_paint)
+            fill_and_stroke(self.canvas, _path_of(contours, closed, fill_rule), fill_paint, None,
+                            hidden_by=stroke_paint)
         r, g, b, _ = stroke  # type: ignore[misc]
         alpha = int(round(stroke[3] * opacity))  # type: ignore[index]
         premultiplied = np.array([b, g, r, 255.0]) * (alpha / 255.0)

@@ -2,7 +2,7 @@
 
 A stroke with round joins (and round caps, or no open ends) is every point within
 half its width of the outline, so each pixel's coverage follows from its
-distance to the nearest segments (see ``_stroke_kernel``): about a quarter less
+distance to the nearest segments (see ``_stroke_kernel``): about 30 % less
 time than skia's stroker on a frame of 100 outlines of 500 vertices, and closer
 to the exact area on smooth outlines (``benchmarks/stroke_accuracy.py``). It is
 used only where it can draw what skia would: straight onto the surface's own
@@ -27,7 +27,7 @@ __all__ = ["MIN_SEGMENTS", "MIN_WIDTH", "worth_compiling", "draws_on", "stroke_c
 
 MIN_SEGMENTS = 20_000
 """Fewest round-stroked segments in a frame of a scene for the compiled stroke to be used: its start-up
-(importing numba and loading the kernel, about 0.4 s and 120 MiB a process) is then repaid within a
+(importing numba and loading the kernel, about 0.4 s and 125 MiB a process) is then repaid within a
 second or two of video."""
 
 MIN_WIDTH = 1.0
@@ -82,8 +82,8 @@ def draws_on(canvas: skia.Canvas, address: int) -> tuple[float, float, float, sk
 def stroke_contours(pixels: NDArray[np.uint8], contours: Sequence[NDArray[np.float64]], closed: Sequence[bool],
                     width: float, premultiplied: NDArray[np.float64], scale: float = 1.0,
                     offset: tuple[float, float] = (0.0, 0.0), clip: tuple[int, int, int, int] | None = None) -> int:
-    """Blend the round-joined, round-capped stroke of ``contours`` (each ``(N_i, 2)``, finite, within ±2²¹
-    after ``scale`` and ``offset``) ``width`` device pixels wide, in ``premultiplied (4,)`` colour (0..255,
+    """Blend the round-joined, round-capped stroke of ``contours`` (each ``(N_i, 2)``, finite; segments that
+    ``scale`` and ``offset`` take past float range are dropped) ``width`` device pixels wide, in ``premultiplied (4,)`` colour (0..255,
     the pixels' channel order, alpha last), source-over onto premultiplied ``pixels (H, W, 4)`` inside
     ``clip`` (left, top, right, bottom; default the whole). Returns the number of pixels touched."""
     if not contours:

@@ -1,0 +1,130 @@
+"""Independent players of the vector outputs, and the acceptance measures (DESIGN, "Measures used in
+acceptance"): rlottie and ThorVG (pip wheels with the player inside) draw Lottie JSON; headless
+Chromium draws an animated SVG paused at a time."""
+
+from __future__ import annotations
+
+import base64
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+_INK = 32  # a pixel is ink where a channel differs from the background by more than 32/255
+
+
+def ink(picture: np.ndarray, background: tuple[int, int, int]) -> np.ndarray:
+    """Where ``picture (H, W, ≥3)`` differs from the opaque ``background`` by more than 32/255: ``(H, W)`` bool."""
+    return np.any(np.abs(picture[..., :3].astype(int) - np.array(background)) > _INK, axis=-1)
+
+
+def coverage_iou(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> float:
+    """|ink A ∩ ink B| / |ink A ∪ ink B| (1 when neither has ink)."""
+    ink_a, ink_b = ink(a, background), ink(b, background)
+    union = np.count_nonzero(ink_a | ink_b)
+    return 1.0 if union == 0 else np.count_nonzero(ink_a & ink_b) / union
+
+
+def colour_error(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> float:
+    """Mean absolute RGB difference / 255 over the union of ink (0 when neither has ink)."""
+    union = ink(a, background) | ink(b, background)
+    if not union.any():
+        return 0.0
+    return float(np.abs(a[..., :3].astype(int) - b[..., :3].astype(int))[union].mean() / 255.0)
+
+
+def over(picture: np.ndarray, background: tuple[int, int, int]) -> np.ndarray:
+    """Straight RGBA ``(H, W, 4)`` composited over an opaque ``background``: ``(H, W, 3)`` uint8."""
+    alpha = picture[..., 3:4].astype(np.float64) / 255.0
+    return np.rint(picture[..., :3] * alpha + np.array(background) * (1 - alpha)).astype(np.uint8)
+
+
+def rlottie_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[np.ndarray]:
+    """rlottie's pictures of ``frames``: straight RGBA ``(H, W, 4)`` each (it draws premultiplied BGRA)."""
+    from rlottie_python import LottieAnimation
+
+    width, height = size
+    animation = LottieAnimation.from_file(str(path))
+    out = []
+    for f in frames:
+        raw = np.frombuffer(animation.lottie_animation_render(frame_num=f, width=width, height=height),
+                            np.uint8).reshape(height, width, 4)
+        out.append(_unpremultiply(raw[..., [2, 1, 0, 3]]))
+    return out
+
+
+def thorvg_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[np.ndarray]:
+    """ThorVG's pictures of ``frames``: straight RGBA ``(H, W, 4)`` each."""
+    import thorvg_python as tvg
+
+    width, height = size
+    engine = tvg.Engine()
+    try:
+        canvas = tvg.SwCanvas(engine)
+        canvas.set_target(width, height)
+        animation = tvg.LottieAnimation(engine)
+        picture = animation.get_picture()
+        picture.load_data(path.read_bytes(), "lottie", None, True)
+        picture.set_size(width, height)
+        canvas.add(picture)
+        out = []
+        for f in frames:
+            animation.set_frame(float(f))
+            canvas.update()
+            canvas.draw(True)
+            canvas.sync()
+            out.append(np.array(canvas.get_pillow("RGBA")))
+        return out
+    finally:
+        engine.term() if hasattr(engine, "term") else None
+
+
+def _unpremultiply(rgba: np.ndarray) -> np.ndarray:
+    alpha = rgba[..., 3:4].astype(np.float64)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rgb = np.where(alpha > 0, rgba[..., :3] * 255.0 / alpha, 0)
+    return np.concatenate([np.clip(np.rint(rgb), 0, 255), alpha], axis=-1).astype(np.uint8)
+
+
+_PAUSE = """
+(() => {{ const svg = document.documentElement; svg.pauseAnimations(); svg.setCurrentTime({time});
+  return svg.getCurrentTime(); }})()
+"""
+
+
+def chromium_svg_frames(path: Path, times: list[float], size: tuple[int, int]) -> list[np.ndarray]:
+    """Headless Chromium's pictures of the animated SVG at ``path``, paused at each of ``times``
+    seconds: RGB ``(H, W, 3)`` each."""
+    from tests.browser import _Browser, chromium
+    from tests.helpers import read_png
+
+    executable = chromium()
+    if executable is None:
+        raise FileNotFoundError("chromium")
+    width, height = size
+    shots = []
+    with tempfile.TemporaryDirectory(prefix="tweenrender-chromium-") as profile:
+        browser = _Browser(executable, profile)
+        try:
+            target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+            browser.send("Page.enable", session=session)
+            browser.send("Emulation.setDeviceMetricsOverride",
+                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False},
+                         session=session)
+            browser.send("Page.navigate", {"url": path.resolve().as_uri()}, session=session)
+            browser.pump(1.0)
+            for time in times:
+                browser.send("Runtime.evaluate", {"expression": _PAUSE.format(time=repr(float(time))),
+                                                  "returnByValue": True}, session=session)
+                browser.send("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
+                                                                "requestAnimationFrame(r)))",
+                                                  "awaitPromise": True}, session=session)
+                shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
+                with tempfile.NamedTemporaryFile(suffix=".png") as handle:
+                    handle.write(base64.b64decode(shot["data"]))
+                    handle.flush()
+                    shots.append(read_png(Path(handle.name))[..., :3])
+        finally:
+            browser.close()
+    return shots

@@ -1,0 +1,149 @@
+"""What a vector file holds: every element's contours and paint at every frame, reduced to keyframes.
+
+:func:`vector_clip` samples each shape once per frame of the clip (exactly what the raster draws),
+maps scene units to output pixels, and splits each shape's frames into *runs*: consecutive frames
+of one segment on which it is drawn. A run keeps one list of contours (the segment's pairs, so
+every contour keeps one vertex count) and becomes a layer (Lottie, with ``ip``/``op``) or a path
+element shown over those frames (SVG). Keyframes come from :mod:`..core.keyframes`: a ``linear``
+segment whose keys fall on whole frames is exact with two keyframes and the segment's easing;
+every other run is baked within ``max_error`` pixels; paint within 1/255 (width within
+``max_error``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..core.keyframes import greedy_keyframes, paint_channels
+from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, segment_method
+from ..encode.vector_data import EASE_HANDLES, VectorClip, VectorRun
+from ..errors import OptionError
+from ..model import Color, Paint, Shape
+from ..raster.view import Viewport
+from .job import RenderJob, scene_view, tracks_of
+
+__all__ = ["vector_clip", "DEFAULT_MAX_ERROR"]
+
+Array = NDArray[np.float64]
+DEFAULT_MAX_ERROR = 0.25
+"""Output pixels a baked path may stray from the exact inbetween at a frame time."""
+
+_ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
+
+
+def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorClip:
+    """Sample ``job`` (one panel) at every frame of its range and reduce each run to keyframes."""
+    if not (np.isfinite(max_error) and max_error > 0):
+        raise OptionError(f"max_error: expected a positive number of pixels, found {max_error!r}")
+    scene = job.scene
+    tracks = tracks_of(scene)
+    width, height = job.panel_size
+    viewport = Viewport(scene_view(scene, tracks, job.methods), width, height)
+    picked = job.frame_range
+    offset, count = picked.start, len(picked)
+    times = np.arange(offset, offset + count) / job.rate
+    runs: list[VectorRun] = []
+    for shape, track in zip(scene.shapes, tracks):
+        method = job.methods[0] or scene.method_of(shape)
+        shapes = track.at(times, method)
+        segments = track.segment_index(times) if track.segments else np.zeros(count, dtype=np.intp)
+        for first, stop in _runs_of(shape, shapes, segments):
+            exact = _exact_keys(track, int(segments[first]), method, job.rate, offset, count)
+            runs.append(_run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error))
+    return VectorClip((width, height), job.rate, count, scene.background, tuple(runs), max_error)
+
+
+def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp]) -> list[tuple[int, int]]:
+    """Maximal ranges of frames of one segment on which ``shape`` is drawn with finite contours."""
+    drawn = []
+    for at in shapes:
+        if at.fade is not None:
+            raise OptionError(f"shape {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which a "
+                              "vector format cannot carry; use unmatched = \"grow\" or a raster format")
+        drawn.append(at.visible and all(np.all(np.isfinite(c)) for c in at.contours))
+    out: list[tuple[int, int]] = []
+    start = None
+    for f in range(len(shapes) + 1):
+        same = start is not None and f < len(shapes) and drawn[f] and segments[f] == segments[start] \
+            and len(shapes[f].contours) == len(shapes[start].contours)
+        if start is not None and not same:
+            out.append((start, f))
+            start = None
+        if start is None and f < len(shapes) and drawn[f]:
+            start = f
+    return out
+
+
+def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int,
+                count: int) -> tuple[int, int, Segment] | None:
+    """The clip frames of a ``linear`` segment's two keys (and the segment), when both are whole
+    frames of the clip and its easing has exact handles."""
+    if not track.segments:
+        return None
+    seg = track.segments[segment]
+    if segment_method(seg, method) != "linear" or seg.ease not in EASE_HANDLES:
+        return None
+    ends = []
+    for time in (seg.start, seg.end):
+        at = time * fps - offset
+        if abs(at - round(at)) > _ON_FRAME or not 0 <= round(at) < count:
+            return None
+        ends.append(int(round(at)))
+    return ends[0], ends[1], seg
+
+
+def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: Viewport,
+         exact: tuple[int, int, Segment] | None, method: str, max_error: float) -> VectorRun:
+    keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
+    samples = [np.stack([viewport.to_pixels(at.contours[i]) for at in shapes]) for i in keep]  # (F, L_i, 2) each
+    joined = np.concatenate(samples, axis=1) if samples else np.zeros((len(shapes), 0, 2))
+    closed = tuple(shapes[0].closed[i] for i in keep)
+    if exact is not None:
+        a, b, segment = exact
+        ends = evaluate_segment(segment, np.array([0.0, 1.0]), method)
+        path_frames: tuple[int, ...] = (a, b)
+        paths = tuple(np.stack([viewport.to_pixels(ends[0].contours[i]), viewport.to_pixels(ends[1].contours[i])])
+                      for i in keep)
+        ease = segment.ease
+    else:
+        keys = greedy_keyframes(joined, max_error) if joined.shape[1] else [0]
+        path_frames = tuple(first + k for k in keys)
+        paths = tuple(s[keys] for s in samples)
+        ease = "linear"
+    scale = viewport.scale if shape.stroke_scales else 1.0
+    fill, stroke, width, opacity = _paint_arrays([at.paint for at in shapes], scale)
+    channels = paint_channels(_or_clear(fill, len(shapes)), _or_clear(stroke, len(shapes)), width, opacity,
+                              max_error)
+    paint_keys = greedy_keyframes(channels, 1.0)
+    pick = np.array(paint_keys)
+    return VectorRun(shape.name, first, stop, path_frames, paths, closed, ease, tuple(first + k for k in paint_keys),
+                     None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
+                     opacity[pick], shape.fill_rule, shape.cap, shape.join, shape.miter_limit, joined)
+
+
+def _paint_arrays(paints: list[Paint], scale: float) -> tuple[Array | None, Array | None, Array, Array]:
+    """Fill and stroke ``(F, 4)`` straight RGBA in [0, 1] (``None`` where never drawn), stroke width
+    ``(F,)`` pixels and opacity ``(F,)`` of each frame's paint."""
+    return (_colours([p.fill for p in paints]), _colours([p.stroke for p in paints]),
+            np.array([p.stroke_width * scale for p in paints], dtype=np.float64),
+            np.array([p.opacity for p in paints], dtype=np.float64))
+
+
+def _colours(colours: list[Color | None]) -> Array | None:
+    """``(F, 4)`` in [0, 1]; a missing colour is the nearest present one at alpha 0; ``None`` if none is."""
+    present = [i for i, c in enumerate(colours) if c is not None]
+    if not present:
+        return None
+    out = np.empty((len(colours), 4))
+    for f, colour in enumerate(colours):
+        if colour is None:
+            near = colours[min(present, key=lambda i: abs(i - f))]
+            out[f] = (*(np.array(near[:3]) / 255.0), 0.0)  # type: ignore[index]
+        else:
+            out[f] = np.array(colour, dtype=np.float64) / 255.0
+    return out
+
+
+def _or_clear(colours: Array | None, frames: int) -> Array:
+    return np.zeros((frames, 4)) if colours is None else colours

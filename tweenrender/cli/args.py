@@ -13,7 +13,7 @@ from ..model import METHODS
 Number = TypeVar("Number", int, float)
 
 __all__ = ["method", "methods", "size", "fps", "times", "count", "print_json", "print_path", "escaped", "png_target",
-           "max_frames_flag", "check_frame_count", "seconds"]
+           "max_frames_flag", "check_frame_count", "seconds", "positive_pixels"]
 
 
 def methods(text: str) -> tuple[str, ...]:
@@ -138,6 +138,9 @@ def _ranged(parse: Callable[[str], Number], what: str, low: float, high: float,
 
     return convert
 
+
+positive_pixels = _ranged(float, "a number of output pixels", 0.001, 100.0, "--max-error")
+"""An argparse converter for ``--max-error``: 0.001 to 100 output pixels."""
 
 DEFAULT_MAX_FRAMES = 100_000
 

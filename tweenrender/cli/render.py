@@ -10,13 +10,15 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..model import METHODS
-from .args import check_frame_count, count, fps, max_frames_flag, method, methods, print_path, seconds, size
+from .args import (check_frame_count, count, fps, max_frames_flag, method, methods, positive_pixels, print_path,
+                   seconds, size)
 from .matching_flags import add_balance_flag, add_matching_flags
 from .overlay_flags import add_overlay_flags
 
 
 def register(sub: argparse._SubParsersAction) -> None:
     from ..encode import FORMATS
+    from ..encode.vector_data import VECTOR_FORMATS
 
     p = sub.add_parser("render", help="render a scene, or SVG drawings morphing into each other, to video or PNG")
     p.add_argument("scene", nargs="+", metavar="SCENE|A.svg B.svg..",
@@ -24,11 +26,17 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--step", type=seconds, metavar="S", default=1.0,
                    help="seconds between the keys of SVG drawings given on the command line (default 1)")
     p.add_argument("-o", "--output", metavar="OUT",
-                   help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png)")
+                   help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png, "
+                        "output/<stem>.json for lottie, output/<stem>.svg for svg)")
     p.add_argument("--method", type=method, metavar="M", help=f"one method for every shape: {', '.join(METHODS)}")
     p.add_argument("--compare", nargs="?", const="", metavar="M,M..",
                    help="one labelled panel per method, side by side (default: the scene's compare list)")
-    p.add_argument("--format", choices=FORMATS)
+    p.add_argument("--format", choices=(*FORMATS, *VECTOR_FORMATS),
+                   help="mp4 (default), webm, mov, gif, png (a folder of frames); lottie (.json) or svg (animated "
+                        "SVG): the paths themselves, keyframed")
+    p.add_argument("--max-error", type=positive_pixels, metavar="PX",
+                   help="lottie and svg: how far (output pixels) the keyframed paths may stray from the exact "
+                        "inbetween at a frame (default 0.25)")
     p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (of each panel)")
     p.add_argument("--fps", type=fps, metavar="N")
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")
@@ -52,8 +60,10 @@ def default_target(inputs: list[str], fmt: str | None, compare: bool) -> Path:
     """``output/<stem>.<fmt>`` (``<stem>-compare`` for comparisons; a folder ``output/<stem>`` for png);
     the stem of several drawings is theirs joined by ``-``."""
     stem = "-".join(Path(p).stem for p in inputs[:4]) + ("-compare" if compare else "")
+    from ..encode.vector_data import VECTOR_FORMATS
+
     fmt = fmt or "mp4"
-    return Path("output") / (stem if fmt == "png" else f"{stem}.{fmt}")
+    return Path("output") / (stem if fmt == "png" else stem + VECTOR_FORMATS.get(fmt, f".{fmt}"))
 
 
 def run(args: argparse.Namespace) -> int:
@@ -71,7 +81,8 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError("several inputs must all be SVG drawings (.svg); give one scene file at a time")
     target = check_output_name(args.output) if args.output is not None else \
         default_target(args.scene, args.format, compare is not None)
-    output_format(target, args.format)  # a name the format cannot be told from is refused before loading
+    fmt = output_format(target, args.format)  # a name the format cannot be told from is refused before loading
+    _check_vector_flags(args, fmt)
     scene = load_scene(args.scene if len(args.scene) > 1 else args.scene[0], args.step)
     frames = pick_frames(args.frames, total_frames(scene, args.fps))
     check_frame_count(len(frames), args.max_frames, args.scene[0])
@@ -79,5 +90,21 @@ def run(args: argparse.Namespace) -> int:
     print_path(write(scene, target, method=args.method, compare=compare, format=args.format, size=args.size,
                      fps=args.fps, frames=frames, background=args.background, paths=args.paths, onion=args.onion,
                      strip=args.strip, cost=args.cost, align=args.align, equal_counts=args.equal_counts,
-                     balance=args.balance, workers=args.workers, cluster=args.cluster, progress=bar))
+                     balance=args.balance, workers=args.workers, cluster=args.cluster, progress=bar,
+                     max_error=args.max_error))
     return 0
+
+
+def _check_vector_flags(args: argparse.Namespace, fmt: str) -> None:
+    """Refuse the flags a vector file cannot carry, and ``--max-error`` without one."""
+    from ..encode.vector_data import VECTOR_FORMATS
+
+    if fmt not in VECTOR_FORMATS:
+        if args.max_error is not None:
+            raise UsageError(f"--max-error applies to --format lottie or svg only, not {fmt}")
+        return
+    for flag, value in (("--compare", args.compare), ("--paths", args.paths), ("--onion", args.onion),
+                        ("--strip", args.strip), ("--workers", args.workers), ("--cluster", args.cluster)):
+        if value not in (None, False, 0):
+            raise UsageError(f"{flag} cannot be used with --format {fmt}: a {fmt} file holds the scene's own "
+                             "animated paths, drawn by its player")

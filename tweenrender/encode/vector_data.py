@@ -12,9 +12,12 @@ from numpy.typing import NDArray
 
 from ..model import Color
 
-__all__ = ["EASE_HANDLES", "VectorRun", "VectorClip"]
+__all__ = ["VECTOR_FORMATS", "EASE_HANDLES", "VectorRun", "VectorClip"]
 
 Array = NDArray[np.float64]
+
+VECTOR_FORMATS: dict[str, str] = {"lottie": ".json", "svg": ".svg"}
+"""The vector formats and their file extensions."""
 
 EASE_HANDLES: dict[str, tuple[float, float, float, float]] = {
     "linear": (0.0, 0.0, 1.0, 1.0),

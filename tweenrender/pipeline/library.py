@@ -95,7 +95,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
           background: str | Color | None = None, balance: str | None = None, paths: bool = False,
           onion: int = 0, strip: bool = False, cost: str | None = None, align: str | None = None,
           equal_counts: str | None = None, workers: int | None = None, cluster: str | None = None,
-          progress: Progress | None = None) -> Path:
+          progress: Progress | None = None, max_error: float | None = None) -> Path:
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
     The format is ``format`` or ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name
@@ -109,9 +109,14 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     scheduler's address, or ``"local:N"`` for a local cluster of N processes (needs the ``cluster``
     extra). ``progress`` is called with ``(done, total)`` frames. The target changes only when the
     whole output was written and checked.
+
+    ``.json`` (format ``lottie``) writes Lottie, ``.svg`` (``svg``) an animated SVG: the paths as keyframes
+    within ``max_error`` output pixels (default 0.25) of every frame; they take no ``compare``,
+    ``paths``, ``onion``, ``strip``, ``workers`` or ``cluster``.
     """
     from ..encode.limits import check_frame_size
     from ..encode.targets import check_frames_folder, check_output_name
+    from ..encode.vector_data import VECTOR_FORMATS
     from .chunks import render_in_processes
     from .workers import default_workers
 
@@ -123,6 +128,16 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
     if fmt == "png":
         check_frames_folder(target)
     scene = with_balance(with_matching(scene, cost, align, equal_counts), balance)
+    if fmt in VECTOR_FORMATS:
+        from .vector_export import refuse_raster_options, write_vector
+
+        refuse_raster_options(fmt, compare=compare, paths=paths, onion=onion, strip=strip, workers=workers,
+                              cluster=cluster)
+        picked = pick_frames(frames, total_frames(scene, _fps(fps, scene)))
+        return write_vector(_job(scene, method, size, background, fps=_fps(fps, scene), frames=picked), fmt,
+                            target, max_error)
+    if max_error is not None:
+        raise OptionError(f"max_error= applies to the vector formats ({', '.join(VECTOR_FORMATS)}), not {fmt}")
     panels: tuple[str | None, ...]
     if compare is True:
         panels = scene.compare
@@ -154,11 +169,19 @@ def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = No
 def output_format(target: Path, fmt: str | None = None) -> str:
     """The format to write ``target`` in: ``fmt``, else its extension; a name without one is PNG frames."""
     from ..encode import FORMATS
+    from ..encode.vector_data import VECTOR_FORMATS
 
     suffix = target.suffix.lower().lstrip(".")
+    vector = {extension.lstrip("."): name for name, extension in VECTOR_FORMATS.items()}
+    if fmt in VECTOR_FORMATS:
+        if suffix != VECTOR_FORMATS[fmt].lstrip("."):
+            raise OptionError(f"{target}: a {fmt} file's name ends in {VECTOR_FORMATS[fmt]}")
+        return fmt
+    if fmt is None and suffix in vector:
+        return vector[suffix]
     if fmt is not None:
         if fmt not in FORMATS:
-            raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
+            raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join((*FORMATS, *VECTOR_FORMATS))}")
         if suffix in FORMATS and suffix != fmt and fmt != "png":
             raise OptionError(f"{target} ends in .{suffix} but the format asked for is {fmt}")
         return fmt
@@ -166,7 +189,7 @@ def output_format(target: Path, fmt: str | None = None) -> str:
         return suffix
     if suffix == "":
         return "png"
-    videos = ", ".join(f".{f}" for f in FORMATS if f != "png")
+    videos = ", ".join([f".{f}" for f in FORMATS if f != "png"] + list(VECTOR_FORMATS.values()))
     raise OptionError(f"{target}: cannot tell the format from .{suffix}; expected a name ending in {videos}, "
                       "or one without extension for a folder of PNG frames")
 

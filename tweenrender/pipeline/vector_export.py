@@ -17,13 +17,15 @@ from numpy.typing import NDArray
 
 from ..core.keyframes import greedy_keyframes, paint_channels
 from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, segment_method
-from ..encode.vector_data import EASE_HANDLES, VectorClip, VectorRun
+from pathlib import Path
+
+from ..encode.vector_data import EASE_HANDLES, VECTOR_FORMATS, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Shape
 from ..raster.view import Viewport
 from .job import RenderJob, scene_view, tracks_of
 
-__all__ = ["vector_clip", "DEFAULT_MAX_ERROR"]
+__all__ = ["vector_clip", "write_vector", "refuse_raster_options", "DEFAULT_MAX_ERROR"]
 
 Array = NDArray[np.float64]
 DEFAULT_MAX_ERROR = 0.25
@@ -32,9 +34,30 @@ DEFAULT_MAX_ERROR = 0.25
 _ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
 
 
+def refuse_raster_options(fmt: str, **options: object) -> None:
+    """Refuse every option of ``options`` that is set (not ``None``, ``False`` or 0): a vector file
+    holds one animation of paths, drawn by its player (``compare``, ``paths``, ``onion``, ``strip``,
+    ``workers``, ``cluster``)."""
+    for name, value in options.items():
+        if value not in (None, False, 0, ()):
+            raise OptionError(f"{name}= cannot be used with a {fmt} file: it holds the scene's own animated paths, "
+                              "drawn by its player; render a video or PNG frames for that")
+
+
+def write_vector(job: RenderJob, fmt: str, target: Path, max_error: float | None = None) -> Path:
+    """Write ``job`` (one panel, no overlays) as ``fmt`` (``lottie`` or ``svg``) to ``target``, atomically."""
+    from ..encode.animated_svg import write_animated_svg
+    from ..encode.lottie import write_lottie
+
+    if fmt not in VECTOR_FORMATS:
+        raise OptionError(f"unknown vector format {fmt!r}; expected one of {', '.join(VECTOR_FORMATS)}")
+    clip = vector_clip(job, DEFAULT_MAX_ERROR if max_error is None else max_error)
+    return (write_lottie if fmt == "lottie" else write_animated_svg)(clip, target)
+
+
 def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorClip:
     """Sample ``job`` (one panel) at every frame of its range and reduce each run to keyframes."""
-    if not (np.isfinite(max_error) and max_error > 0):
+    if not (isinstance(max_error, (int, float)) and np.isfinite(max_error) and max_error > 0):
         raise OptionError(f"max_error: expected a positive number of pixels, found {max_error!r}")
     scene = job.scene
     tracks = tracks_of(scene)

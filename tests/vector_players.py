@@ -5,7 +5,9 @@ Chromium draws an animated SVG paused at a time."""
 from __future__ import annotations
 
 import base64
+import json
 import tempfile
+import time
 from pathlib import Path
 
 import numpy as np
@@ -92,39 +94,54 @@ _PAUSE = """
 """
 
 
-def chromium_svg_frames(path: Path, times: list[float], size: tuple[int, int]) -> list[np.ndarray]:
-    """Headless Chromium's pictures of the animated SVG at ``path``, paused at each of ``times``
-    seconds: RGB ``(H, W, 3)`` each."""
+def chromium_svg_frames(files: list[tuple[Path, list[float], tuple[int, int]]]) -> list[list[np.ndarray]]:
+    """Headless Chromium's pictures of each animated SVG ``(path, times, (width, height))``, paused at
+    each of its ``times`` seconds: RGB ``(H, W, 3)`` each, one browser for all."""
     from tests.browser import _Browser, chromium
     from tests.helpers import read_png
 
     executable = chromium()
     if executable is None:
         raise FileNotFoundError("chromium")
-    width, height = size
-    shots = []
+    out = []
     with tempfile.TemporaryDirectory(prefix="tweenrender-chromium-") as profile:
         browser = _Browser(executable, profile)
         try:
             target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
             session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
             browser.send("Page.enable", session=session)
-            browser.send("Emulation.setDeviceMetricsOverride",
-                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False},
-                         session=session)
-            browser.send("Page.navigate", {"url": path.resolve().as_uri()}, session=session)
-            browser.pump(1.0)
-            for time in times:
-                browser.send("Runtime.evaluate", {"expression": _PAUSE.format(time=repr(float(time))),
-                                                  "returnByValue": True}, session=session)
-                browser.send("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
-                                                                "requestAnimationFrame(r)))",
-                                                  "awaitPromise": True}, session=session)
-                shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
-                with tempfile.NamedTemporaryFile(suffix=".png") as handle:
-                    handle.write(base64.b64decode(shot["data"]))
-                    handle.flush()
-                    shots.append(read_png(Path(handle.name))[..., :3])
+            for path, times, (width, height) in files:
+                browser.send("Emulation.setDeviceMetricsOverride",
+                             {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False},
+                             session=session)
+                url = path.resolve().as_uri()
+                browser.send("Page.navigate", {"url": url}, session=session)
+                _wait_for(browser, session, f"location.href === {json.dumps(url)} && document.readyState === 'complete'")
+                shots = []
+                for when in times:
+                    browser.send("Runtime.evaluate", {"expression": _PAUSE.format(time=repr(float(when))),
+                                                      "returnByValue": True}, session=session)
+                    browser.send("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
+                                                                    "requestAnimationFrame(r)))",
+                                                      "awaitPromise": True}, session=session)
+                    shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
+                    with tempfile.NamedTemporaryFile(suffix=".png") as handle:
+                        handle.write(base64.b64decode(shot["data"]))
+                        handle.flush()
+                        shots.append(read_png(Path(handle.name))[..., :3])
+                out.append(shots)
         finally:
             browser.close()
-    return shots
+    return out
+
+
+def _wait_for(browser: object, session: str, condition: str, seconds: float = 20.0) -> None:
+    """Poll the page until the JavaScript ``condition`` holds."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        reply = browser.send("Runtime.evaluate", {"expression": condition, "returnByValue": True},  # type: ignore[attr-defined]
+                             session=session)
+        if reply.get("result", {}).get("value") is True:
+            return
+        time.sleep(0.05)
+    raise TimeoutError(f"the page never met {condition}")

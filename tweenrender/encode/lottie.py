@@ -1,7 +1,7 @@
 """Lottie JSON (bodymovin 5.x, as lottie-web, rlottie, ThorVG and Skottie play it) from a :class:`VectorClip`.
 
-One shape layer per run (an element over the frames of one segment, ``ip``/``op``), first in the
-list on top; in it one group: a ``sh`` path per contour (straight edges: in and out tangents
+One shape layer per run (an element over the frames of one segment, from ``ip`` to ``op``, about
+half a frame before the run's first frame and after its last), first in the list on top; in it one group: a ``sh`` path per contour (straight edges: in and out tangents
 zero; holes are sibling paths), the stroke (``st``) above the fill (``fl``, ``r`` 1 nonzero,
 2 even-odd), and the group's transform. The layer's opacity is the paint's, so fill and stroke
 fade together as one picture. A full-size rectangle layer at the bottom is the background.
@@ -24,6 +24,11 @@ _DIGITS = 3  # pixels are written to a thousandth
 _CAPS = {"butt": 1, "round": 2, "square": 3}
 _JOINS = {"miter": 1, "round": 2, "bevel": 3}
 _FILL_RULES = {"nonzero": 1, "evenodd": 2}
+_EARLY_IN, _EARLY_OUT = 0.499, 0.501
+"""How much earlier than its first frame a run's layer starts (``ip``) and than the frame after its last it
+ends (``op``). Players disagree at the edges: rlottie rounds ``ip`` and ``op`` to whole frames and draws
+frame ``op``; lottie-web and ThorVG draw from ``ip`` up to, not including, ``op``. Just under half a frame
+early suits all three, and leaves a thousandth of a frame between consecutive layers of an element."""
 
 
 def write_lottie(clip: VectorClip, target: Path) -> Path:
@@ -118,7 +123,9 @@ def _layer(run: VectorRun, index: int, frames: int) -> dict[str, Any]:
     items.append({"ty": "tr", **_transform(_static(100))})
     opacity = _scalar(_animated(run.paint_frames, [[v] for v in _percent(run.opacity)], linear))
     return {"ddd": 0, "ind": index, "ty": 4, "nm": run.element, "sr": 1, "ks": _transform(opacity), "ao": 0,
-            "ip": run.first, "op": run.stop, "st": 0, "bm": 0,
+            "ip": run.first - _EARLY_IN if run.first > 0 else 0,
+            "op": run.stop - _EARLY_OUT if run.stop < frames else frames,
+            "st": 0, "bm": 0,
             "shapes": [{"ty": "gr", "nm": run.element, "it": items}]}
 
 

@@ -56,18 +56,30 @@ stroke_width = 9
 opacity = 0.6
 contours = [[[12, 1], [15, 5], [12, 8], [9, 5]], [[11.5, 4.5], [11.5, 5.5], [12.5, 5.5], [12.5, 4.5]]]
 [[shape]]
-name = "appears"
-stroke = "#16a085"
+name = "fills-in"
+stroke = "#0b5345"
 stroke_width = 4
-closed = false
 [[shape.key]]
 time = 0
 fill = "#16a08500"
-points = [[1, 8], [4, 8.5], [7, 8]]
+points = [[1, 8], [4, 8.5], [7, 7]]
 [[shape.key]]
 time = 1.5
 fill = "#16a085"
-points = [[8, 1], [11, 0.5], [14, 1]]
+points = [[8, 1], [11, 0.5], [14, 2]]
+[[shape]]
+name = "open"
+stroke = "#8e44ad"
+stroke_width = 3
+closed = false
+[[shape.key]]
+time = 0
+points = [[1, 1], [3, 1.5], [5, 1]]
+[[shape.key]]
+time = 1.5
+stroke = "#e67e22"
+stroke_width = 6
+points = [[10, 8], [12, 8.5], [14, 7]]
 """
 
 

@@ -251,3 +251,21 @@ def test_linear_keys_off_whole_frames_are_baked(tmp_path: Path) -> None:
     worst = max(float(np.linalg.norm(_played(path["ks"], f) - _pixels(tr.outlines(scene, f / 20)[0]), axis=1).max())
                 for f in range(frames))
     assert worst <= 0.251
+
+
+def test_a_baked_layer_runs_on_to_the_key_where_the_next_takes_over(tmp_path: Path) -> None:
+    """Between frames 39 and 40 a player moves the first layer towards the key drawn at frame 40."""
+    text = TURN.format(method="rigid", ease="linear", rule="nonzero") + """[[shape.key]]
+time = 3
+contours = [[[10, 13], [30, 13], [30, 17], [10, 17]], [[12, 14], [14, 14], [14, 16], [12, 16]]]
+"""
+    scene = tr.load_scene(write_scene(tmp_path, text))
+    document = json.loads(tr.write(scene, tmp_path / "keys.json").read_text())
+    first = min(_shape_layers(document), key=lambda layer: layer["ip"])
+    outline, hole = _items(first, "sh")
+    assert outline["ks"]["k"][-1]["t"] == 40
+    key = np.array([[22, 5], [22, 25], [18, 25], [18, 5]], dtype=float)
+    assert np.array(outline["ks"]["k"][-1]["s"][0]["v"]) == pytest.approx(_pixels(key), abs=1e-3)
+    for frame in range(40):
+        exact = _pixels(tr.outlines(scene, frame / 20)[0])
+        assert np.linalg.norm(_played(outline["ks"], frame) - exact, axis=1).max() <= 0.251

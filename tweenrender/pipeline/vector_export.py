@@ -73,7 +73,9 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
         segments = track.segment_index(times) if track.segments else np.zeros(count, dtype=np.intp)
         for first, stop in _runs_of(shape, shapes, segments):
             exact = _exact_keys(track, int(segments[first]), method, job.rate, offset, count)
-            runs.append(_run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error))
+            ending = _ending(track, int(segments[first]), method, stop, job.rate, offset, count) if exact is None \
+                else None
+            runs.append(_run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error, ending))
     return VectorClip((width, height), job.rate, count, scene.background, tuple(runs), max_error)
 
 
@@ -116,11 +118,30 @@ def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int
     return ends[0], ends[1], seg
 
 
+def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offset: int,
+            count: int) -> ShapeAt | None:
+    """The segment's second key, when the run ends because that key is drawn at clip frame ``stop`` by
+    the next segment's run: then the run's keyframes go on to it, so a player moving between frames
+    ``stop - 1`` and ``stop`` moves towards the key rather than holding still."""
+    if not track.segments or stop >= count:
+        return None
+    seg = track.segments[segment]
+    at = seg.end * fps - offset
+    if abs(at - stop) > _ON_FRAME or segment + 1 >= len(track.segments):
+        return None
+    end = evaluate_segment(seg, np.array([1.0]), method)[0]
+    return end if end.fade is None and all(np.all(np.isfinite(c)) for c in end.contours) else None
+
+
 def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: Viewport,
-         exact: tuple[int, int, Segment] | None, method: str, max_error: float) -> VectorRun:
+         exact: tuple[int, int, Segment] | None, method: str, max_error: float,
+         ending: ShapeAt | None = None) -> VectorRun:
     keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
     samples = [np.stack([viewport.to_pixels(at.contours[i]) for at in shapes]) for i in keep]  # (F, L_i, 2) each
     joined = np.concatenate(samples, axis=1) if samples else np.zeros((len(shapes), 0, 2))
+    if ending is not None:  # the key at frame ``stop`` closes the run's keyframes (not drawn by it)
+        samples = [np.concatenate([s, viewport.to_pixels(ending.contours[i])[None]]) for s, i in zip(samples, keep)]
+        shapes = [*shapes, ending]
     closed = tuple(shapes[0].closed[i] for i in keep)
     if exact is not None:
         a, b, segment = exact
@@ -130,7 +151,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                       for i in keep)
         ease = segment.ease
     else:
-        keys = greedy_keyframes(joined, max_error) if joined.shape[1] else [0]
+        keys = greedy_keyframes(np.concatenate(samples, axis=1), max_error) if samples else [0]
         path_frames = tuple(first + k for k in keys)
         paths = tuple(s[keys] for s in samples)
         ease = "linear"

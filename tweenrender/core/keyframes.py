@@ -15,7 +15,6 @@ from numpy.typing import NDArray
 __all__ = ["chord_deviation", "greedy_keyframes", "max_deviation", "paint_channels"]
 
 Array = NDArray[np.float64]
-_BLOCK_ELEMENTS = 1 << 22  # floats per vectorised block of candidate chords
 
 
 def chord_deviation(values: Array, a: int, b: int) -> float:
@@ -60,27 +59,35 @@ def greedy_keyframes(values: Array, tolerance: float) -> list[int]:
 
 
 def _farthest(values: Array, a: int, tolerance: float) -> int:
-    """The farthest ``b > a`` whose chord from ``a`` is within ``tolerance`` of every frame between."""
-    frames, vertices, dims = values.shape
+    """The farthest ``b > a`` whose chord from ``a`` is within ``tolerance`` of every frame between.
+
+    Candidates are first screened at three frames each (a quarter, half and three quarters of the
+    way), a test every valid chord passes; only those left are checked at every frame, farthest first.
+    """
+    frames = len(values)
+    if frames - 1 <= a + 1 or not np.all(np.isfinite(values[a])):
+        return a + 1
+    ends = np.arange(a + 2, frames)  # (B,)
     limit = tolerance * tolerance
-    span = frames - 1 - a
-    block = max(1, _BLOCK_ELEMENTS // max(1, span * vertices * dims))
-    stop = frames - 1
-    while stop > a + 1:  # candidates b in [start, stop], farthest first
-        start = max(a + 2, stop - block + 1)
-        ends = np.arange(start, stop + 1)  # (B,)
-        inner = np.arange(a + 1, stop)  # frames strictly between a and the farthest candidate
-        s = (inner[None, :] - a) / (ends[:, None] - a)  # (B, M); beyond its end a chord is not checked
-        with np.errstate(invalid="ignore", over="ignore"):
-            chords = values[a] + s[:, :, None, None] * (values[ends] - values[a])[:, None]  # (B, M, N, D)
-            d2 = np.sum((values[inner][None] - chords) ** 2, axis=-1).max(axis=-1)  # (B, M)
-        ok = (d2 <= limit) | (inner[None, :] >= ends[:, None])
-        good = np.flatnonzero(ok.all(axis=1) & np.all(np.isfinite(values[ends]), axis=(1, 2))
-                              & bool(np.all(np.isfinite(values[a]))))
-        if len(good):
-            return int(ends[good[-1]])
-        stop = start - 1
+    with np.errstate(invalid="ignore", over="ignore"):
+        passed = np.all(np.isfinite(values[ends]), axis=(1, 2))
+        for q in (0.25, 0.5, 0.75):
+            middle = a + np.clip(np.rint((ends - a) * q).astype(np.intp), 1, ends - a - 1)  # (B,)
+            s = (middle - a) / (ends - a)
+            chord = values[a] + s[:, None, None] * (values[ends] - values[a])
+            passed &= np.sum((values[middle] - chord) ** 2, axis=-1).max(axis=-1) <= limit
+    for b in ends[passed][::-1]:
+        if _within(values, a, int(b), limit):
+            return int(b)
     return a + 1
+
+
+def _within(values: Array, a: int, b: int, limit: float) -> bool:
+    """Whether the chord from frame ``a`` to ``b`` is within ``sqrt(limit)`` of every frame between."""
+    s = (np.arange(a + 1, b) - a) / (b - a)
+    with np.errstate(invalid="ignore", over="ignore"):
+        chord = values[a] + s[:, None, None] * (values[b] - values[a])
+        return bool(np.all(np.sum((values[a + 1:b] - chord) ** 2, axis=-1) <= limit))
 
 
 def paint_channels(fill: Array, stroke: Array, width: Array, opacity: Array, width_tolerance: float) -> Array:

@@ -17,28 +17,37 @@ _INK = 32  # a pixel is ink where a channel differs from the background by more 
 
 def ink(picture: np.ndarray, background: tuple[int, int, int]) -> np.ndarray:
     """Where ``picture (H, W, ≥3)`` differs from the opaque ``background`` by more than 32/255: ``(H, W)`` bool."""
-    return np.any(np.abs(picture[..., :3].astype(int) - np.array(background)) > _INK, axis=-1)
+    return np.any(np.abs(picture[..., :3].astype(np.int16) - np.array(background, dtype=np.int16)) > _INK, axis=-1)
+
+
+def measures(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> tuple[float, float]:
+    """Coverage IoU (|ink A ∩ ink B| / |ink A ∪ ink B|, 1 when neither has ink) and colour error (mean
+    absolute RGB difference / 255 over the union of ink, 0 when neither has ink) of two RGB pictures."""
+    ink_a, ink_b = ink(a, background), ink(b, background)
+    union = ink_a | ink_b
+    count = np.count_nonzero(union)
+    if count == 0:
+        return 1.0, 0.0
+    difference = np.abs(a[..., :3].astype(np.int16) - b[..., :3].astype(np.int16))[union]
+    return np.count_nonzero(ink_a & ink_b) / count, float(difference.mean() / 255.0)
 
 
 def coverage_iou(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> float:
     """|ink A ∩ ink B| / |ink A ∪ ink B| (1 when neither has ink)."""
-    ink_a, ink_b = ink(a, background), ink(b, background)
-    union = np.count_nonzero(ink_a | ink_b)
-    return 1.0 if union == 0 else np.count_nonzero(ink_a & ink_b) / union
+    return measures(a, b, background)[0]
 
 
 def colour_error(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> float:
     """Mean absolute RGB difference / 255 over the union of ink (0 when neither has ink)."""
-    union = ink(a, background) | ink(b, background)
-    if not union.any():
-        return 0.0
-    return float(np.abs(a[..., :3].astype(int) - b[..., :3].astype(int))[union].mean() / 255.0)
+    return measures(a, b, background)[1]
 
 
 def over(picture: np.ndarray, background: tuple[int, int, int]) -> np.ndarray:
     """Straight RGBA ``(H, W, 4)`` composited over an opaque ``background``: ``(H, W, 3)`` uint8."""
-    alpha = picture[..., 3:4].astype(np.float64) / 255.0
-    return np.rint(picture[..., :3] * alpha + np.array(background) * (1 - alpha)).astype(np.uint8)
+    if picture.shape[-1] == 3 or np.all(picture[..., 3] == 255):
+        return picture[..., :3]
+    alpha = picture[..., 3:4].astype(np.float32) / 255.0
+    return np.rint(picture[..., :3] * alpha + np.array(background, dtype=np.float32) * (1 - alpha)).astype(np.uint8)
 
 
 def rlottie_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[np.ndarray]:
@@ -82,6 +91,8 @@ def thorvg_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[
 
 
 def _unpremultiply(rgba: np.ndarray) -> np.ndarray:
+    if np.all(rgba[..., 3] == 255):
+        return rgba
     alpha = rgba[..., 3:4].astype(np.float64)
     with np.errstate(divide="ignore", invalid="ignore"):
         rgb = np.where(alpha > 0, rgba[..., :3] * 255.0 / alpha, 0)

@@ -20,7 +20,7 @@ import tweenrender as tr
 from tweenrender.model import METHODS
 from tweenrender.pipeline.job import total_frames
 from tests.helpers import DATA, SCENES, write_scene
-from tests.vector_players import chromium_svg_frames, colour_error, coverage_iou, over
+from tests.vector_players import chromium_svg_frames, measures, over
 
 SIZE = None  # each scene's own size: the video's
 IOU, COLOUR = 0.98, 0.03
@@ -101,7 +101,7 @@ def _check(scene: tr.Scene, pictures: list[np.ndarray], frames: list[int], metho
     for frame, picture in zip(frames, pictures):
         ours = over(tr.frame(scene, frame / fps, method=method, size=SIZE), background)
         theirs = over(picture, background) if picture.shape[-1] == 4 else picture
-        iou, error = coverage_iou(ours, theirs, background), colour_error(ours, theirs, background)
+        iou, error = measures(ours, theirs, background)
         assert iou >= IOU and error <= COLOUR, f"{player}, frame {frame}: IoU {iou:.4f}, colour error {error:.4f}"
 
 

@@ -46,6 +46,7 @@ TIMELINE = ("tests/core/test_timeline.py", "tests/pipeline/test_library.py", "te
 ENCODE = ("tests/encode", "tests/cli/test_main.py")
 STROKE = ("tests/raster/test_round_stroke.py",)
 ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
+VECTOR = ("tests/core/test_keyframes.py", "tests/pipeline/test_vector_output.py")
 
 MUTANTS = [
     # -- core: paths ---------------------------------------------------------------------------------
@@ -214,6 +215,20 @@ MUTANTS = [
            "        discard(old)  # a folder", "        pass  # a folder", ATOMIC),
     Mutant("signals: a hang-up not handled", "tweenrender/cli/main.py",
            '("SIGTERM", "SIGHUP")', '("SIGTERM",)', ("tests/cli/test_signals.py",)),
+    Mutant("keyframes: the tolerance taken as its square", "tweenrender/core/keyframes.py",
+           "limit = tolerance * tolerance", "limit = tolerance", VECTOR),
+    Mutant("keyframes: the full check skipped after the screen", "tweenrender/core/keyframes.py",
+           "        if _within(values, a, int(b), limit):", "        if True:", VECTOR),
+    Mutant("lottie: fill rules swapped", "tweenrender/encode/lottie.py",
+           '_FILL_RULES = {"nonzero": 1, "evenodd": 2}', '_FILL_RULES = {"nonzero": 2, "evenodd": 1}', VECTOR),
+    Mutant("lottie: layers hand over at the key frame (rlottie draws both)", "tweenrender/encode/lottie.py",
+           "_EARLY_IN, _EARLY_OUT = 0.499, 0.501", "_EARLY_IN, _EARLY_OUT = 0.0, 0.0", VECTOR),
+    Mutant("lottie: easing handles' x and y swapped", "tweenrender/encode/lottie.py",
+           'key["o"] = {"x": [x1], "y": [y1]}', 'key["o"] = {"x": [y1], "y": [x1]}', VECTOR),
+    Mutant("svg: keyTimes over F - 1 frames", "tweenrender/encode/animated_svg.py",
+           "times = [f / total for f in frames]", "times = [f / (total - 1) for f in frames]", VECTOR),
+    Mutant("vector: a linear segment's easing dropped", "tweenrender/pipeline/vector_export.py",
+           "        ease = segment.ease\n", '        ease = "linear"\n', VECTOR),
 ]
 
 

@@ -269,3 +269,26 @@ contours = [[[10, 13], [30, 13], [30, 17], [10, 17]], [[12, 14], [14, 14], [14, 
     for frame in range(40):
         exact = _pixels(tr.outlines(scene, frame / 20)[0])
         assert np.linalg.norm(_played(outline["ks"], frame) - exact, axis=1).max() <= 0.251
+
+
+def test_svg_keytimes_played_by_hand_stay_within_the_bound(tmp_path: Path) -> None:
+    """The ``d`` animation read as SMIL plays it (calcMode linear): values at keyTimes, straight between;
+    frame f is at keyTime f / F."""
+    scene = _turn(tmp_path, "nonlinear")
+    svg = tr.write(scene, tmp_path / "turn.svg").read_text()
+    animate = re.search(r'<animate attributeName="d"[^>]*>', svg).group(0)
+    assert 'calcMode="spline"' not in animate
+    times = [float(t) for t in re.search(r'keyTimes="([^"]*)"', animate).group(1).split(";")]
+    values = [[[float(v) for v in pair.split(",")] for pair in re.findall(r"-?[\d.]+,-?[\d.]+", d)]
+              for d in re.search(r'values="([^"]*)"', animate).group(1).split(";")]
+    assert times[0] == 0 and times[-1] == 1 and times == sorted(times)
+    coords = np.array(values)  # (K, outline + hole vertices, 2)
+    assert float(re.search(r'dur="([\d.]+)s"', animate).group(1)) == pytest.approx(41 / 20)
+    worst = 0.0
+    for frame in range(41):
+        played = np.array([[np.interp(frame / 41, times, coords[:, v, c]) for c in range(2)]
+                           for v in range(coords.shape[1])])
+        exact = np.concatenate([_pixels(c) for c in tr.outlines(scene, frame / 20, method="nonlinear")])
+        worst = max(worst, float(np.linalg.norm(played - exact, axis=1).max()))
+    assert worst <= 0.251
+    assert len(times) - 1 <= 41 // 2  # far fewer keyframes than frames

@@ -12,13 +12,13 @@ every other run is baked within ``max_error`` pixels; paint within 1/255 (width 
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 from numpy.typing import NDArray
 
 from ..core.keyframes import greedy_keyframes, paint_channels
 from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, segment_method
-from pathlib import Path
-
 from ..encode.vector_data import EASE_HANDLES, VECTOR_FORMATS, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Shape

@@ -292,3 +292,11 @@ def test_svg_keytimes_played_by_hand_stay_within_the_bound(tmp_path: Path) -> No
         worst = max(worst, float(np.linalg.norm(played - exact, axis=1).max()))
     assert worst <= 0.251
     assert len(times) - 1 <= 41 // 2  # far fewer keyframes than frames
+
+
+@pytest.mark.parametrize("suffix", [".json", ".svg"])
+def test_a_reel_to_a_vector_file_is_a_usage_error(tmp_path: Path, suffix: str) -> None:
+    scene_path = write_scene(tmp_path, TURN.format(method="rigid", ease="linear", rule="evenodd"))
+    done = run_module("reel", scene_path, "-o", tmp_path / f"reel{suffix}", "-q", cwd=tmp_path)
+    assert done.returncode == 2 and "reel" in done.stderr and len(done.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / f"reel{suffix}").exists()

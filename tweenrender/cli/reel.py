@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from ..errors import UsageError
 from .args import check_frame_count, count, fps, max_frames_flag, methods, print_path, size
 from .matching_flags import add_balance_flag, add_matching_flags, with_matching
 from .overlay_flags import MAX_ONION
@@ -42,6 +43,9 @@ def run(args: argparse.Namespace) -> int:
 
     target = check_output_name(args.output)
     fmt = output_format(target)
+    if fmt in ("lottie", "svg"):
+        raise UsageError(f"-o {target}: a reel is a video of title cards and labelled comparisons, which a {fmt} "
+                         "file cannot hold; write .mp4, .webm, .mov, .gif or a folder of PNG frames")
     scenes = [with_matching(load_scene(path), args) for path in args.scene]
     names = [Path(path).stem for path in args.scene]
     parts = plan_reel(scenes, names, args.size, args.fps, args.methods, paths=not args.plain,

@@ -24,10 +24,9 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 import tweenrender as tr  # noqa: E402
-from tweenrender.core.timeline import ease  # noqa: E402
 from tweenrender.encode.animated_svg import svg_document  # noqa: E402
 from tweenrender.encode.lottie import lottie_document  # noqa: E402
-from tweenrender.encode.vector_data import VectorClip, VectorRun  # noqa: E402
+from tweenrender.encode.vector_data import STRAIGHT, Handles, VectorClip, VectorRun  # noqa: E402
 from tweenrender.model import METHODS  # noqa: E402
 from tweenrender.pipeline.library import _job  # noqa: E402
 from tweenrender.pipeline.vector_export import vector_clip  # noqa: E402
@@ -35,6 +34,21 @@ from tweenrender.pipeline.vector_export import vector_clip  # noqa: E402
 ICONS = ROOT / "tests" / "data" / "icons"
 ICON_PAIRS = [("mdi/alpha-a.svg", "mdi/alpha-b.svg"), ("feather/heart.svg", "feather/star.svg"),
               ("twemoji/1f600.svg", "twemoji/1f60e.svg"), ("lucide/moon.svg", "lucide/sun.svg")]
+
+
+def bezier_timing(x: np.ndarray, handles: Handles) -> np.ndarray:
+    """CSS cubic-bezier timing at ``x (T,)``: y(u) where x(u) = x, u found by bisection."""
+    x1, y1, x2, y2 = handles
+
+    def curve(u: np.ndarray, p1: float, p2: float) -> np.ndarray:
+        return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
+
+    low, high = np.zeros_like(x), np.ones_like(x)
+    for _ in range(60):
+        middle = (low + high) / 2
+        below = curve(middle, x1, x2) < x
+        low, high = np.where(below, middle, low), np.where(below, high, middle)
+    return curve((low + high) / 2, y1, y2)
 
 
 def played(run: VectorRun) -> np.ndarray:
@@ -45,8 +59,7 @@ def played(run: VectorRun) -> np.ndarray:
     index = np.clip(np.searchsorted(keys, frames, side="right") - 1, 0, len(keys) - 1)
     following = np.minimum(index + 1, len(keys) - 1)
     span = np.maximum(keys[following] - keys[index], 1)
-    s = np.clip((frames - keys[index]) / span, 0.0, 1.0)
-    s = ease(s, run.ease)
+    s = bezier_timing(np.clip((frames - keys[index]) / span, 0.0, 1.0), run.ease)
     return values[index] + s[:, None, None] * (values[following] - values[index])
 
 
@@ -56,7 +69,7 @@ def every_frame(clip: VectorClip) -> VectorClip:
     for run in clip.runs:
         cuts = np.cumsum([p.shape[1] for p in run.paths])[:-1]
         paths = tuple(np.split(run.exact_frames, cuts, axis=1))
-        runs.append(replace(run, path_frames=tuple(range(run.first, run.stop)), paths=paths, ease="linear"))
+        runs.append(replace(run, path_frames=tuple(range(run.first, run.stop)), paths=paths, ease=STRAIGHT))
     return replace(clip, runs=tuple(runs))
 
 

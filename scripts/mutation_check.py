@@ -228,7 +228,7 @@ MUTANTS = [
     Mutant("svg: keyTimes over F - 1 frames", "tweenrender/encode/animated_svg.py",
            "times = [f / total for f in frames]", "times = [f / (total - 1) for f in frames]", VECTOR),
     Mutant("vector: a linear segment's easing dropped", "tweenrender/pipeline/vector_export.py",
-           "        ease = segment.ease\n", '        ease = "linear"\n', VECTOR),
+           "ease = _handles(segment.ease) or STRAIGHT", "ease = STRAIGHT", VECTOR),
 ]
 
 

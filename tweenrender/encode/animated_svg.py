@@ -15,7 +15,7 @@ from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
 from .atomic import replacing
-from .vector_data import EASE_HANDLES, Array, VectorClip, VectorRun
+from .vector_data import STRAIGHT, Array, Handles, VectorClip, VectorRun
 
 __all__ = ["svg_document", "write_animated_svg"]
 
@@ -65,18 +65,18 @@ def _d(paths: list[Array], closed: tuple[bool, ...]) -> str:
 
 
 def _animate(name: str, frames: tuple[int, ...], values: list[str], total: int, duration: str,
-             ease: str = "linear") -> str:
+             ease: Handles = STRAIGHT) -> str:
     """An ``<animate>`` of ``name`` through ``values`` at clip ``frames``, held before the first and
     after the last (keyTimes run from 0 to 1); ``""`` when the value never changes."""
     if all(v == values[0] for v in values[1:]):
         return ""
     times = [f / total for f in frames]
-    splines = [EASE_HANDLES[ease]] * (len(frames) - 1)
-    held = EASE_HANDLES["linear"]
+    splines = [ease] * (len(frames) - 1)
+    held = STRAIGHT
     if frames[0] > 0:
         times, values, splines = [0.0, *times], [values[0], *values], [held, *splines]
     times, values, splines = [*times, 1.0], [*values, values[-1]], [*splines, held]
-    spline = "" if ease == "linear" else ' calcMode="spline" keySplines="' + ";".join(
+    spline = "" if ease == STRAIGHT else ' calcMode="spline" keySplines="' + ";".join(
         " ".join(_number(v, 4) for v in s) for s in splines) + '"'
     return (f'<animate attributeName="{name}" dur="{duration}" fill="freeze" '
             f'keyTimes="{";".join(_number(t, 9) for t in times)}" values={quoteattr(";".join(values))}{spline}/>')

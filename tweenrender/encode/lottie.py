@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from .atomic import replacing
-from .vector_data import EASE_HANDLES, Array, VectorClip, VectorRun
+from .vector_data import STRAIGHT, Array, Handles, VectorClip, VectorRun
 
 __all__ = ["lottie_document", "write_lottie"]
 
@@ -57,7 +57,7 @@ def _transform(opacity: dict[str, Any]) -> dict[str, Any]:
     return {"o": opacity, "r": _static(0), "p": _static([0, 0, 0]), "a": _static([0, 0, 0]), "s": _static([100, 100, 100])}
 
 
-def _animated(frames: tuple[int, ...], values: list[Any], handles: tuple[float, float, float, float]) -> dict[str, Any]:
+def _animated(frames: tuple[int, ...], values: list[Any], handles: Handles) -> dict[str, Any]:
     """A property keyed at ``frames``, each key eased to the next by ``handles`` (CSS cubic-bezier)."""
     if len(frames) == 1 or all(v == values[0] for v in values[1:]):
         return _static(values[0])
@@ -78,7 +78,7 @@ def _shape_value(points: Array, closed: bool) -> list[dict[str, Any]]:
     return [{"c": closed, "v": vertices, "i": zero, "o": zero}]
 
 
-def _path(frames: tuple[int, ...], points: Array, closed: bool, handles: tuple[float, float, float, float],
+def _path(frames: tuple[int, ...], points: Array, closed: bool, handles: Handles,
           index: int) -> dict[str, Any]:
     """One contour: ``points (K, L, 2)`` at ``frames``."""
     values = [_shape_value(p, closed) for p in points]
@@ -96,8 +96,7 @@ def _colour_prop(frames: tuple[int, ...], colours: Array) -> tuple[dict[str, Any
     """A colour ``(P, 4)`` as Lottie's ``c`` (RGB in [0, 1]) and ``o`` (alpha in percent)."""
     rgb = [[round(float(v), 5) for v in c[:3]] + [1] for c in colours]
     alpha = [[a] for a in _percent(colours[:, 3])]
-    linear = EASE_HANDLES["linear"]
-    return _animated(frames, rgb, linear), _scalar(_animated(frames, alpha, linear))
+    return _animated(frames, rgb, STRAIGHT), _scalar(_animated(frames, alpha, STRAIGHT))
 
 
 def _scalar(prop: dict[str, Any]) -> dict[str, Any]:
@@ -108,10 +107,10 @@ def _scalar(prop: dict[str, Any]) -> dict[str, Any]:
 
 
 def _layer(run: VectorRun, index: int, frames: int) -> dict[str, Any]:
-    handles = EASE_HANDLES[run.ease]
+    handles = run.ease
     items: list[dict[str, Any]] = [_path(run.path_frames, p, shut, handles, i)
                                    for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
-    linear = EASE_HANDLES["linear"]
+    linear = STRAIGHT
     if run.stroke is not None:
         colour, alpha = _colour_prop(run.paint_frames, run.stroke)
         width = _scalar(_animated(run.paint_frames, [[round(float(w), 4)] for w in run.width], linear))

@@ -12,14 +12,20 @@ from numpy.typing import NDArray
 
 from ..model import Color
 
-__all__ = ["VECTOR_FORMATS", "EASE_HANDLES", "VectorRun", "VectorClip"]
+__all__ = ["VECTOR_FORMATS", "Handles", "STRAIGHT", "EASE_HANDLES", "VectorRun", "VectorClip"]
 
 Array = NDArray[np.float64]
 
 VECTOR_FORMATS: dict[str, str] = {"lottie": ".json", "svg": ".svg"}
 """The vector formats and their file extensions."""
 
-EASE_HANDLES: dict[str, tuple[float, float, float, float]] = {
+Handles = tuple[float, float, float, float]
+"""A CSS ``cubic-bezier(x1, y1, x2, y2)``: the timing between two keyframes."""
+
+STRAIGHT: Handles = (0.0, 0.0, 1.0, 1.0)
+"""Even timing: a straight line through (0, 0) and (1, 1)."""
+
+EASE_HANDLES: dict[str, Handles] = {
     "linear": (0.0, 0.0, 1.0, 1.0),
     "in": (1 / 3, 0.0, 2 / 3, 1 / 3),  # x(u) = u, y(u) = u²
     "out": (1 / 3, 2 / 3, 2 / 3, 1.0),  # y(u) = 1 - (1 - u)²
@@ -32,12 +38,13 @@ EASE_HANDLES: dict[str, tuple[float, float, float, float]] = {
 class VectorRun:
     """One element drawn over clip frames ``first .. stop - 1``, as keyframes.
 
-    ``path_frames (K,)`` are clip frame indices (increasing; may reach outside the run for an exact
-    segment), ``paths`` one ``(K, L_i, 2)`` pixel array per contour, ``closed`` per contour; ``ease``
-    the easing between consecutive path keyframes (``"linear"``: straight, baked).
+    ``path_frames (K,)`` are clip frame indices (increasing; they may reach past the run, to the keys
+    it moves between), ``paths`` one ``(K, L_i, 2)`` pixel array per contour, ``closed`` per contour;
+    ``ease`` the cubic-bezier timing between consecutive path keyframes (:data:`STRAIGHT` when baked).
     ``paint_frames (P,)`` with ``fill``/``stroke (P, 4)`` straight RGBA in [0, 1] (``None``: never
-    drawn), ``width (P,)`` pixels, ``opacity (P,)``. ``exact_frames``: every contour's exact pixels at every frame of the run,
-    side by side, ``(stop - first, sum L_i, 2)``, kept for measuring.
+    drawn), ``width (P,)`` pixels, ``opacity (P,)``, keyed straight. ``exact_frames``: every
+    contour's exact pixels at every frame of the run, side by side, ``(stop - first, sum L_i, 2)``,
+    kept for measuring.
     """
 
     element: str
@@ -46,7 +53,7 @@ class VectorRun:
     path_frames: tuple[int, ...]
     paths: tuple[Array, ...]
     closed: tuple[bool, ...]
-    ease: str
+    ease: Handles
     paint_frames: tuple[int, ...]
     fill: Array | None
     stroke: Array | None

@@ -19,7 +19,7 @@ from numpy.typing import NDArray
 
 from ..core.keyframes import greedy_keyframes, paint_channels
 from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, segment_method
-from ..encode.vector_data import EASE_HANDLES, VECTOR_FORMATS, VectorClip, VectorRun
+from ..encode.vector_data import EASE_HANDLES, STRAIGHT, VECTOR_FORMATS, Handles, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Shape
 from ..raster.view import Viewport
@@ -107,7 +107,7 @@ def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int
     if not track.segments:
         return None
     seg = track.segments[segment]
-    if segment_method(seg, method) != "linear" or seg.ease not in EASE_HANDLES:
+    if segment_method(seg, method) != "linear" or _handles(seg.ease) is None:
         return None
     ends = []
     for time in (seg.start, seg.end):
@@ -116,6 +116,17 @@ def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int
             return None
         ends.append(int(round(at)))
     return ends[0], ends[1], seg
+
+
+def _handles(ease: object) -> Handles | None:
+    """The cubic-bezier handles that draw a segment's easing exactly: its name's (``in``, ``out``, ``in-out``,
+    ``linear``), or those an easing object carries; ``None`` where no Bézier draws it."""
+    if isinstance(ease, str):
+        return EASE_HANDLES.get(ease)
+    if getattr(ease, "text", None) == "linear":
+        return STRAIGHT
+    handles = getattr(ease, "handles", None)
+    return None if handles is None else tuple(float(h) for h in handles)  # type: ignore[return-value]
 
 
 def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offset: int,
@@ -149,12 +160,12 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         path_frames: tuple[int, ...] = (a, b)
         paths = tuple(np.stack([viewport.to_pixels(ends[0].contours[i]), viewport.to_pixels(ends[1].contours[i])])
                       for i in keep)
-        ease = segment.ease
+        ease = _handles(segment.ease) or STRAIGHT
     else:
         keys = greedy_keyframes(np.concatenate(samples, axis=1), max_error) if samples else [0]
         path_frames = tuple(first + k for k in keys)
         paths = tuple(s[keys] for s in samples)
-        ease = "linear"
+        ease = STRAIGHT
     scale = viewport.scale if shape.stroke_scales else 1.0
     fill, stroke, width, opacity = _paint_arrays([at.paint for at in shapes], scale)
     channels = paint_channels(_or_clear(fill, len(shapes)), _or_clear(stroke, len(shapes)), width, opacity,

@@ -116,7 +116,7 @@ BAD_FLAGS = [
     (("frobnicate",), "argument COMMAND: invalid choice: 'frobnicate'"),
     ((), "the following arguments are required: COMMAND"),
     (("stats", "{scene}", "--json", "--t"), "argument --t: expected one argument"),
-    (("correspond", "{scene}", "--cost", "cheap"), "argument --cost: invalid choice: 'cheap'"),
+    (("correspond", "{scene}", "--cost", "cheap"), "--cost: expected one of distance, sg, found 'cheap'"),
 ]
 
 

@@ -1,4 +1,4 @@
-"""The package's shape: public names, layers, imports (DESIGN.md, "Layout" and "Library API")."""
+"""The package's shape: public names, layers, imports (docs/architecture.md)."""
 
 from __future__ import annotations
 

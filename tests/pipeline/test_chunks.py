@@ -11,7 +11,6 @@ import pytest
 
 from tests.helpers import LONG_HD, SQUARE, decode, read_png, small_job, start_render, video_stream_line, write_scene
 
-pytest.importorskip("skia")
 
 _job = small_job
 

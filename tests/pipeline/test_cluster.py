@@ -11,7 +11,6 @@ import pytest
 
 from tests.helpers import SQUARE, decode, read_png, write_scene
 
-pytest.importorskip("skia")
 distributed = pytest.importorskip("distributed", reason="dask.distributed is not installed (the cluster extra)")
 
 SMALL = SQUARE.replace("size = [320, 240]", "size = [160, 120]").replace("time = 2\n", "time = 1\n")

@@ -9,15 +9,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
-
 import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "Points", "Color", "METHODS", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
+    "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
     "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching",
-    "Scene", "frozen_points",
+    "Scene", "DrawnContour", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
@@ -26,8 +24,6 @@ Points = NDArray[np.float64]
 Color = tuple[int, int, int, int]
 """Straight (unpremultiplied) RGBA, each 0..255."""
 
-Method = Literal["linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto"]
-METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto")
 BALANCES: tuple[str, ...] = ("copies", "spread")
 DEFAULT_BALANCE = "copies"
 """The balance rule of scenes that name none (benchmarks/balance_rules.py measured the two)."""
@@ -182,6 +178,7 @@ class Scene:
     path: Path | None = None
     unmatched: str = "grow"
     balance: str = DEFAULT_BALANCE  # how balancing places copies of a vertex (maths §5.6)
+    sources: tuple[Path, ...] = ()  # every file the scene was read from: the scene file, SVG keys, drawings
 
     @property
     def duration(self) -> float:
@@ -196,3 +193,24 @@ class Scene:
 
     def balance_of(self, shape: Shape) -> str:
         return shape.balance or self.balance
+
+
+@dataclass(frozen=True, slots=True)
+class DrawnContour:
+    """One contour as drawn at a time (``tweenrender.contours``): ``points (N, 2)`` in scene units, y up,
+    as ``outlines`` gives them; whether it is ``closed`` and a ``hole``; its ``element`` (a drawing's
+    SVG id or the name the loader gave it, a TOML shape's name); the ``fill_rule``; ``fill`` and
+    ``stroke`` as straight RGBA floats 0–1 (``None``: not drawn; an open contour has no fill);
+    ``stroke_width`` in scene units; ``opacity`` (multiplies both); ``gradient`` (``None`` for flat paint).
+    """
+
+    points: Points
+    closed: bool
+    hole: bool
+    element: str
+    fill_rule: str
+    fill: tuple[float, float, float, float] | None
+    stroke: tuple[float, float, float, float] | None
+    stroke_width: float
+    opacity: float
+    gradient: object | None = None

@@ -10,7 +10,6 @@ import pytest
 
 from tests.helpers import SMALL, SQUARE, decode, small_job, write_scene
 
-pytest.importorskip("skia")
 
 _job = small_job
 

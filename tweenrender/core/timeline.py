@@ -21,15 +21,15 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import GeometryError
-from ..model import Contour, Key, Matching, Paint, Points, Shape
+from ..model import Contour, Key, Matching, Paint, Points, Scene, Shape
 from .contours import anchor, pair_contours
 from .correspond import Correspondence, correspond, correspond_open
 from .balance import spread
-from .methods import interpolate
+from .methods import interpolate, per_outline
 from .paint import blend_paints
 
 __all__ = ["ease", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
-           "evaluate_segment", "pair_paths"]
+           "evaluate_segment", "pair_paths", "tracks_of"]
 
 Array = NDArray[np.float64]
 
@@ -188,15 +188,11 @@ def segment_method(segment: Segment, method: str) -> str:
     return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed]).method
 
 
-_PER_OUTLINE = ("arap", "intrinsic", "intrinsic-length")
-"""Methods that work on one closed outline (a triangulation, a closed walk of edges)."""
-
-
 def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     """Every pair's inbetweens at parameters ``t (T,)``: one ``(T, L_i, 2)`` array per pair.
 
     The moving pairs are interpolated as one point set (one center of mass, one turn), except by
-    the methods of :data:`_PER_OUTLINE`, which take each closed contour on its own and place it
+    the methods that work on one closed outline (:func:`.methods.per_outline`), which take each closed contour on its own and place it
     where the whole shape's rigid paths put it; the growing, shrinking or fading pairs move on
     straight paths.
     """
@@ -208,7 +204,7 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
         k1 = np.concatenate([pairs[i].k1 for i in moving])
         cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
         single = len(moving) == 1 and pairs[moving[0]].closed
-        if method in _PER_OUTLINE and not single:
+        if per_outline(method) and not single:
             # these methods need one closed outline: each contour takes them on its own (open ones the
             # rigid paths), and its centre follows the rigid paths of the whole shape
             placed = np.split(interpolate(k0, k1, t, "rigid"), cuts, axis=1)
@@ -252,6 +248,13 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
 def _still(key: Key) -> ShapeAt:
     return ShapeAt(tuple(c.points for c in key.contours), tuple(c.closed for c in key.contours), key.paint,
                    not key.hidden and key.paint.visible)
+
+
+def tracks_of(scene: Scene, matching: Matching | None = None) -> tuple[Track, ...]:
+    """Every shape's track, in paint order, under the scene's matching (or ``matching``) and rules."""
+    matching = scene.matching if matching is None else matching
+    return tuple(build_track(shape, matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
+                 for shape in scene.shapes)
 
 
 def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", balance: str = "copies") -> Track:

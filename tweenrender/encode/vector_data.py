@@ -12,12 +12,10 @@ from numpy.typing import NDArray
 
 from ..model import Color
 
-__all__ = ["VECTOR_FORMATS", "Handles", "STRAIGHT", "EASE_HANDLES", "VectorRun", "VectorClip"]
+__all__ = ["Handles", "STRAIGHT", "EASE_HANDLES", "VectorRun", "VectorClip"]
 
 Array = NDArray[np.float64]
 
-VECTOR_FORMATS: dict[str, str] = {"lottie": ".json", "svg": ".svg"}
-"""The vector formats and their file extensions."""
 
 Handles = tuple[float, float, float, float]
 """A CSS ``cubic-bezier(x1, y1, x2, y2)``: the timing between two keyframes."""

@@ -13,16 +13,16 @@ from typing import TYPE_CHECKING, Callable, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.timeline import ShapeAt, Track, build_track, frame_count
+from ..core.timeline import ShapeAt, Track, frame_count, tracks_of
 from ..errors import OptionError
 from ..model import Points, Scene
+from ..raster.view import Box
 
 if TYPE_CHECKING:
     from ..raster.panels import Composer
 
 __all__ = ["RenderJob", "Frames", "Progress", "total_frames", "pick_frames", "tracks_of", "scene_view"]
 
-Box = tuple[float, float, float, float]
 _BLOCK = 32  # frames whose polygons are evaluated in one vectorised call
 Progress = Callable[[int, int], None]
 """Called with ``(frames done, frames in all)`` as a render goes."""
@@ -57,11 +57,6 @@ def pick_frames(spec: str | range | None, total: int) -> range:
     return picked
 
 
-def tracks_of(scene: Scene) -> tuple[Track, ...]:
-    return tuple(build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
-                 for shape in scene.shapes)
-
-
 def scene_view(scene: Scene, tracks: Sequence[Track], methods: Sequence[str | None]) -> Box:
     """The scene's ``view``, or a box that fits every key and sampled inbetween of ``methods``."""
     from ..raster.view import fit_box
@@ -90,7 +85,7 @@ class RenderJob:
     fps: float | None = None
     frames: range | None = None  # default every frame
     paths: bool = False  # every vertex's path and the keys, behind the shapes
-    onion: int = 0  # ghosted inbetweens before and after the frame (see render.overlays)
+    onion: int = 0  # ghosted inbetweens before and after the frame (see raster.overlays)
     strip: bool = False  # the perimeter-ratio strip along each panel's bottom
 
     @property

@@ -19,13 +19,14 @@ from numpy.typing import NDArray
 
 from ..core.keyframes import greedy_keyframes, paint_channels
 from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, segment_method
-from ..encode.vector_data import EASE_HANDLES, STRAIGHT, VECTOR_FORMATS, Handles, VectorClip, VectorRun
+from ..encode.vector_data import EASE_HANDLES, STRAIGHT, Handles, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Shape
 from ..raster.view import Viewport
 from .job import RenderJob, scene_view, tracks_of
+from .options import RenderOptions
 
-__all__ = ["vector_clip", "write_vector", "refuse_raster_options", "DEFAULT_MAX_ERROR"]
+__all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR"]
 
 Array = NDArray[np.float64]
 DEFAULT_MAX_ERROR = 0.25
@@ -34,14 +35,16 @@ DEFAULT_MAX_ERROR = 0.25
 _ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
 
 
-def refuse_raster_options(fmt: str, **options: object) -> None:
-    """Refuse every option of ``options`` that is set (not ``None``, ``False`` or 0): a vector file
-    holds one animation of paths, drawn by its player (``compare``, ``paths``, ``onion``, ``strip``,
-    ``workers``, ``cluster``)."""
-    for name, value in options.items():
-        if value not in (None, False, 0, ()):
-            raise OptionError(f"{name}= cannot be used with a {fmt} file: it holds the scene's own animated paths, "
-                              "drawn by its player; render a video or PNG frames for that")
+RASTER_ONLY = ("compare", "paths", "onion", "strip", "workers", "cluster")
+"""Render options a vector file cannot carry: it holds the scene's own animated paths, drawn by its player."""
+
+
+def refuse_raster_options(fmt: str, options: RenderOptions) -> None:
+    """Refuse each of :data:`RASTER_ONLY` that ``options`` sets, naming it."""
+    for name in RASTER_ONLY:
+        if getattr(options, name) not in (None, False, 0):
+            raise OptionError(f"cannot be used with a {fmt} file, which holds the scene's own animated paths, "
+                              "drawn by its player; render a video or PNG frames for that", name)
 
 
 def write_vector(job: RenderJob, fmt: str, target: Path, max_error: float | None = None) -> Path:
@@ -49,16 +52,17 @@ def write_vector(job: RenderJob, fmt: str, target: Path, max_error: float | None
     from ..encode.animated_svg import write_animated_svg
     from ..encode.lottie import write_lottie
 
-    if fmt not in VECTOR_FORMATS:
-        raise OptionError(f"unknown vector format {fmt!r}; expected one of {', '.join(VECTOR_FORMATS)}")
+    if fmt not in ("lottie", "svg"):
+        raise OptionError(f"expected a vector format, lottie or svg, found {fmt!r}", "format")
     clip = vector_clip(job, DEFAULT_MAX_ERROR if max_error is None else max_error)
     return (write_lottie if fmt == "lottie" else write_animated_svg)(clip, target)
 
 
 def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorClip:
     """Sample ``job`` (one panel) at every frame of its range and reduce each run to keyframes."""
-    if not (isinstance(max_error, (int, float)) and np.isfinite(max_error) and max_error > 0):
-        raise OptionError(f"max_error: expected a positive number of pixels, found {max_error!r}")
+    if isinstance(max_error, bool) or not (isinstance(max_error, (int, float)) and np.isfinite(max_error)
+                                           and max_error > 0):
+        raise OptionError(f"expected a positive number of output pixels, found {max_error!r}", "max_error")
     scene = job.scene
     tracks = tracks_of(scene)
     width, height = job.panel_size

@@ -17,7 +17,8 @@ from pathlib import Path
 from typing import Any, Callable, Sequence
 
 from ..errors import OptionError
-from ..model import METHODS, Scene
+from ..core.methods import measured_methods
+from ..model import Scene
 from .stats import crossing_runs
 
 __all__ = ["MARKER", "report_methods", "write_report", "page"]
@@ -31,7 +32,7 @@ _WIDTH = 384  # pixels of each animation's width (three to a row); the height fo
 def report_methods(scene: Scene) -> tuple[str, ...]:
     """Every method, ``jointed`` only when some shape has joints."""
     jointed = any(shape.joints for shape in scene.shapes)
-    return tuple(m for m in METHODS if m != "jointed" or jointed)
+    return measured_methods(jointed)
 
 
 def _check_target(target: Path) -> None:

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Sequence
 import numpy as np
 
 from ..core.measures import SWEEP, curves
-from ..core.timeline import build_track
+from .segments import entries
 from ..model import Scene
 
 if TYPE_CHECKING:
@@ -24,21 +24,21 @@ def metric_panels(scene: Scene, methods: Sequence[str]) -> list[MPanel]:
     from ..raster.plots.metric_plot import MPanel as _MPanel
 
     panels = []
-    for shape in scene.shapes:
-        track = build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
-        for index, segment in enumerate(track.segments):
-            series, crossing = {}, {}
-            for method in methods:
-                found = curves(segment.k0, segment.k1, method, SWEEP, segment.joints)
-                series[method] = {"perimeter_ratio": found.perimeter_ratio, "area_ratio": found.area_ratio,
-                                  "edge_error": found.edge_error, "angle_error": found.angle_error}
-                crossing[method] = np.array([c is not None for c in found.crossings])
-            m, n = segment.counts
-            panels.append(_MPanel(
-                title=f"{shape.name}, segment {index} ({segment.start:g}–{segment.end:g} s)",
-                subtitle=f"{m} and {n} vertices, {len(segment.k0)} after balancing "
-                         f"({scene.balance_of(shape)}); t within the segment, before easing",
-                t=SWEEP, series=series, crossing=crossing))
+    for entry in entries(scene, closed_only=True):
+        shape, index, segment, pair = entry.shape, entry.index, entry.segment, entry.pair
+        series, crossing = {}, {}
+        for method in methods:
+            found = curves(pair.k0, pair.k1, method, SWEEP, segment.joints)
+            series[method] = {"perimeter_ratio": found.perimeter_ratio, "area_ratio": found.area_ratio,
+                              "edge_error": found.edge_error, "angle_error": found.angle_error}
+            crossing[method] = np.array([c is not None for c in found.crossings])
+        m, n = pair.counts
+        part = "" if entry.contour is None else f", contour {entry.contour}"
+        panels.append(_MPanel(
+            title=f"{shape.name}{part}, segment {index} ({segment.start:g}–{segment.end:g} s)",
+            subtitle=f"{m} and {n} vertices, {len(pair.k0)} after balancing "
+                     f"({scene.balance_of(shape)}); t within the segment, before easing",
+            t=SWEEP, series=series, crossing=crossing))
     return panels
 
 

@@ -19,7 +19,6 @@ average colour of their stops.
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 from dataclasses import dataclass
@@ -28,7 +27,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..errors import SceneError
+from ..errors import SceneError, did_you_mean
 from ..model import Color, Contour, Paint, frozen_points
 from .svg_document import SHAPES, Document, Drawn, Node, length, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
@@ -150,8 +149,7 @@ def _find(document: Document, element_id: str) -> Node:
     ids = document.ids
     if element_id not in ids:
         shapes = [i for i, nodes in ids.items() if nodes[0].tag in SHAPES and nodes[0].svg]
-        close = difflib.get_close_matches(element_id, list(ids), n=1, cutoff=0.6)
-        hint = f'; did you mean "{close[0]}"?' if close else ""
+        hint = did_you_mean(element_id, ids)
         listed = ", ".join(f'"{i}"' for i in shapes[:8])
         listed += f" and {len(shapes) - 8} more" if len(shapes) > 8 else ""
         have = f"shapes with ids: {listed}" if shapes else "no shape in the file has an id"

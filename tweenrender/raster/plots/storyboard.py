@@ -14,7 +14,7 @@ import numpy as np
 import skia
 from numpy.typing import NDArray
 
-from ...core.ratios import perimeter_ratio, segment_midpoints
+from ...core.ratios import scene_perimeter_ratio, segment_midpoints
 from ...core.timeline import Track
 from ...model import Color, Paint, Scene
 from ..overlays import path_polylines, skia_path, stroke_paint
@@ -89,7 +89,7 @@ def draw_sheet(scene: Scene, tracks: Sequence[Track], methods: Sequence[str], vi
         label = min(layout.label * 0.42, layout.title * 0.4)
         raster.text(method, layout.pad, top + layout.label * 0.72, label, _INK, bold=True)
         if len(mids):
-            ratios = perimeter_ratio(tracks, shape_methods, mids)
+            ratios = scene_perimeter_ratio(tracks, shape_methods, mids)
             words = "  ·  ".join(f"{m:g} s: {r:.5f}" for m, r in zip(mids[:6], ratios[:6]))
             note = f"perimeter ratio at mid-segment  {words}"
             raster.text(note, layout.pad + font(label, bold=True).measureText(method) + label,

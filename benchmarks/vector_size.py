@@ -27,8 +27,9 @@ import tweenrender as tr  # noqa: E402
 from tweenrender.encode.animated_svg import svg_document  # noqa: E402
 from tweenrender.encode.lottie import lottie_document  # noqa: E402
 from tweenrender.encode.vector_data import STRAIGHT, Handles, VectorClip, VectorRun  # noqa: E402
-from tweenrender.model import METHODS  # noqa: E402
-from tweenrender.pipeline.library import _job  # noqa: E402
+from tweenrender.core.methods import METHODS  # noqa: E402
+from tweenrender.pipeline.library import render_job  # noqa: E402
+from tweenrender.pipeline.options import RenderOptions  # noqa: E402
 from tweenrender.pipeline.vector_export import vector_clip  # noqa: E402
 
 ICONS = ROOT / "tests" / "data" / "icons"
@@ -81,7 +82,7 @@ def sizes(clip: VectorClip) -> tuple[int, int]:
 
 
 def measure(scene: tr.Scene, method: str) -> dict[str, float]:
-    clip = vector_clip(_job(scene, method, None, None))
+    clip = vector_clip(render_job(scene, RenderOptions.create(method=method)))
     keys = sum(len(r.path_frames) for r in clip.runs if r.paths)
     frames = sum(r.stop - r.first for r in clip.runs if r.paths)
     worst = max((float(np.linalg.norm(played(r) - r.exact_frames, axis=-1).max()) for r in clip.runs

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import tweenrender as tr
-from tweenrender.model import METHODS
+from tweenrender.core.methods import METHODS
 from tweenrender.pipeline.job import total_frames
 from tests.helpers import DATA, SCENES, write_scene
 from tests.vector_players import chromium_svg_frames, measures, over

@@ -89,7 +89,8 @@ class Key:
 
     ``hidden`` marks where an element appearing in the next key grows from (or one
     leaving after the previous key shrinks to): it is interpolated towards, never
-    drawn on its own.
+    drawn on its own. ``fill_rule``, ``cap``, ``join`` and ``miter_limit`` ``None`` are the shape's
+    (a drawing's keys carry their own).
     """
 
     time: float
@@ -97,6 +98,10 @@ class Key:
     ease: str = "linear"
     paint: Paint = field(default_factory=Paint)
     hidden: bool = False
+    fill_rule: str | None = None
+    cap: str | None = None
+    join: str | None = None
+    miter_limit: float | None = None
 
     @property
     def points(self) -> Points:

@@ -14,7 +14,7 @@ from .round_stroke import worth_compiling
 from .surface import Raster, StrokeStyle
 from .view import Box, Viewport
 
-__all__ = ["Composer", "Layer", "draw_shape"]
+__all__ = ["Composer", "Layer", "draw_shape", "drawn_style"]
 
 _LABEL: Color = (30, 34, 45, 255)
 _LABEL_SOFT: Color = (30, 34, 45, 150)
@@ -87,22 +87,42 @@ class Composer:
 
 
 def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, alpha: float = 1.0) -> None:
-    """Draw ``shape`` as it is at one time (``at``) through ``viewport``; non-finite contours are skipped."""
+    """Draw ``shape`` as it is at one time (``at``) through ``viewport``; non-finite contours are skipped.
+
+    Contours are drawn with the winding and fill rule ``at`` gives (its key's own at a key), and a
+    contour growing from a point with its share of the stroke width."""
     if not at.visible:
         return
     pixels = [viewport.to_pixels(c) for c in at.contours]
-    kept = [(p, shut) for p, shut in zip(pixels, at.closed) if len(p) >= 2 and np.all(np.isfinite(p))]
+    if at.reversed:
+        pixels = [p[::-1] if flip else p for p, flip in zip(pixels, at.reversed)]
+    good = [len(p) >= 2 and bool(np.all(np.isfinite(p))) for p in pixels]
+    kept = [(p, shut) for p, shut, ok in zip(pixels, at.closed, good) if ok]
     if not kept:
         return
     paint = at.paint
+    rule, style = drawn_style(shape, at)
     width = paint.stroke_width * (viewport.scale if shape.stroke_scales else 1.0)
-    style = StrokeStyle(shape.cap, shape.join, shape.miter_limit)
     if at.fade is None:
-        raster.draw_contours([p for p, _ in kept], [shut for _, shut in kept], shape.fill_rule, paint.fill,
-                             paint.stroke, width, style, paint.opacity * alpha)
+        shares = [w for w, ok in zip(at.widths, good) if ok] if at.widths else []
+        if not shares or all(w == 1.0 for w in shares) or paint.stroke is None:
+            raster.draw_contours([p for p, _ in kept], [shut for _, shut in kept], rule, paint.fill,
+                                 paint.stroke, width, style, paint.opacity * alpha)
+            return
+        # contours growing from a point: one fill of them all, then each stroke width's contours
+        opacity = paint.opacity * alpha
+        if opacity < 1.0:
+            raster.canvas.saveLayerAlpha(None, int(round(255 * min(1.0, opacity))))
+        raster.draw_contours([p for p, _ in kept], [shut for _, shut in kept], rule, paint.fill, None, 0.0, style)
+        for share in sorted(set(shares)):
+            group = [(p, shut) for (p, shut), w in zip(kept, shares) if w == share]
+            raster.draw_contours([p for p, _ in group], [s for _, s in group], rule, None, paint.stroke,
+                                 width * share, style)
+        if opacity < 1.0:
+            raster.canvas.restore()
         return
     # a cross-fade: the shape as in the first key, plus the shape as in the second, weighted
-    sides = [side for p, side in zip(pixels, at.sides) if len(p) >= 2 and np.all(np.isfinite(p))]
+    sides = [side for side, ok in zip(at.sides, good) if ok]
     canvas = raster.canvas
     canvas.saveLayerAlpha(None, int(round(255 * min(1.0, paint.opacity * alpha))))
     for skip, weight in ((1, 1.0 - at.fade), (-1, at.fade)):
@@ -110,7 +130,16 @@ def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
         if not own:
             continue
         canvas.saveLayer(None, skia.Paint(Alphaf=weight, BlendMode=skia.BlendMode.kPlus))
-        raster.draw_contours([p for p, _ in own], [s for _, s in own], shape.fill_rule, paint.fill, paint.stroke,
+        raster.draw_contours([p for p, _ in own], [s for _, s in own], rule, paint.fill, paint.stroke,
                              width, style)
         canvas.restore()
     canvas.restore()
+
+
+def drawn_style(shape: Shape, at: ShapeAt) -> tuple[str, StrokeStyle]:
+    """The fill rule and stroke ends ``shape`` is drawn with at one time: its key's own, else the shape's."""
+    key = at.key
+    if key is None:
+        return shape.fill_rule, StrokeStyle(shape.cap, shape.join, shape.miter_limit)
+    return key.fill_rule or shape.fill_rule, StrokeStyle(key.cap or shape.cap, key.join or shape.join,
+                                                         key.miter_limit or shape.miter_limit)

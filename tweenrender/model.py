@@ -90,7 +90,8 @@ class Key:
     ``hidden`` marks where an element appearing in the next key grows from (or one
     leaving after the previous key shrinks to): it is interpolated towards, never
     drawn on its own. ``fill_rule``, ``cap``, ``join`` and ``miter_limit`` ``None`` are the shape's
-    (a drawing's keys carry their own).
+    (a drawing's keys carry their own). ``layer`` is a drawing's key's place in that drawing's
+    paint order (0 first; ``None`` for shapes of a scene file, painted in file order).
     """
 
     time: float
@@ -102,6 +103,7 @@ class Key:
     cap: str | None = None
     join: str | None = None
     miter_limit: float | None = None
+    layer: int | None = None
 
     @property
     def points(self) -> Points:

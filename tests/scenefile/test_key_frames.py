@@ -136,3 +136,40 @@ def test_the_second_key_keeps_its_own_stroke_ends() -> None:
     # mdi's filled A becomes feather's round-capped check: its stroke ends are the check's, not square
     iou, error = _last_key_like("mdi/alpha-a.svg", "feather/check.svg")
     assert iou >= 0.99 and error <= 0.02, (iou, error)
+
+
+@needs_rsvg
+@pytest.mark.parametrize("a, b", [("twemoji/1f4c4.svg", "twemoji/1f69a.svg"), ("twemoji/1f60e.svg", "twemoji/1f69a.svg")])
+def test_the_last_key_is_painted_in_its_own_order(a: str, b: str) -> None:
+    # the page's and the face's elements are stacked otherwise than their partners in the truck
+    iou, error = _last_key_like(a, b)
+    assert iou >= 0.99 and error <= 0.02, (iou, error)
+
+
+def _two_squares(folder: Path, first: str, second: str, x: float) -> Path:
+    squares = {"a": f'<rect id="a" x="{x}" y="4" width="2" height="2" fill="#ff0000"/>',
+               "b": '<rect id="b" x="8.5" y="4" width="2" height="2" fill="#0000ff"/>'}
+    path = folder / f"{first}{second}{x}.svg"
+    path.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 20 10">{squares[first]}{squares[second]}</svg>')
+    return path
+
+
+def test_the_order_switches_once_where_the_swapped_elements_overlap_least(tmp_path: Path) -> None:
+    """Square a (x from 4 to 14, side 2) passes over the still square b (x 8.5 to 10.5); a is under b
+    in the first drawing, over it in the second. They overlap while 6.5 < x < 10.5, i.e. for
+    0.25 < t < 0.65: the overlap is 0 from t = 0.65 on, and of the t = k/32 where it is 0 the one
+    nearest 0.5 is 21/32 (8/32, the last before, is farther)."""
+    from tweenrender.pipeline.job import Frames, RenderJob
+
+    scene = tr.load_scene([_two_squares(tmp_path, "a", "b", 4), _two_squares(tmp_path, "b", "a", 14)])
+    drawer = Frames(RenderJob(scene))
+    (switch,) = drawer.stacking
+    assert switch.t == 21 / 32
+    names = [s.name for s in scene.shapes]
+    assert [names[i] for i in switch.before] == ["a", "b"] and [names[i] for i in switch.after] == ["b", "a"]
+    assert switch.areas[8] > 0 and switch.areas[19] > 0 and switch.areas[20] == 0 and switch.areas[6] == 0  # t = (i+1)/32
+    # at t = 0.5 (a at x 9, over b's left half) b is still painted over a; at the keys each its own
+    size = (200, 100)
+    middle = tr.frame(scene, 0.5, size=size)
+    assert tuple(middle[50, 95, :3]) == (0, 0, 255)  # x = 9.5, inside both: b's blue on top
+    assert tuple(drawer.order_at(0.0)) == switch.before and tuple(drawer.order_at(1.0)) == switch.after

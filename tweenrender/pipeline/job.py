@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Callable, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from ..core.stacking import Switch, order_at, stacking_plan
 from ..core.timeline import ShapeAt, Track, build_track, frame_count
 from ..errors import OptionError
 from ..model import Points, Scene
@@ -20,7 +21,7 @@ from ..model import Points, Scene
 if TYPE_CHECKING:
     from ..raster.panels import Composer
 
-__all__ = ["RenderJob", "Frames", "Progress", "total_frames", "pick_frames", "tracks_of", "scene_view"]
+__all__ = ["RenderJob", "Frames", "Progress", "total_frames", "pick_frames", "tracks_of", "scene_view", "stacking_of"]
 
 Box = tuple[float, float, float, float]
 _BLOCK = 32  # frames whose polygons are evaluated in one vectorised call
@@ -60,6 +61,17 @@ def pick_frames(spec: str | range | None, total: int) -> range:
 def tracks_of(scene: Scene) -> tuple[Track, ...]:
     return tuple(build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
                  for shape in scene.shapes)
+
+
+def stacking_of(scene: Scene, tracks: Sequence[Track]) -> tuple[Switch, ...]:
+    """Where the paint order of ``scene``'s drawings switches between keys (:mod:`..core.stacking`)."""
+    if not any(key.layer is not None for shape in scene.shapes for key in shape.keys):
+        return ()
+
+    def shapes_at(index: int, times: NDArray[np.float64]) -> list[ShapeAt]:
+        return tracks[index].at(times, scene.method_of(scene.shapes[index]))
+
+    return stacking_plan(scene.shapes, shapes_at)
 
 
 def scene_view(scene: Scene, tracks: Sequence[Track], methods: Sequence[str | None]) -> Box:
@@ -118,6 +130,7 @@ class Frames:
     job: RenderJob
     layout: str = "rgba"  # "bgra": the surface's own premultiplied pixels (opaque backgrounds only)
     _tracks: tuple[Track, ...] | None = field(default=None, init=False, repr=False)
+    _stacking: tuple[Switch, ...] | None = field(default=None, init=False, repr=False)
     _composer: Composer | None = field(default=None, init=False, repr=False)
     _blocks: dict[str | None, tuple[int, list[list[ShapeAt]]]] = field(default_factory=dict, init=False,
                                                                        repr=False)
@@ -127,6 +140,17 @@ class Frames:
         if self._tracks is None:
             self._tracks = tracks_of(self.job.scene)
         return self._tracks
+
+    @property
+    def stacking(self) -> tuple[Switch, ...]:
+        """Where the paint order switches between keys (each shape under its own method)."""
+        if self._stacking is None:
+            self._stacking = stacking_of(self.job.scene, self.tracks)
+        return self._stacking
+
+    def order_at(self, time: float) -> tuple[int, ...]:
+        """The shapes' paint order at ``time`` seconds (indices into the scene's shapes)."""
+        return order_at(self.stacking, self.job.scene.shapes, time)
 
     def shapes_at(self, method: str | None, time: float) -> list[ShapeAt]:
         """Every shape as it is at ``time`` seconds under ``method`` (``None``: the shape's own)."""
@@ -157,6 +181,8 @@ class Frames:
             width, height = job.panel_size
             view = scene_view(job.scene, self.tracks, job.methods)
             self._composer = Composer(job.scene, labels, width, height, view)
+            if any(key.layer is not None for shape in job.scene.shapes for key in shape.keys):
+                self._composer.stacking = self.order_at
             if job.paths or job.onion or job.strip:
                 from ..raster.overlays import PanelOverlays, above_strip
 

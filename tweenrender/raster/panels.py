@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Protocol, Sequence
+from typing import Callable, Protocol, Sequence
 
 import numpy as np
 import skia
@@ -46,6 +46,8 @@ class Composer:
         # extras per panel (see raster.overlays): ``under``/``over`` hooks called with
         # (canvas, panel index, panel width, height, time), the canvas in panel pixels
         self.layers: list[Layer] = []
+        # the paint order at a time (shape indices), where drawings stack differently at their keys
+        self.stacking: Callable[[float], Sequence[int]] | None = None
 
     def draw(self, panels: Sequence[Sequence[ShapeAt]], time: float, layout: str = "rgba") -> NDArray[np.uint8]:
         """One frame from each panel's shapes (one :class:`ShapeAt` per shape of the scene, in paint order).
@@ -62,7 +64,7 @@ class Composer:
             raster.canvas.clipRect(skia.Rect.MakeWH(self.panel_width, self.height))
             for layer in self.layers:
                 layer.under(raster.canvas, index, self.panel_width, self.height, time)
-            self.draw_shapes(polygons)
+            self.draw_shapes(polygons, order=self.stacking(time) if self.stacking is not None else None)
             for layer in self.layers:
                 layer.over(raster.canvas, index, self.panel_width, self.height, time)
             label = self.labels[index]
@@ -74,10 +76,11 @@ class Composer:
             raster.line((x, 0), (x, self.height), _DIVIDER, 1.0)
         return raster.bgra() if layout == "bgra" else raster.rgba()
 
-    def draw_shapes(self, shapes: Sequence[ShapeAt], alpha: float = 1.0) -> None:
-        """Every shape of the scene as it is at one time, in paint order."""
-        for shape, at in zip(self.scene.shapes, shapes):
-            draw_shape(self.raster, self.viewport, shape, at, alpha)
+    def draw_shapes(self, shapes: Sequence[ShapeAt], alpha: float = 1.0, order: Sequence[int] | None = None) -> None:
+        """Every shape of the scene as it is at one time, in paint order (``order``: shape indices,
+        first painted first; default the scene's)."""
+        for index in order if order is not None else range(len(shapes)):
+            draw_shape(self.raster, self.viewport, self.scene.shapes[index], shapes[index], alpha)
 
     def draw_label(self, label: str, time: float) -> None:
         size = max(11.0, self.height / 24)

@@ -182,7 +182,7 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
     first_k, last_k = chain[0][0], chain[-1][0]
     elements = [drawings[k].elements[e] for k, e in chain]
     out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint, fill_rule=e.fill_rule, cap=e.cap, join=e.join,
-               miter_limit=e.miter_limit) for (k, _), e in zip(chain, elements)]
+               miter_limit=e.miter_limit, layer=index) for (k, index), e in zip(chain, elements)]
     if first_k > 0:  # it appears: it comes from the key before
         out.insert(0, _hidden(elements[0], keys[first_k - 1], unmatched))
     if last_k < len(drawings) - 1:  # it goes: it leaves by the key after

@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 __all__ = [
     "Points", "Color", "METHODS", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
     "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching",
-    "Scene", "frozen_points",
+    "Scene", "DrawnContour", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
@@ -203,3 +203,24 @@ class Scene:
 
     def balance_of(self, shape: Shape) -> str:
         return shape.balance or self.balance
+
+
+@dataclass(frozen=True, slots=True)
+class DrawnContour:
+    """One contour as drawn at a time: ``points (N, 2)`` in scene units, y up, as ``outlines`` gives
+    them (``reversed``: drawn in the other direction, so that it winds as in its key); ``closed`` (False: an open stroke, never filled); ``hole`` (inside an odd
+    number of its element's closed contours); ``element`` (the SVG id, else the loader's name, e.g.
+    ``path1``; a scene file's shape name); its element's ``fill_rule``; ``fill`` and ``stroke`` as
+    straight RGBA floats in [0, 1] (``None``: not drawn); ``stroke_width`` in scene units; ``opacity``.
+    """
+
+    points: Points
+    closed: bool
+    hole: bool
+    element: str
+    fill_rule: str
+    fill: tuple[float, float, float, float] | None
+    stroke: tuple[float, float, float, float] | None
+    stroke_width: float
+    opacity: float
+    reversed: bool = False

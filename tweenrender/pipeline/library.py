@@ -24,10 +24,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import OptionError
-from ..model import BALANCES, EQUAL_COUNTS, METHODS, Color, Points, Scene
+from ..model import BALANCES, EQUAL_COUNTS, METHODS, Color, DrawnContour, Points, Scene
 from .job import Frames, Progress, RenderJob, pick_frames, total_frames
 
-__all__ = ["load_scene", "frame", "frames", "outlines", "write", "output_format", "with_matching",
+__all__ = ["load_scene", "frame", "frames", "outlines", "contours", "write", "output_format", "with_matching",
            "with_balance", "CANVAS_LIMIT"]
 
 CANVAS_LIMIT = 16384
@@ -80,13 +80,44 @@ def outlines(scene: Scene, time: float, *, method: str | None = None) -> list[Po
     in order, at the balanced vertex count. A closed contour does not repeat its first point; an
     open one is not closed. Shapes not drawn at that time (before they appear, after they go,
     fully transparent) are left out; contours that are growing or shrinking are in while they have size."""
+    return [drawn.points for drawn in contours(scene, time, method=method)]
+
+
+def contours(scene: Scene, time: float, method: str | None = None) -> list[DrawnContour]:
+    """Every drawn contour at ``time`` seconds as :class:`~tweenrender.model.DrawnContour` s, in the
+    order of :func:`outlines`: which are open strokes, which holes, their element and paint."""
+    from ..core.contours import roles
+    from ..raster.view import Viewport
+
     drawer = _frames_for(scene, method, None, None)
+    at_time = _finite_time(time)
+    shapes = drawer.shapes_at(method, at_time)
+    pixel = 1.0
+    if any(not shape.stroke_scales and shape.paint.stroke is not None for shape in scene.shapes):
+        from .job import scene_view
+
+        pixel = 1.0 / Viewport(scene_view(scene, drawer.tracks, (method,)), *scene.size).scale
     out = []
-    for at in drawer.shapes_at(method, _finite_time(time)):
+    for index in drawer.order_at(at_time):
+        shape, at = scene.shapes[index], shapes[index]
         if not at.visible:
             continue
-        out += [np.array(c, dtype=np.float64) for c in at.contours if np.ptp(c, axis=0).max(initial=0.0) > 0]
+        key = at.key
+        rule = (key.fill_rule if key is not None else None) or shape.fill_rule
+        paint = at.paint
+        width = paint.stroke_width * (1.0 if shape.stroke_scales else pixel)
+        kinds = roles(list(at.contours), list(at.closed))
+        for i, points in enumerate(at.contours):
+            if np.ptp(points, axis=0).max(initial=0.0) <= 0:
+                continue
+            out.append(DrawnContour(np.array(points, dtype=np.float64), at.closed[i], kinds[i] == "hole", shape.name,
+                                    rule, _unit(paint.fill), _unit(paint.stroke), float(width), float(paint.opacity),
+                                    bool(at.reversed and at.reversed[i])))
     return out
+
+
+def _unit(color: Color | None) -> tuple[float, float, float, float] | None:
+    return None if color is None else tuple(c / 255.0 for c in color)  # type: ignore[return-value]
 
 
 def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = None,

@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 from ..model import Shape
 from .timeline import ShapeAt
 
-__all__ = ["SWEEP", "GRID", "Switch", "key_order", "swapped_pairs", "coverage", "overlap_area", "choose_switch",
+__all__ = ["SWEEP", "GRID", "Switch", "layered", "key_order", "swapped_pairs", "coverage", "overlap_area", "choose_switch",
            "stacking_plan", "order_at"]
 
 Array = NDArray[np.float64]
@@ -50,6 +50,11 @@ class Switch:
     @property
     def time(self) -> float:
         return self.start + self.t * (self.end - self.start)
+
+
+def layered(shapes: Sequence[Shape]) -> bool:
+    """Whether any key knows its place in a drawing's paint order (a scene of whole drawings)."""
+    return any(key.layer is not None for shape in shapes for key in shape.keys)
 
 
 def key_order(shapes: Sequence[Shape], time: float) -> tuple[int, ...]:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Callable, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.stacking import Switch, order_at, stacking_plan
+from ..core.stacking import Switch, layered, order_at, stacking_plan
 from ..core.timeline import ShapeAt, Track, build_track, frame_count
 from ..errors import OptionError
 from ..model import Points, Scene
@@ -65,7 +65,7 @@ def tracks_of(scene: Scene) -> tuple[Track, ...]:
 
 def stacking_of(scene: Scene, tracks: Sequence[Track]) -> tuple[Switch, ...]:
     """Where the paint order of ``scene``'s drawings switches between keys (:mod:`..core.stacking`)."""
-    if not any(key.layer is not None for shape in scene.shapes for key in shape.keys):
+    if not layered(scene.shapes):
         return ()
 
     def shapes_at(index: int, times: NDArray[np.float64]) -> list[ShapeAt]:
@@ -181,7 +181,7 @@ class Frames:
             width, height = job.panel_size
             view = scene_view(job.scene, self.tracks, job.methods)
             self._composer = Composer(job.scene, labels, width, height, view)
-            if any(key.layer is not None for shape in job.scene.shapes for key in shape.keys):
+            if layered(job.scene.shapes):
                 self._composer.stacking = self.order_at
             if job.paths or job.onion or job.strip:
                 from ..raster.overlays import PanelOverlays, above_strip

@@ -14,7 +14,7 @@ from .round_stroke import worth_compiling
 from .surface import Raster, StrokeStyle
 from .view import Box, Viewport
 
-__all__ = ["Composer", "Layer", "draw_shape", "drawn_style"]
+__all__ = ["Composer", "Layer", "draw_shape", "drawn_style", "label_size", "label_band"]
 
 _LABEL: Color = (30, 34, 45, 255)
 _LABEL_SOFT: Color = (30, 34, 45, 150)
@@ -33,7 +33,8 @@ class Composer:
     """Draws frames of ``len(labels)`` side-by-side panels, each ``width × height``.
 
     ``labels`` holds each panel's caption (the method's name) or ``None`` for a
-    plain render, which draws the scene and nothing else.
+    plain render, which draws the scene and nothing else. Captions sit in a band
+    of :attr:`band` pixels at the top of each panel, above the art, never over it.
     """
 
     def __init__(self, scene: Scene, labels: Sequence[str | None], width: int, height: int, view: Box) -> None:
@@ -41,7 +42,8 @@ class Composer:
         self.labels = tuple(labels)
         self.panel_width, self.height = width, height
         self.width = width * len(self.labels)
-        self.viewport = Viewport(view, width, height)
+        self.band = label_band(height) if any(label is not None for label in self.labels) else 0
+        self.viewport = Viewport(view, width, max(1, height - self.band))
         self.raster = Raster(self.width, height, round_strokes=worth_compiling(scene))
         # extras per panel (see raster.overlays): ``under``/``over`` hooks called with
         # (canvas, panel index, panel width, height, time), the canvas in panel pixels
@@ -62,14 +64,16 @@ class Composer:
             raster.canvas.save()
             raster.canvas.translate(index * self.panel_width, 0)
             raster.canvas.clipRect(skia.Rect.MakeWH(self.panel_width, self.height))
-            for layer in self.layers:
-                layer.under(raster.canvas, index, self.panel_width, self.height, time)
-            self.draw_shapes(polygons, order=self.stacking(time) if self.stacking is not None else None)
-            for layer in self.layers:
-                layer.over(raster.canvas, index, self.panel_width, self.height, time)
             label = self.labels[index]
             if label is not None:
                 self.draw_label(label, time)
+            raster.canvas.translate(0, self.band)
+            art = self.height - self.band
+            for layer in self.layers:
+                layer.under(raster.canvas, index, self.panel_width, art, time)
+            self.draw_shapes(polygons, order=self.stacking(time) if self.stacking is not None else None)
+            for layer in self.layers:
+                layer.over(raster.canvas, index, self.panel_width, art, time)
             raster.canvas.restore()
         for index in range(1, len(panels)):
             x = index * self.panel_width - 0.5
@@ -83,10 +87,20 @@ class Composer:
             draw_shape(self.raster, self.viewport, self.scene.shapes[index], shapes[index], alpha)
 
     def draw_label(self, label: str, time: float) -> None:
-        size = max(11.0, self.height / 24)
+        size = label_size(self.height)
         pad = size * 0.8
         self.raster.text(label, pad, pad + size, size, _LABEL, bold=True)
         self.raster.text(f"{time:5.2f} s", pad, pad + 2.1 * size, size * 0.75, _LABEL_SOFT)
+
+
+def label_size(height: int) -> float:
+    """The caption's type size in a panel ``height`` pixels tall."""
+    return max(11.0, height / 24)
+
+
+def label_band(height: int) -> int:
+    """Pixels at the top of a labelled panel that hold its caption (name and time), above the art."""
+    return int(np.ceil(3.3 * label_size(height)))
 
 
 def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, alpha: float = 1.0) -> None:

@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 __all__ = [
     "Points", "Color", "METHODS", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
     "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching",
-    "Scene", "DrawnContour", "frozen_points",
+    "Scene", "DrawnContour", "Gradient", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
@@ -63,17 +63,37 @@ class Contour:
 
 
 @dataclass(frozen=True, slots=True)
+class Gradient:
+    """A linear or radial gradient fill, as SVG defines it, in world units.
+
+    ``geometry`` is ``(x1, y1, x2, y2)`` (linear) or ``(cx, cy, r, fx, fy)`` (radial) in the gradient's
+    own space; ``matrix`` ``(a, b, c, d, e, f)`` maps that space to the world (``x' = a·x + c·y + e``,
+    ``y' = b·x + d·y + f``: the element's transforms, its bounding box for ``objectBoundingBox``
+    units, and ``gradientTransform``). ``stops`` are ``(offset in [0, 1], straight RGBA)`` in order;
+    ``spread`` is ``pad``, ``reflect`` or ``repeat``.
+    """
+
+    kind: str
+    geometry: tuple[float, ...]
+    matrix: tuple[float, float, float, float, float, float]
+    stops: tuple[tuple[float, Color], ...]
+    spread: str = "pad"
+
+
+@dataclass(frozen=True, slots=True)
 class Paint:
     """How a key is drawn: fill and stroke colours (``None``: not drawn), stroke width, opacity.
 
     ``stroke_width`` is in pixels, or in world units for shapes whose ``stroke_scales``
     (drawings: widths scale with the view, as in the SVG). ``opacity`` multiplies both.
+    ``gradient``, when set, fills instead of ``fill`` (which then holds its stops' mean colour).
     """
 
     fill: Color | None = DEFAULT_FILL
     stroke: Color | None = None
     stroke_width: float = 2.0
     opacity: float = 1.0
+    gradient: Gradient | None = None
 
     @property
     def visible(self) -> bool:
@@ -224,3 +244,4 @@ class DrawnContour:
     stroke_width: float
     opacity: float
     reversed: bool = False
+    gradient: Gradient | None = None  # a gradient fill (``fill`` then holds its stops' mean colour)

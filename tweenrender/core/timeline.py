@@ -27,6 +27,7 @@ from .contours import anchor, pair_contours
 from .correspond import Correspondence, correspond, correspond_open
 from .balance import spread
 from .geometry import signed_area
+from .gradient_blend import blend_gradient, box_of
 from .methods import interpolate
 from .paint import blend_paints
 
@@ -251,10 +252,16 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
     fading = any(p.fades for p in pairs)
     sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
     growing = [i for i, p in enumerate(pairs) if not p.moving and not p.fades]
+    p0, p1 = segment.paints
+    boxes = None
+    if (p0.gradient is not None or p1.gradient is not None) and pairs:
+        boxes = box_of([p.k0 for p in pairs]), box_of([p.k1 for p in pairs])
     out = []
     for k, (x, paint) in enumerate(zip(t.tolist(), paints)):
         visible = segment.shown[0] if x == 0.0 else segment.shown[1] if x == 1.0 else True
         contours = tuple(f[k] for f in frames)  # type: ignore[index]
+        if boxes is not None and 0.0 < x < 1.0:  # the gradient moves with the element (core.gradient_blend)
+            paint = replace(paint, gradient=blend_gradient(p0, p1, *boxes, box_of(list(contours)), x))
         phase = 0 if x < segment.switch else 1
         flips = segment.flips[phase] or (False,) * len(pairs)
         drawn_as = segment.ends[phase] if segment.ends is not None else None

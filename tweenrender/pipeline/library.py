@@ -112,7 +112,7 @@ def contours(scene: Scene, time: float, method: str | None = None) -> list[Drawn
                 continue
             out.append(DrawnContour(np.array(points, dtype=np.float64), at.closed[i], kinds[i] == "hole", shape.name,
                                     rule, _unit(paint.fill), _unit(paint.stroke), float(width), float(paint.opacity),
-                                    bool(at.reversed and at.reversed[i])))
+                                    bool(at.reversed and at.reversed[i]), paint.gradient))
     return out
 
 

@@ -118,8 +118,24 @@ def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
     if not kept:
         return
     paint = at.paint
+    if paint.gradient is not None and paint.fill is not None:
+        from .gradients import gradient_shader
+
+        raster.fill_shader = gradient_shader(paint.gradient, viewport)
+        try:
+            _draw_kept(raster, viewport, shape, at, alpha, pixels, kept)
+        finally:
+            raster.fill_shader = None
+        return
+    _draw_kept(raster, viewport, shape, at, alpha, pixels, kept)
+
+
+def _draw_kept(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, alpha: float,
+               pixels: list[NDArray[np.float64]], kept: list[tuple[NDArray[np.float64], bool]]) -> None:
+    paint = at.paint
     rule, style = drawn_style(shape, at)
     width = paint.stroke_width * (viewport.scale if shape.stroke_scales else 1.0)
+    good = [len(p) >= 2 and bool(np.all(np.isfinite(p))) for p in pixels]
     if at.fade is None:
         shares = [w for w, ok in zip(at.widths, good) if ok] if at.widths else []
         if not shares or all(w == 1.0 for w in shares) or paint.stroke is None:

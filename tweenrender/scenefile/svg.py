@@ -12,8 +12,9 @@ A whole drawing (:func:`read_drawing`) gives every visible shape element —
 ``polygon``, inside groups, ``<use>`` copies and nested transforms — with its
 paint as an SVG renderer resolves it (:mod:`.svg_document`). Invisible
 elements (no fill and no stroke, ``display:none``, ``visibility:hidden``, zero
-opacity) are left out. Not drawn: clip paths and masks (their content is drawn
-unclipped), filters, markers; gradients and patterns are painted with the
+opacity) are left out. Linear and radial gradient fills are kept
+(:mod:`.svg_gradients`). Not drawn: clip paths and masks (their content is drawn
+unclipped), filters, markers; gradient strokes and patterns are painted with the
 average colour of their stops.
 """
 
@@ -271,12 +272,33 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     contours = _contours(d, to_world @ d.ctm, tol, budget, unstroked)
     if not contours:
         return None
+    paint = _with_gradient(paint, d, to_world, contours)
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
                    tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
                    miter)
 
 
 # -- paint ---------------------------------------------------------------------------------------------
+
+
+def _with_gradient(paint: Paint, d: Drawn, to_world: NDArray[np.float64],
+                   contours: list[tuple[NDArray[np.float64], bool]]) -> Paint:
+    """``paint`` with its fill's gradient, when the fill is ``url(#…)`` of a linear or radial gradient."""
+    from dataclasses import replace
+
+    from .svg_gradients import gradient_ref, read_gradient
+
+    ident = gradient_ref(d.style.get("fill", ""))
+    if ident is None or paint.fill is None:
+        return paint
+    placed = to_world @ d.ctm
+    every = np.concatenate([points for points, _ in contours])
+    user = (np.linalg.inv(placed) @ np.column_stack([every, np.ones(len(every))]).T)[:2].T
+    (x0, y0), (x1, y1) = user.min(axis=0), user.max(axis=0)
+    box = view_box(d.document) or (0.0, 0.0, 100.0, 100.0)
+    gradient = read_gradient(ident, d.document, (float(x0), float(y0), float(x1 - x0), float(y1 - y0)), placed,
+                             (box[2], box[3]), _number(d.style.get("fill-opacity"), 1.0))
+    return paint if gradient is None else replace(paint, gradient=gradient)
 
 
 def _determinant(matrix: np.ndarray) -> float:

@@ -111,7 +111,8 @@ class Key:
     leaving after the previous key shrinks to): it is interpolated towards, never
     drawn on its own. ``fill_rule``, ``cap``, ``join`` and ``miter_limit`` ``None`` are the shape's
     (a drawing's keys carry their own). ``layer`` is a drawing's key's place in that drawing's
-    paint order (0 first; ``None`` for shapes of a scene file, painted in file order).
+    paint order (0 first; ``None`` for shapes of a scene file, painted in file order); ``clips``
+    its SVG clip paths in world units.
     """
 
     time: float
@@ -124,6 +125,8 @@ class Key:
     join: str | None = None
     miter_limit: float | None = None
     layer: int | None = None
+    # clip regions (closed contours, nonzero), every one intersected with what the key draws
+    clips: tuple[tuple[Contour, ...], ...] = ()
 
     @property
     def points(self) -> Points:

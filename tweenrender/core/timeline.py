@@ -27,6 +27,7 @@ from .contours import anchor, pair_contours
 from .correspond import Correspondence, correspond, correspond_open
 from .balance import spread
 from .geometry import signed_area
+from .clip_motion import clips_at
 from .gradient_blend import blend_gradient, box_of
 from .methods import interpolate
 from .paint import blend_paints
@@ -152,6 +153,7 @@ class ShapeAt:
     reversed: tuple[bool, ...] = ()  # per contour: drawn in reverse, so its winding is its key's (empty: none)
     key: Key | None = None  # the key whose fill rule and stroke ends are in force (None: the shape's)
     widths: tuple[float, ...] = ()  # per contour, the share of the stroke width it is drawn with (empty: all)
+    clips: tuple[tuple[Points, ...], ...] = ()  # clip regions (closed contours, nonzero), intersected
 
 
 @dataclass(frozen=True, slots=True)
@@ -253,15 +255,22 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
     sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
     growing = [i for i, p in enumerate(pairs) if not p.moving and not p.fades]
     p0, p1 = segment.paints
+    c0, c1 = (segment.ends[0].clips, segment.ends[1].clips) if segment.ends is not None else ((), ())
     boxes = None
-    if (p0.gradient is not None or p1.gradient is not None) and pairs:
+    if (p0.gradient is not None or p1.gradient is not None or c0 or c1) and pairs:
         boxes = box_of([p.k0 for p in pairs]), box_of([p.k1 for p in pairs])
     out = []
     for k, (x, paint) in enumerate(zip(t.tolist(), paints)):
         visible = segment.shown[0] if x == 0.0 else segment.shown[1] if x == 1.0 else True
         contours = tuple(f[k] for f in frames)  # type: ignore[index]
-        if boxes is not None and 0.0 < x < 1.0:  # the gradient moves with the element (core.gradient_blend)
-            paint = replace(paint, gradient=blend_gradient(p0, p1, *boxes, box_of(list(contours)), x))
+        clips: tuple[tuple[Points, ...], ...] = ()
+        if boxes is not None and 0.0 < x < 1.0:  # gradient and clips move with the element
+            box = box_of(list(contours))
+            if p0.gradient is not None or p1.gradient is not None:
+                paint = replace(paint, gradient=blend_gradient(p0, p1, *boxes, box, x))
+            clips = clips_at(c0, c1, *boxes, box, x)
+        elif x in (0.0, 1.0):
+            clips = tuple(tuple(c.points for c in region) for region in (c0 if x == 0.0 else c1))
         phase = 0 if x < segment.switch else 1
         flips = segment.flips[phase] or (False,) * len(pairs)
         drawn_as = segment.ends[phase] if segment.ends is not None else None
@@ -269,7 +278,8 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
             end = 0 if x == 0.0 else 1
             own = [i for i, p in enumerate(pairs) if p.source[end] is not None]
             out.append(ShapeAt(tuple(contours[i] for i in own), tuple(closed[i] for i in own), paint,
-                               visible and paint.visible, reversed=tuple(flips[i] for i in own), key=drawn_as))
+                               visible and paint.visible, reversed=tuple(flips[i] for i in own), key=drawn_as,
+                               clips=clips))
             continue
         widths: tuple[float, ...] = ()
         if growing:
@@ -278,7 +288,7 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
                 share[i] = min(max(x if pairs[i].source[0] is None else 1.0 - x, 0.0), 1.0)
             widths = tuple(share)
         out.append(ShapeAt(contours, closed, paint, visible and paint.visible, x if fading else None, sides,
-                           flips, drawn_as, widths))
+                           flips, drawn_as, widths, clips))
     return out
 
 
@@ -315,7 +325,8 @@ def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequen
 
 def _still(key: Key) -> ShapeAt:
     return ShapeAt(tuple(c.points for c in key.contours), tuple(c.closed for c in key.contours), key.paint,
-                   not key.hidden and key.paint.visible, key=key)
+                   not key.hidden and key.paint.visible, key=key,
+                   clips=tuple(tuple(c.points for c in region) for region in key.clips))
 
 
 def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", balance: str = "copies") -> Track:

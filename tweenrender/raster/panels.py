@@ -11,7 +11,7 @@ from numpy.typing import NDArray
 from ..core.timeline import ShapeAt
 from ..model import Color, Scene, Shape
 from .round_stroke import worth_compiling
-from .surface import Raster, StrokeStyle
+from .surface import Raster, StrokeStyle, contours_path
 from .view import Box, Viewport
 
 __all__ = ["Composer", "Layer", "draw_shape", "drawn_style", "label_size", "label_band"]
@@ -117,6 +117,22 @@ def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
     kept = [(p, shut) for p, shut, ok in zip(pixels, at.closed, good) if ok]
     if not kept:
         return
+    if at.clips:  # the key's clip paths (carried with the element between keys), intersected
+        canvas = raster.canvas
+        canvas.save()
+        try:
+            for region in at.clips:
+                canvas.clipPath(contours_path([viewport.to_pixels(c) for c in region], [True] * len(region)),
+                                doAntiAlias=True)
+            _fill_and_draw(raster, viewport, shape, at, alpha, pixels, kept)
+        finally:
+            canvas.restore()
+        return
+    _fill_and_draw(raster, viewport, shape, at, alpha, pixels, kept)
+
+
+def _fill_and_draw(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, alpha: float,
+                   pixels: list[NDArray[np.float64]], kept: list[tuple[NDArray[np.float64], bool]]) -> None:
     paint = at.paint
     if paint.gradient is not None and paint.fill is not None:
         from .gradients import gradient_shader

@@ -31,7 +31,7 @@ from numpy.typing import NDArray
 
 from ..errors import SceneError
 from ..model import Color, Contour, Paint, frozen_points
-from .svg_document import SHAPES, Document, Drawn, Node, length, parse, read, walk
+from .svg_document import SHAPES, Document, Drawn, Node, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
@@ -91,6 +91,7 @@ class Element:
     cap: str
     join: str
     miter_limit: float
+    clips: tuple[tuple[Contour, ...], ...] = ()  # clip regions (world units, nonzero), all of them intersected
 
 
 @dataclass(frozen=True, slots=True)
@@ -273,9 +274,40 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     if not contours:
         return None
     paint = _with_gradient(paint, d, to_world, contours)
+    clips = tuple(_clip(ident, space, d, to_world, tol, budget) for ident, space in d.clips)
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
                    tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
-                   miter)
+                   miter, tuple(c for c in clips if c is not None))
+
+
+def _clip(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,
+          budget: Budget) -> tuple[Contour, ...] | None:
+    """The region of ``<clipPath id=ident>`` in world units (its shapes' closed contours, nonzero), applied
+    in the user ``space`` of the element that names it; None when ``ident`` is no clip path."""
+    from .svg_document import _Walk
+
+    nodes = d.document.ids.get(ident)
+    if not nodes or nodes[0].tag != "clipPath":
+        return None
+    clip = nodes[0]
+    units = clip.attrs.get("clipPathUnits", "userSpaceOnUse").strip()
+    if units == "objectBoundingBox":
+        if space is not d.ctm:
+            raise Refusal(f"expected clipPathUnits=\"userSpaceOnUse\" on a group's clip path, found "
+                          f"objectBoundingBox (clipPath {ident!r}, line {clip.line}): not drawn yet")
+        every = np.concatenate([p for p, _ in _contours(d, np.eye(3), tol, budget, True)] or [np.zeros((1, 2))])
+        (x0, y0), (x1, y1) = every.min(axis=0), every.max(axis=0)
+        space = space @ np.array([[x1 - x0, 0.0, x0], [0.0, y1 - y0, y0], [0.0, 0.0, 1.0]])
+    if "transform" in clip.attrs:
+        space = space @ matrix(clip.attrs["transform"])
+    out: list[Contour] = []
+    walker = _Walk(d.document, False)
+    for child in clip.children:
+        for shape in walker.visit(child, {}, space, 1.0, True):
+            if shape.visible:
+                out += [Contour(frozen_points(p), True) for p, closed in
+                        _contours(shape, to_world @ shape.ctm, tol, budget, True) if len(p) >= 3]
+    return tuple(out)
 
 
 # -- paint ---------------------------------------------------------------------------------------------

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .args import methods
+from .args import methods, print_path
 from .matching_flags import add_balance_flag, add_matching_flags, with_matching
 
 
@@ -28,11 +28,11 @@ def run(args: argparse.Namespace) -> int:
     from ..scenefile import load_scene
     from .progress import ProgressBar
 
-    target = Path(args.output) if args.output else Path("output") / f"{Path(args.scene).stem}-report"
+    target = Path(args.output) if args.output is not None else Path("output") / f"{Path(args.scene).stem}-report"
     scene = with_matching(load_scene(args.scene), args)
 
     def bar(name: str) -> ProgressBar:
         return ProgressBar(name, enabled=False if args.quiet else None)
 
-    print(write_report(scene, target, args.compare, bar))
+    print_path(write_report(scene, target, args.compare, bar))
     return 0

@@ -16,7 +16,7 @@ from typing import Callable
 from ..errors import OptionError, printable
 from .manifest import foreign_entry, frame_names
 
-__all__ = ["FRAME_NAME", "check_output_name", "check_frames_folder", "check_own_folder"]
+__all__ = ["FRAME_NAME", "check_output_name", "check_name_fits", "check_frames_folder", "check_own_folder"]
 
 FRAME_NAME = re.compile(r"frame_\d{4,}\.png")
 """The files of a frame set (``frame_0000.png`` …): the only names a frames manifest may list."""
@@ -24,9 +24,39 @@ FRAME_NAME = re.compile(r"frame_\d{4,}\.png")
 _NOT_A_NAME = "expected a file name (.mp4, .webm, .gif) or a folder's name for PNG frames"
 
 
-def check_output_name(path: str | os.PathLike[str]) -> Path:
-    """``path`` as a :class:`Path`, refused when it names no file or folder of its own:
-    empty, the current folder, a parent folder (``..``), or the root."""
+_TEMPORARY_EXTRA = 32
+"""Bytes a temporary's name adds to its target's (``.NAME.PID-XXXXXXXX.part.webm``, see ``atomic.sibling``)."""
+
+
+def _shown(name: str) -> str:
+    return printable(name if len(name) <= 40 else name[:20] + "…" + name[-12:])
+
+
+def check_name_fits(target: Path) -> None:
+    """Refuse ``target`` when its name, or the temporary written beside it, is longer than the file
+    system takes (255 bytes a name, 4096 a path, on Linux): before any work, not after it."""
+    name = os.fsencode(target.name)
+    probe = target.parent
+    while not probe.exists() and probe != probe.parent:
+        probe = probe.parent
+    try:
+        most, longest_path = os.pathconf(probe, "PC_NAME_MAX"), os.pathconf(probe, "PC_PATH_MAX")
+    except (OSError, ValueError):
+        most, longest_path = 255, 4096
+    allowed = most - _TEMPORARY_EXTRA
+    if len(name) > allowed:
+        raise OptionError(f"output {_shown(target.name)}: name too long ({len(name)} bytes; this file system takes "
+                          f"{most}, and {allowed} leave room for the temporary written beside it)")
+    whole = len(os.fsencode(os.path.abspath(target))) + _TEMPORARY_EXTRA
+    if whole > longest_path:
+        raise OptionError(f"output {_shown(target.name)}: path too long ({whole} bytes with its temporary; "
+                          f"this file system takes {longest_path})")
+
+
+def check_output_name(path: str | os.PathLike[str], expected: str = _NOT_A_NAME) -> Path:
+    """``path`` as a :class:`Path`, refused when it names no file or folder of its own (empty, the current
+    folder, a parent folder ``..``, or the root) or one too long for the file system; ``expected`` says
+    what was expected instead."""
     text = os.fspath(path)
     target = Path(text)
     what = None
@@ -39,7 +69,8 @@ def check_output_name(path: str | os.PathLike[str]) -> Path:
     elif target.name == "":
         what = "the current folder"
     if what is not None:
-        raise OptionError(f"output {printable(repr(text))} is {what}; {_NOT_A_NAME}")
+        raise OptionError(f"output {printable(repr(text))} is {what}; {expected}")
+    check_name_fits(target)
     return target
 
 
@@ -52,6 +83,7 @@ def check_frames_folder(target: Path) -> None:
 def check_own_folder(target: Path, ours: Callable[[str], bool], what: str) -> None:
     """Refuse ``target`` as a folder to replace unless :func:`~.manifest.foreign_entry` finds it ours;
     the one line names its first foreign or changed entry."""
+    check_name_fits(target)
     try:
         if target.is_symlink() and not target.is_dir():
             raise OptionError(f"{printable(str(target))}: is a link to no folder; {what} is a folder, "

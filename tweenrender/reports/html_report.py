@@ -58,8 +58,10 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
     from .metric_report import write_metric_plot
     from .stats import stats_dict
 
+    from ..encode.targets import check_output_name
+
     methods = tuple(methods or report_methods(scene))
-    target = Path(target)
+    target = check_output_name(target, "expected a folder's name for the report")
     _check_target(target)
     prepare_folder(target)
     tracks = tracks_of(scene)
@@ -128,8 +130,12 @@ if (lead) {
 """
 
 
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
 def _esc(text: Any) -> str:
-    return html.escape(str(text), quote=True)
+    """``text`` for HTML: markup characters escaped, a lone surrogate (which UTF-8 cannot hold) as U+FFFD."""
+    return html.escape(_SURROGATE.sub("\ufffd", str(text)), quote=True)
 
 
 def _crossing_text(at: list[float]) -> str:

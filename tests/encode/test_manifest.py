@@ -150,3 +150,18 @@ def test_a_report_marker_that_is_a_folder_owns_nothing(tmp_path: Path) -> None:
     done = run_module("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert _tree(tmp_path) == before
+
+
+def test_a_listing_not_stamped_by_tweenrender_owns_nothing(cli, tmp_path: Path) -> None:
+    """Another tool's ``files`` list in a file of that name is not ours: only a stamped manifest counts."""
+    scene = write_scene(tmp_path, SQUARE)
+    frames = tmp_path / "frames"
+    frames.mkdir()
+    (frames / "frame_0000.png").write_bytes(b"the user's picture")
+    info = (frames / "frame_0000.png").stat()
+    listing = {"frame_0000.png": {"bytes": info.st_size, "mtime_ns": info.st_mtime_ns}}
+    (frames / MANIFEST).write_text(json.dumps({"files": listing}))
+    before = _tree(tmp_path)
+    code, _, err = _render(cli, scene, frames)
+    assert code == 2 and MANIFEST in err and err.count("\n") == 1, err
+    assert _tree(tmp_path) == before

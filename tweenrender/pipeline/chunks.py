@@ -11,12 +11,13 @@ it; only its encoded result travels back:
 
 from __future__ import annotations
 
+import contextlib
 import os
 import tempfile
 from concurrent.futures import Executor, Future
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 from ..errors import EncodeError, OptionError
 from .job import Progress, RenderJob
@@ -51,6 +52,15 @@ def sweep_parts() -> None:
             shutil.rmtree(folder, ignore_errors=True)
 
 
+@contextlib.contextmanager
+def run_folder(what: str) -> Iterator[Path]:
+    """A folder in the temporary folder for this run's ``what`` (``tweenrender-part-<pid>-<what>-…``),
+    removed afterwards; a run killed before that leaves it to the next run's :func:`sweep_parts`."""
+    with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getpid()}-{what}-", ignore_cleanup_errors=True) \
+            as folder:
+        yield Path(folder)
+
+
 def render_part(job: RenderJob, fmt: str) -> Any:
     """Render ``job`` (typically a ``frames`` chunk) for a ``fmt`` output where this runs.
 
@@ -68,6 +78,7 @@ def render_part(job: RenderJob, fmt: str) -> Any:
             if fmt == "png":
                 frames = Frames(job)
                 return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
+            sweep_parts()  # on a worker machine, those of renders killed there before
             with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getppid()}-") as folder:
                 path = Path(folder) / f"part.{fmt}"
                 render(job, fmt, path)
@@ -159,10 +170,15 @@ def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: lis
     prepare_folder(target)
     total = len(job.frame_range)
     parts: list[Path] = []
+    folder = sibling(target, ".parts")  # one folder per run: a killed run leaves one entry, swept as one
+    try:
+        folder.mkdir()
+    except OSError as error:
+        raise EncodeError(f"{target}: cannot create a folder for the parts beside it ({os_reason(error)})") from None
     try:
         done = 0
         for future, size in zip(futures, sizes):
-            part = sibling(target, f".{len(parts):04d}.{kind}")
+            part = folder / f"{len(parts):04d}.{kind}"
             parts.append(part)
             data = future.result()
             try:
@@ -176,5 +192,4 @@ def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: lis
         return concat(parts, target, expected=total, fmt=fmt, rate=job.rate,
                       alpha=job.scene.background[3] < 255)
     finally:
-        for part in parts:
-            discard(part)
+        discard(folder)

@@ -138,8 +138,13 @@ def _start_cluster_render(tmp_path: Path, scene: Path, target: Path) -> subproce
                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
-        parts = [p for p in tmp.glob("tweenrender-part-*/part.*")]
-        if parts and any(p.stat().st_size > 0 for p in parts):
+        # a worker's part folder (not dask's scratch) holding the part's temporary, being written
+        try:
+            parts = [p.stat().st_size for folder in tmp.glob("tweenrender-part-*") if "-dask-" not in folder.name
+                     for p in folder.iterdir()]
+        except FileNotFoundError:  # a folder or file gone between the listing and the look
+            parts = []
+        if any(parts):
             return process
         assert process.poll() is None, process.communicate()
         time.sleep(0.05)

@@ -39,16 +39,16 @@ _PART_PREFIX = "tweenrender-part-"
 """Folders of parts being rendered, in the temporary folder: ``tweenrender-part-<render's pid>-<random>``."""
 
 
-def sweep_parts() -> None:
+def sweep_parts(own: bool = False) -> None:
     """Remove the part folders of renders that no longer run (killed with their workers before these
-    could clean up)."""
+    could clean up); with ``own``, this process's too (once its workers are stopped)."""
     import shutil
 
     from ..encode.atomic import alive
 
     for folder in Path(tempfile.gettempdir()).glob(f"{_PART_PREFIX}*-*"):
         owner = folder.name[len(_PART_PREFIX):].split("-", 1)[0]
-        if owner.isdigit() and not alive(int(owner)):
+        if owner.isdigit() and ((own and int(owner) == os.getpid()) or not alive(int(owner))):
             shutil.rmtree(folder, ignore_errors=True)
 
 

@@ -190,23 +190,45 @@ def connect(address: str) -> Iterator[tuple[Executor, int]]:
     where, processes = parse_address(address)
     distributed = _distributed()
     sweep_parts()
-    with contextlib.ExitStack() as stack:
-        stack.enter_context(_quiet_dask())
-        try:
-            if processes is not None:
-                scratch = stack.enter_context(run_folder("dask"))
-                cluster = stack.enter_context(distributed.LocalCluster(
-                    n_workers=processes, threads_per_worker=1, processes=True, dashboard_address=":0",
-                    local_directory=str(scratch)))
-                client = stack.enter_context(distributed.Client(cluster))
-            else:
-                probe(where)
-                client = stack.enter_context(distributed.Client(where, timeout=f"{_CONNECT_SECONDS}s"))
-            client.wait_for_workers(1, timeout=_CONNECT_SECONDS)
-        except (OSError, TimeoutError) as error:
-            raise RenderError(f"cluster {address}: cannot reach a scheduler with workers ({error})") from None
-        capacity = sum(client.nthreads().values())
-        yield client.get_executor(), max(capacity, 1)
+    try:
+        with contextlib.ExitStack() as stack:
+            stack.enter_context(_quiet_dask())
+            try:
+                if processes is not None:
+                    scratch = stack.enter_context(run_folder("dask"))
+                    with _workers_leave_ctrl_c_to_us():
+                        cluster = stack.enter_context(distributed.LocalCluster(
+                            n_workers=processes, threads_per_worker=1, processes=True, dashboard_address=":0",
+                            local_directory=str(scratch)))
+                    client = stack.enter_context(distributed.Client(cluster))
+                else:
+                    probe(where)
+                    client = stack.enter_context(distributed.Client(where, timeout=f"{_CONNECT_SECONDS}s"))
+                client.wait_for_workers(1, timeout=_CONNECT_SECONDS)
+            except (OSError, TimeoutError) as error:
+                raise RenderError(f"cluster {address}: cannot reach a scheduler with workers ({error})") from None
+            capacity = sum(client.nthreads().values())
+            yield client.get_executor(), max(capacity, 1)
+    finally:
+        if processes is not None:
+            sweep_parts(own=True)  # the local workers are stopped: what a stopped one left is removable
+
+
+@contextlib.contextmanager
+def _workers_leave_ctrl_c_to_us() -> Iterator[None]:
+    """Start local workers with SIGINT ignored (a started Python keeps it so), as the drawing processes
+    of ``--workers`` are: Ctrl-C reaches the whole process group, and only this process answers it."""
+    import signal
+
+    try:
+        previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    except ValueError:  # not the main thread: signals are not ours to change
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
 
 
 def cluster_chunks(frames: int, capacity: int) -> int:

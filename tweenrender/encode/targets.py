@@ -11,12 +11,13 @@ from __future__ import annotations
 import os
 import re
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Iterable
 
 from ..errors import OptionError, printable
 from .manifest import foreign_entry, frame_names
 
-__all__ = ["FRAME_NAME", "check_output_name", "check_name_fits", "check_frames_folder", "check_own_folder"]
+__all__ = ["FRAME_NAME", "check_output_name", "check_name_fits", "check_frames_folder", "check_own_folder",
+           "check_not_an_input"]
 
 FRAME_NAME = re.compile(r"frame_\d{4,}\.png")
 """The files of a frame set (``frame_0000.png`` …): the only names a frames manifest may list."""
@@ -97,3 +98,34 @@ def check_own_folder(target: Path, ours: Callable[[str], bool], what: str) -> No
     if reason is not None:
         raise OptionError(f"{printable(str(target))}: {printable(reason)}; {what} replaces only a folder "
                           "tweenrender wrote: choose another folder, or remove this one yourself")
+
+
+def _same_file(a: str | Path, b: str | Path) -> bool:
+    try:
+        return os.path.samefile(a, b)
+    except (OSError, ValueError):  # either is missing (or unnamable): not one file
+        return False
+
+
+def check_not_an_input(target: Path, sources: Iterable[str | os.PathLike[str]], folder: bool = False,
+                       files: Iterable[str] = ()) -> None:
+    """Refuse to write ``target`` over a file the command reads (``sources``: the scene, its SVG keys and
+    drawings), compared through symbolic and hard links. A ``folder`` target is replaced whole, so a source
+    inside it clashes too, as does a source that any of ``files`` (the names put in it) already is.
+    The one line names both."""
+    real_target = os.path.realpath(target)
+    inside = real_target.rstrip(os.sep) + os.sep
+    for source in sources:
+        real = os.path.realpath(source)
+        shown = f"{printable(str(target))}: is {printable(str(source))}"
+        if real == real_target or _same_file(target, source):
+            raise OptionError(f"{shown}, which this command reads; choose another output")
+        if not folder:
+            continue
+        if real.startswith(inside):
+            raise OptionError(f"{printable(str(target))}: holds {printable(str(source))}, which this command reads, "
+                              "and would be replaced whole; choose another output")
+        for name in files:
+            if _same_file(target / name, source):
+                raise OptionError(f"{printable(str(target / name))}: is {printable(str(source))}, which this "
+                                  "command reads; choose another output")

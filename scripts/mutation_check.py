@@ -236,7 +236,7 @@ MUTANTS = [
            "            segment = pending + 1\n            pending = following",
            "            segment = pending + 1\n            pending = next(braces, None)", DRAWING),
     Mutant("svg: a pipe not named as one", "tweenrender/scenefile/svg_document.py",
-           '(stat.S_ISFIFO, "a pipe (FIFO)"), ', "",
+           '(stat.S_ISFIFO, "a pipe (FIFO)"),', "",
            ("tests/scenefile/test_hostile_inputs.py",)),
     Mutant("svg: an infinite transform number accepted", "tweenrender/scenefile/svg_document.py",
            "        if not math.isfinite(float(number)):", "        if False:", ("tests/scenefile/test_hostile_inputs.py",)),

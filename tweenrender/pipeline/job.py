@@ -36,7 +36,8 @@ def total_frames(scene: Scene, fps: float | None = None) -> int:
 
 def pick_frames(spec: str | range | None, total: int) -> range:
     """The frames to render of a clip of ``total``: all (``None``), a ``range``, or ``"A:B"`` text
-    (B exclusive, either side optional, like a Python slice; ``"A"`` alone is one frame)."""
+    (B exclusive, either side optional, like a Python slice, negative numbers counting from the end;
+    ``"A"`` alone is one frame, ``"-1"`` the last)."""
     if spec is None:
         return range(total)
     if isinstance(spec, range):
@@ -49,7 +50,7 @@ def pick_frames(spec: str | range | None, total: int) -> range:
             start = int(start_text) if start_text.strip() else 0
             stop = int(stop_text) if stop_text.strip() else total
             if not colon:
-                stop = start + 1
+                stop = (start + 1) or total  # "-1": the last frame, not the empty slice [-1:0]
         except ValueError:
             raise OptionError(f"frames {text!r}: expected A:B with whole numbers") from None
         picked = range(total)[start:stop]

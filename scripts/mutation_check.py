@@ -2,6 +2,7 @@
 
     python scripts/mutation_check.py            # every mutant, one after another (about 15 minutes)
     python scripts/mutation_check.py -k ease    # only mutants whose name contains "ease"
+    python scripts/mutation_check.py -k "svg manifest"   # ... "svg" or "manifest"
     python scripts/mutation_check.py --list     # the mutants, without running anything
 
 The tree (package, tests, scenes) is copied once to a temporary folder. Each mutant
@@ -47,6 +48,12 @@ ENCODE = ("tests/encode", "tests/cli/test_main.py")
 STROKE = ("tests/raster/test_round_stroke.py",)
 ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
 VECTOR = ("tests/core/test_keyframes.py", "tests/pipeline/test_vector_output.py")
+OWNED = ("tests/encode/test_manifest.py", "tests/cli/test_targets.py")
+_CLUSTER_TESTS = "tests/pipeline/test_cluster_failures.py::"
+CLUSTER = tuple(_CLUSTER_TESTS + name for name in ("test_a_bad_address_is_refused_before_connecting",
+                                                   "test_a_port_where_nothing_listens_is_one_line",
+                                                   "test_an_http_server_is_not_taken_for_a_scheduler"))
+DRAWING = ("tests/scenefile/test_drawing_rules.py", "tests/scenefile/test_hostile_inputs.py")
 
 MUTANTS = [
     # -- core: paths ---------------------------------------------------------------------------------
@@ -205,8 +212,46 @@ MUTANTS = [
            'if match.group(2) == ".old" and not target.exists():', "if False:", ATOMIC),
     Mutant("prepare: an unwritable folder not reported", "tweenrender/encode/atomic.py",
            "if not os.access(parent, os.W_OK):", "if False:", ATOMIC),
-    Mutant("frames folder: any .png counts as a frame", "tweenrender/encode/targets.py",
-           "FRAME_NAME.fullmatch(entry.name)", 'entry.name.endswith(".png")', ATOMIC),
+    Mutant("frame names: any suffix accepted", "tweenrender/encode/targets.py",
+           'FRAME_NAME = re.compile(r"frame_\\d{4,}\\.png")', 'FRAME_NAME = re.compile(r"frame_\\d{4,}\\.png.*")',
+           OWNED),
+    Mutant("manifest: one that is a folder taken for an empty list", "tweenrender/encode/manifest.py",
+           'return f"its {MANIFEST} is not a file"', "return {}", OWNED),
+    Mutant("manifest: another tool's list taken for ours", "tweenrender/encode/manifest.py",
+           "if data.get(\"written_by\") != _STAMP or not isinstance(files, dict):", "if not isinstance(files, dict):",
+           OWNED),
+    Mutant("manifest: a file changed since not noticed", "tweenrender/encode/manifest.py",
+           'if (info.st_size, info.st_mtime_ns) != (entry["bytes"], entry["mtime_ns"]):', "if False:", OWNED),
+    Mutant("manifest: an unlisted entry accepted", "tweenrender/encode/manifest.py",
+           "if entry is None or not ours(name):", "if entry is not None and not ours(name):", OWNED),
+    Mutant("report: a shape name left unescaped in the table", "tweenrender/reports/html_report.py",
+           "<h3>{_esc(entry['name'])}", "<h3>{entry['name']}", ("tests/cli/test_names.py",)),
+    Mutant("svg: nested viewport scaled by max (slice) not min (meet)", "tweenrender/scenefile/svg_document.py",
+           "s = min(width / bw, height / bh)", "s = max(width / bw, height / bh)", DRAWING),
+    Mutant("svg: display none drawn", "tweenrender/scenefile/svg_document.py",
+           'if own.get("display", "").strip() == "none":', 'if own.get("display", "").strip() == "None":', DRAWING),
+    Mutant("contours: size term of pairing zeroed", "tweenrender/core/contours.py",
+           "+ _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))", "+ 0.0 * np.abs(sa[:, None] - sb[None]))",
+           ("tests/core/test_contours.py",)),
+    Mutant("css: a rule after a stray closing brace lost", "tweenrender/scenefile/css.py",
+           "            segment = pending + 1\n            pending = following",
+           "            segment = pending + 1\n            pending = next(braces, None)", DRAWING),
+    Mutant("svg: a pipe not named as one", "tweenrender/scenefile/svg_document.py",
+           '(stat.S_ISFIFO, "a pipe (FIFO)"),', "",
+           ("tests/scenefile/test_hostile_inputs.py",)),
+    Mutant("svg: an infinite transform number accepted", "tweenrender/scenefile/svg_document.py",
+           "        if not math.isfinite(float(number)):", "        if False:", ("tests/scenefile/test_hostile_inputs.py",)),
+    Mutant("scene: key count not limited", "tweenrender/scenefile/load.py",
+           "            if count > LIMITS[what]:", "            if count > 10 * LIMITS[what]:",
+           ("tests/scenefile/test_hostile_inputs.py",)),
+    Mutant("output name: no room left for the temporary", "tweenrender/encode/targets.py",
+           "    allowed = most - _TEMPORARY_EXTRA", "    allowed = most", ("tests/cli/test_names.py",)),
+    Mutant("cluster: any scheme accepted", "tweenrender/pipeline/cluster.py",
+           '    if scheme != "tcp":', '    if scheme == "ucx":', CLUSTER),
+    Mutant("cluster: an out-of-range port accepted", "tweenrender/pipeline/cluster.py",
+           "        if not 1 <= port <= 65535:", "        if not 1 <= port:", CLUSTER),
+    Mutant("cluster: a silent listener taken for a scheduler", "tweenrender/pipeline/cluster.py",
+           "                probe(where)\n", "                pass\n", CLUSTER),
     Mutant("frames folder: not checked again before the swap", "tweenrender/encode/sinks.py",
            "            check_frames_folder(self.target)  # again", "            pass  # again", ATOMIC),
     Mutant("output name: a parent folder accepted", "tweenrender/encode/targets.py",
@@ -255,12 +300,14 @@ def run_tests(tree: Path, tests: tuple[str, ...], timeout: float) -> tuple[str, 
 
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-k", default="", help="only mutants whose name contains this")
+    parser.add_argument("-k", default="", help="only mutants whose name contains one of these words "
+                                               "(separated by spaces or commas)")
     parser.add_argument("--list", action="store_true", help="list the mutants and stop")
     parser.add_argument("--timeout", type=float, default=300.0, help="seconds per test run (default 300)")
     parser.add_argument("--required", type=float, default=90.0, help="percent to kill (default 90)")
     args = parser.parse_args(argv)
-    mutants = [m for m in MUTANTS if args.k.lower() in m.name.lower()]
+    words = [w for w in args.k.lower().replace(",", " ").split()] or [""]
+    mutants = [m for m in MUTANTS if any(w in m.name.lower() for w in words)]
     if not mutants:
         print(f"no mutant's name contains {args.k!r}")
         return 2

@@ -23,7 +23,8 @@ from hypothesis import strategies as st
 
 from tweenrender.core.methods import interpolate
 
-from tests.helpers import LONG, SQUARE, run_module, start_render, unprivileged, write_scene
+from tests.helpers import (LONG, MANIFEST, SQUARE, earlier_frames, run_module, start_render, unprivileged,
+                           write_scene)
 from tests.scenefile.test_load_more import MORE_BAD
 
 METHODS = ("linear", "nonlinear", "rigid", "auto", "jointed")
@@ -139,8 +140,7 @@ def test_a_file_size_limit_is_reported_and_the_old_output_kept(tmp_path: Path, o
     disk.mkdir()
     target = disk / output
     if output == "frames":
-        target.mkdir()
-        (target / "frame_0000.png").write_bytes(b"old frame")
+        earlier_frames(target)
     else:
         target.write_bytes(b"old movie")
 
@@ -155,7 +155,7 @@ def test_a_file_size_limit_is_reported_and_the_old_output_kept(tmp_path: Path, o
     words = "File too large" if output == "frames" else "stopped by SIGXFSZ (File size limit exceeded)"
     assert err.startswith(f"tweenrender: error: {target}: ") and words in err and "Traceback" not in err
     if output == "frames":
-        assert _listing(target) == ["frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
+        assert _listing(target) == [MANIFEST, "frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
     else:
         assert target.read_bytes() == b"old movie"
     assert _listing(disk) == [output]  # the temporary is gone
@@ -213,8 +213,7 @@ def test_ctrl_c_midway_exits_130_and_keeps_the_old_output(tmp_path: Path, output
     scene = write_scene(tmp_path, LONG)
     target = tmp_path / output
     if output == "frames":
-        target.mkdir()
-        (target / "frame_0000.png").write_bytes(b"old frame")
+        earlier_frames(target)
     else:
         target.write_bytes(b"old movie")
     process = _start_and_wait_for_temporary(tmp_path, scene, target)
@@ -223,7 +222,7 @@ def test_ctrl_c_midway_exits_130_and_keeps_the_old_output(tmp_path: Path, output
     assert process.returncode == 130
     assert out == "" and err == "tweenrender: interrupted; no output was changed\n"
     if output == "frames":
-        assert _listing(target) == ["frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
+        assert _listing(target) == [MANIFEST, "frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
     else:
         assert target.read_bytes() == b"old movie"
     assert _listing(tmp_path) == sorted(["scene.toml", output])

@@ -23,8 +23,8 @@ def test_png_chunks_are_the_single_renders_frames(tmp_path: Path, pool: ProcessP
     whole = render(job, "png", tmp_path / "whole")
     seen: list[tuple[int, int]] = []
     joined = render_chunks(job, "png", tmp_path / "joined", pool, chunks=3, progress=lambda d, t: seen.append((d, t)))
-    names = sorted(p.name for p in whole.iterdir())
-    assert names == [f"frame_{i:04d}.png" for i in range(25)] == sorted(p.name for p in joined.iterdir())
+    names = sorted(p.name for p in whole.glob("*.png"))
+    assert names == [f"frame_{i:04d}.png" for i in range(25)] == sorted(p.name for p in joined.glob("*.png"))
     assert all(np.array_equal(read_png(whole / n), read_png(joined / n)) for n in names)
     assert seen == [(i, 25) for i in range(1, 26)]
 
@@ -71,7 +71,7 @@ def test_render_in_processes_chunks_a_video_and_streams_frames_otherwise(tmp_pat
     assert len(video) == 25
     one = render(job, "png", tmp_path / "one")
     two = render_in_processes(job, "png", tmp_path / "two", 2)
-    assert all(np.array_equal(read_png(one / p.name), read_png(two / p.name)) for p in one.iterdir())
+    assert all(np.array_equal(read_png(one / p.name), read_png(two / p.name)) for p in one.glob("*.png"))
 
 
 def test_predicted_seconds_follow_the_model() -> None:

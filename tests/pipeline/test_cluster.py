@@ -40,8 +40,8 @@ def test_cluster_chunks_give_the_local_renders_frames(tmp_path: Path, client, fm
     local = render(job, fmt, tmp_path / "local" / name)
     remote = render_chunks(job, fmt, tmp_path / "remote" / name, client.get_executor(), chunks=4)
     if fmt == "png":
-        names = sorted(p.name for p in local.iterdir())
-        assert len(names) == 25 and names == sorted(p.name for p in remote.iterdir())
+        names = sorted(p.name for p in local.glob("*.png"))
+        assert len(names) == 25 and names == sorted(p.name for p in remote.glob("*.png"))
         assert all(np.array_equal(read_png(local / n), read_png(remote / n)) for n in names)
     elif fmt == "gif":
         assert local.read_bytes() == remote.read_bytes()
@@ -66,8 +66,8 @@ def test_cli_renders_on_a_local_cluster(cli, tmp_path: Path) -> None:  # type: i
     code, out, err = cli("render", scene, "-o", tmp_path / "there", "-q", "--cluster", "local:2")
     assert code == 0, err
     assert out.strip() == str(tmp_path / "there")
-    names = sorted(p.name for p in (tmp_path / "here").iterdir())
-    assert len(names) == 25 and names == sorted(p.name for p in (tmp_path / "there").iterdir())
+    names = sorted(p.name for p in (tmp_path / "here").glob("*.png"))
+    assert len(names) == 25 and names == sorted(p.name for p in (tmp_path / "there").glob("*.png"))
     assert all(np.array_equal(read_png(tmp_path / "here" / n), read_png(tmp_path / "there" / n)) for n in names)
 
 

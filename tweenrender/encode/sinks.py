@@ -20,6 +20,7 @@ from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 from .lifeline import run_program, start_program
 from .formats import TABLE, check_alpha, check_frame_size, lookup
+from .manifest import write_manifest
 from .targets import check_frames_folder
 from .yuv420 import PIXEL_ORDERS, Yuv420
 
@@ -169,8 +170,9 @@ class PngSequence:
             self.abort()
             raise EncodeError(f"{self.target}: wrote {self.count} frames, expected {self.expected}")
         try:
+            write_manifest(self.temporary)
             check_frames_folder(self.target)  # again: files may have been saved there meanwhile
-        except OptionError:
+        except (OptionError, EncodeError):
             self.abort()
             raise
         commit_folder(self.temporary, self.target)

@@ -13,12 +13,13 @@ Which one is each format's :attr:`~tweenrender.encode.formats.Format.join`.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import tempfile
 from concurrent.futures import Executor, Future
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 from ..encode.formats import TABLE
 from ..errors import EncodeError
@@ -39,17 +40,26 @@ _PART_PREFIX = "tweenrender-part-"
 """Folders of parts being rendered, in the temporary folder: ``tweenrender-part-<render's pid>-<random>``."""
 
 
-def sweep_parts() -> None:
+def sweep_parts(own: bool = False) -> None:
     """Remove the part folders of renders that no longer run (killed with their workers before these
-    could clean up)."""
+    could clean up); with ``own``, this process's too (once its workers are stopped)."""
     import shutil
 
     from ..encode.atomic import alive
 
     for folder in Path(tempfile.gettempdir()).glob(f"{_PART_PREFIX}*-*"):
         owner = folder.name[len(_PART_PREFIX):].split("-", 1)[0]
-        if owner.isdigit() and not alive(int(owner)):
+        if owner.isdigit() and ((own and int(owner) == os.getpid()) or not alive(int(owner))):
             shutil.rmtree(folder, ignore_errors=True)
+
+
+@contextlib.contextmanager
+def run_folder(what: str) -> Iterator[Path]:
+    """A folder in the temporary folder for this run's ``what`` (``tweenrender-part-<pid>-<what>-…``),
+    removed afterwards; a run killed before that leaves it to the next run's :func:`sweep_parts`."""
+    with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getpid()}-{what}-", ignore_cleanup_errors=True) \
+            as folder:
+        yield Path(folder)
 
 
 def render_part(job: RenderJob, fmt: str) -> Any:
@@ -68,6 +78,7 @@ def render_part(job: RenderJob, fmt: str) -> Any:
             if TABLE[fmt].folder:
                 frames = Frames(job)
                 return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
+            sweep_parts()  # on a worker machine, those of renders killed there before
             with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getppid()}-") as folder:
                 path = Path(folder) / f"part.{fmt}"
                 render(job, fmt, path)
@@ -160,10 +171,15 @@ def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: lis
     prepare_folder(target)
     total = len(job.frame_range)
     parts: list[Path] = []
+    folder = sibling(target, ".parts")  # one folder per run: a killed run leaves one entry, swept as one
+    try:
+        folder.mkdir()
+    except OSError as error:
+        raise EncodeError(f"{target}: cannot create a folder for the parts beside it ({os_reason(error)})") from None
     try:
         done = 0
         for future, size in zip(futures, sizes):
-            part = sibling(target, f".{len(parts):04d}.{kind}")
+            part = folder / f"{len(parts):04d}.{kind}"
             parts.append(part)
             data = future.result()
             try:
@@ -177,5 +193,4 @@ def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: lis
         return concat(parts, target, expected=total, fmt=fmt, rate=job.rate,
                       alpha=job.scene.background[3] < 255)
     finally:
-        for part in parts:
-            discard(part)
+        discard(folder)

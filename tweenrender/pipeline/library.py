@@ -87,41 +87,39 @@ def outlines(scene: Scene, time: float, *, method: str | None = None) -> list[Po
     in order, at the balanced vertex count. A closed contour does not repeat its first point; an
     open one is not closed. Shapes not drawn at that time (before they appear, after they go,
     fully transparent) are left out; contours that are growing or shrinking are in while they have size."""
-    drawer = _frames_for(scene, method, None, None)
-    out = []
-    for at in drawer.shapes_at(method, _finite_time(time)):
-        if not at.visible:
-            continue
-        out += [np.array(c, dtype=np.float64) for c in at.contours if np.ptp(c, axis=0).max(initial=0.0) > 0]
-    return out
+    return [drawn.points for drawn in contours(scene, time, method=method)]
 
 
-def contours(scene: Scene, time: float, *, method: str | None = None) -> list[DrawnContour]:
-    """Every drawn contour at ``time`` seconds as a :class:`~tweenrender.model.DrawnContour`, in the order
-    of :func:`outlines` (the same points), with what it is (closed, a hole, its element) and how it is
-    drawn (fill rule, fill and stroke as RGBA floats 0–1, stroke width in scene units, opacity)."""
+def contours(scene: Scene, time: float, method: str | None = None) -> list[DrawnContour]:
+    """Every drawn contour at ``time`` seconds as :class:`~tweenrender.model.DrawnContour` s, in the
+    order of :func:`outlines`: which are open strokes, which holes, their element and paint."""
     from ..core.contours import roles
     from ..raster.view import Viewport
-    from .job import scene_view
 
     drawer = _frames_for(scene, method, None, None)
     at_time = _finite_time(time)
-    # pixels per scene unit at the scene's size: widths given in pixels are converted
-    pixels = Viewport(scene_view(scene, drawer.tracks, (method,)), *scene.size).scale
+    shapes = drawer.shapes_at(method, at_time)
+    pixel = 1.0
+    if any(not shape.stroke_scales and shape.paint.stroke is not None for shape in scene.shapes):
+        from .job import scene_view
+
+        pixel = 1.0 / Viewport(scene_view(scene, drawer.tracks, (method,)), *scene.size).scale
     out = []
-    for shape, at in zip(scene.shapes, drawer.shapes_at(method, at_time)):
+    for index in drawer.order_at(at_time):
+        shape, at = scene.shapes[index], shapes[index]
         if not at.visible:
             continue
-        kinds = roles(list(at.contours), list(at.closed))
+        key = at.key
+        rule = (key.fill_rule if key is not None else None) or shape.fill_rule
         paint = at.paint
-        width = paint.stroke_width if shape.stroke_scales else paint.stroke_width / pixels
-        for points, closed, kind in zip(at.contours, at.closed, kinds):
+        width = paint.stroke_width * (1.0 if shape.stroke_scales else pixel)
+        kinds = roles(list(at.contours), list(at.closed))
+        for i, points in enumerate(at.contours):
             if np.ptp(points, axis=0).max(initial=0.0) <= 0:
                 continue
-            out.append(DrawnContour(
-                points=np.array(points, dtype=np.float64), closed=bool(closed), hole=kind == "hole",
-                element=shape.name, fill_rule=shape.fill_rule, fill=_unit(paint.fill) if closed else None,
-                stroke=_unit(paint.stroke), stroke_width=float(width), opacity=float(paint.opacity)))
+            out.append(DrawnContour(np.array(points, dtype=np.float64), at.closed[i], kinds[i] == "hole", shape.name,
+                                    rule, _unit(paint.fill), _unit(paint.stroke), float(width), float(paint.opacity),
+                                    bool(at.reversed and at.reversed[i]), paint.gradient))
     return out
 
 

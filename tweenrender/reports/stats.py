@@ -10,7 +10,7 @@ from ..core.qcurves import auto_choice
 from ..core.timeline import pair_paths
 from ..core.methods import REGISTRY, measured_methods
 from ..model import Scene
-from .segments import Entry, entries
+from .segments import Entry, entries, nothing_measured
 
 __all__ = ["stats_dict", "stats_text", "crossing_runs", "STATS_METHODS"]
 
@@ -40,7 +40,10 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
             "auto": {"method": choice.method, "why": choice.why},
             "methods": measured,
         })
-    return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
+    out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
+    if not shapes:
+        out["note"] = nothing_measured(scene)
+    return out
 
 
 def _as_drawn(entry: Entry, method: str) -> Callable[[Any], Any] | None:
@@ -88,7 +91,7 @@ def stats_text(stats: dict[str, Any]) -> str:
                 lines.append(f"Closing the walk changed the lengths by at most {100 * r['closure_tweak_max']:.2f} % "
                              "of the perimeter")
     if not stats["shapes"]:
-        lines.append("no shape has two keys: nothing moves")
+        lines.append(stats.get("note", "no shape has two keys: nothing moves"))
     return "\n".join(lines)
 
 

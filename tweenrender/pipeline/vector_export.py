@@ -21,9 +21,10 @@ from ..core.keyframes import greedy_keyframes, paint_channels
 from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, segment_method
 from ..encode.vector_data import EASE_HANDLES, STRAIGHT, Handles, VectorClip, VectorRun
 from ..errors import OptionError
-from ..model import Color, Paint, Shape
+from ..model import Color, Paint, Scene, Shape
 from ..raster.view import Viewport
-from .job import RenderJob, scene_view, tracks_of
+from ..core.stacking import order_at
+from .job import RenderJob, scene_view, stacking_of, tracks_of
 from .options import RenderOptions
 
 __all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR"]
@@ -70,38 +71,74 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
     picked = job.frame_range
     offset, count = picked.start, len(picked)
     times = np.arange(offset, offset + count) / job.rate
-    runs: list[VectorRun] = []
-    for shape, track in zip(scene.shapes, tracks):
+    orders, phases = _stacking(scene, tracks, times)
+    placed: list[tuple[int, int, VectorRun]] = []  # (stacking phase, place in its order, run)
+    for index, (shape, track) in enumerate(zip(scene.shapes, tracks)):
         method = job.methods[0] or scene.method_of(shape)
         shapes = track.at(times, method)
         segments = track.segment_index(times) if track.segments else np.zeros(count, dtype=np.intp)
-        for first, stop in _runs_of(shape, shapes, segments):
+        for first, stop in _runs_of(shape, shapes, segments, phases):
+            whole = int(phases[first]) == int(phases[stop - 1]) and (stop == count or phases[stop] == phases[first])
             exact = _exact_keys(track, int(segments[first]), method, job.rate, offset, count)
-            ending = _ending(track, int(segments[first]), method, stop, job.rate, offset, count) if exact is None \
-                else None
-            runs.append(_run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error, ending))
-    return VectorClip((width, height), job.rate, count, scene.background, tuple(runs), max_error)
+            ending = _ending(track, int(segments[first]), method, stop, job.rate, offset, count) \
+                if exact is None and whole else None
+            run = _run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error, ending)
+            placed.append((int(phases[first]), orders[int(phases[first])].index(index), run))
+    runs = tuple(run for _, _, run in sorted(placed, key=lambda item: item[:2]))
+    return VectorClip((width, height), job.rate, count, scene.background, runs, max_error)
 
 
-def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp]) -> list[tuple[int, int]]:
-    """Maximal ranges of frames of one segment on which ``shape`` is drawn with finite contours."""
+def _stacking(scene: Scene, tracks: tuple[Track, ...], times: Array) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:
+    """The paint orders the clip passes through (shape indices, first painted first) and, per frame, which
+    of them is in force: ``(F,)``. A layer is split where the order switches (DESIGN: stacking switch)."""
+    plan = stacking_of(scene, tracks)
+    orders: list[tuple[int, ...]] = []
+    phases = np.zeros(len(times), dtype=np.intp)
+    for f, time in enumerate(times.tolist()):
+        order = order_at(plan, scene.shapes, time)
+        if not orders or orders[-1] != order:
+            orders.append(order)
+        phases[f] = len(orders) - 1
+    return orders, phases
+
+
+def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
+             phases: NDArray[np.intp]) -> list[tuple[int, int]]:
+    """Maximal ranges of frames of one segment and one paint order on which ``shape`` is drawn with finite
+    contours, the same windings and the same key's fill rule and stroke ends."""
     drawn = []
     for at in shapes:
-        if at.fade is not None:
-            raise OptionError(f"shape {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which a "
-                              "vector format cannot carry; use unmatched = \"grow\" or a raster format")
+        _refuse_unsupported(shape, at)
         drawn.append(at.visible and all(np.all(np.isfinite(c)) for c in at.contours))
+
+    def look(f: int) -> tuple[object, ...]:
+        at = shapes[f]
+        return (int(segments[f]), int(phases[f]), len(at.contours), at.reversed, _style(shape, at))
+
     out: list[tuple[int, int]] = []
     start = None
     for f in range(len(shapes) + 1):
-        same = start is not None and f < len(shapes) and drawn[f] and segments[f] == segments[start] \
-            and len(shapes[f].contours) == len(shapes[start].contours)
+        same = start is not None and f < len(shapes) and drawn[f] and look(f) == look(start)
         if start is not None and not same:
             out.append((start, f))
             start = None
         if start is None and f < len(shapes) and drawn[f]:
             start = f
     return out
+
+
+def _refuse_unsupported(shape: Shape, at: ShapeAt) -> None:
+    """A vector file cannot carry cross-fading contours, gradients or clip paths (yet): refuse, naming the element."""
+    what = None
+    if at.fade is not None:
+        what = "its contours cross-fade (unmatched = \"fade\")"
+    elif at.paint.gradient is not None:
+        what = "it is painted with a gradient"
+    elif at.clips:
+        what = "it is clipped (clip-path or mask)"
+    if what is not None:
+        raise OptionError(f"element {shape.name!r}: {what}, which the vector formats do not carry yet; "
+                          "render a video or PNG frames", "format")
 
 
 def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int,
@@ -152,18 +189,20 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
          exact: tuple[int, int, Segment] | None, method: str, max_error: float,
          ending: ShapeAt | None = None) -> VectorRun:
     keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
-    samples = [np.stack([viewport.to_pixels(at.contours[i]) for at in shapes]) for i in keep]  # (F, L_i, 2) each
+    flips = shapes[0].reversed or (False,) * len(shapes[0].contours)
+    samples = [np.stack([_drawn(viewport, at.contours[i], flips[i]) for at in shapes]) for i in keep]  # (F, L_i, 2)
     joined = np.concatenate(samples, axis=1) if samples else np.zeros((len(shapes), 0, 2))
     if ending is not None:  # the key at frame ``stop`` closes the run's keyframes (not drawn by it)
-        samples = [np.concatenate([s, viewport.to_pixels(ending.contours[i])[None]]) for s, i in zip(samples, keep)]
+        samples = [np.concatenate([s, _drawn(viewport, ending.contours[i], flips[i])[None]])
+                   for s, i in zip(samples, keep)]
         shapes = [*shapes, ending]
     closed = tuple(shapes[0].closed[i] for i in keep)
     if exact is not None:
         a, b, segment = exact
         ends = evaluate_segment(segment, np.array([0.0, 1.0]), method)
         path_frames: tuple[int, ...] = (a, b)
-        paths = tuple(np.stack([viewport.to_pixels(ends[0].contours[i]), viewport.to_pixels(ends[1].contours[i])])
-                      for i in keep)
+        paths = tuple(np.stack([_drawn(viewport, ends[0].contours[i], flips[i]),
+                                _drawn(viewport, ends[1].contours[i], flips[i])]) for i in keep)
         ease = _handles(segment.ease) or STRAIGHT
     else:
         keys = greedy_keyframes(np.concatenate(samples, axis=1), max_error) if samples else [0]
@@ -176,9 +215,25 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                               max_error)
     paint_keys = greedy_keyframes(channels, 1.0)
     pick = np.array(paint_keys)
+    rule, cap, join, miter = _style(shape, shapes[0])
     return VectorRun(shape.name, first, stop, path_frames, paths, closed, ease, tuple(first + k for k in paint_keys),
                      None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
-                     opacity[pick], shape.fill_rule, shape.cap, shape.join, shape.miter_limit, joined)
+                     opacity[pick], rule, cap, join, miter, joined)
+
+
+def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:
+    """The fill rule, caps, joins and miter limit ``shape`` is drawn with at one time: its key's own, else its own."""
+    key = at.key
+    if key is None:
+        return shape.fill_rule, shape.cap, shape.join, shape.miter_limit
+    return (key.fill_rule or shape.fill_rule, key.cap or shape.cap, key.join or shape.join,
+            key.miter_limit or shape.miter_limit)
+
+
+def _drawn(viewport: Viewport, points: Array, flip: bool) -> Array:
+    """A contour ``(N, 2)`` in output pixels, in the order it is drawn (reversed where its key winds so)."""
+    pixels = viewport.to_pixels(points)
+    return pixels[::-1] if flip else pixels
 
 
 def _paint_arrays(paints: list[Paint], scale: float) -> tuple[Array | None, Array | None, Array, Array]:

@@ -94,11 +94,26 @@ def _run(run: VectorRun, total: int, duration: str) -> list[str]:
         lines.append(f'<animate attributeName="visibility" dur="{duration}" fill="freeze" calcMode="discrete" '
                      f'keyTimes="{";".join(_number(t, 9) for t in times)}" values="{";".join(values)}"/>')
     lines.append(_animate("opacity", run.paint_frames, [_number(o, 4) for o in run.opacity], total, duration))
-    shapes = [[p[k] for p in run.paths] for k in range(len(run.path_frames))]
-    d_values = [_d(s, run.closed) for s in shapes]
+    groups = run.stroke_groups() if run.stroke is not None else []
+    if len(groups) <= 1:
+        lines += _path(run, list(range(len(run.paths))), True, groups[0][1] if groups else None, total, duration)
+    else:  # contours growing from a point stroke with their share of the width: the fill, then each stroke
+        lines += _path(run, list(range(len(run.paths))), True, None, total, duration)
+        for members, widths in groups:
+            lines += _path(run, members, False, widths, total, duration)
+    lines.append("</g>")
+    return [line for line in lines if line]
+
+
+def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None, total: int,
+          duration: str) -> list[str]:
+    """One ``<path>`` of the contours ``members``: filled (or not), stroked ``widths (P,)`` wide (``None``: not)."""
+    shapes = [[run.paths[i][k] for i in members] for k in range(len(run.path_frames))]
+    d_values = [_d(s, tuple(run.closed[i] for i in members)) for s in shapes]
     attributes = [f'd="{d_values[0]}"', f'fill-rule="{run.fill_rule}"']
     inner = [_animate("d", run.path_frames, d_values, total, duration, run.ease)]
-    for name, colours in (("fill", run.fill), ("stroke", run.stroke)):
+    for name, colours in (("fill", run.fill if filled else None), ("stroke", run.stroke if widths is not None
+                                                                          else None)):
         if colours is None:
             attributes.append(f'{name}="none"')
             continue
@@ -107,17 +122,15 @@ def _run(run: VectorRun, total: int, duration: str) -> list[str]:
         attributes += [f'{name}="{hexes[0]}"', f'{name}-opacity="{alphas[0]}"']
         inner += [_animate(name, run.paint_frames, hexes, total, duration),
                   _animate(f"{name}-opacity", run.paint_frames, alphas, total, duration)]
-    if run.stroke is not None:
-        widths = [_number(w, 4) for w in run.width]
-        attributes += [f'stroke-width="{widths[0]}"', f'stroke-linecap="{run.cap}"',
+    if widths is not None and run.stroke is not None:
+        numbers = [_number(w, 4) for w in widths]
+        attributes += [f'stroke-width="{numbers[0]}"', f'stroke-linecap="{run.cap}"',
                        f'stroke-linejoin="{run.join}"', f'stroke-miterlimit="{_number(run.miter_limit, 4)}"']
-        inner.append(_animate("stroke-width", run.paint_frames, widths, total, duration))
+        inner.append(_animate("stroke-width", run.paint_frames, numbers, total, duration))
     inner = [line for line in inner if line]
-    lines.append("<path " + " ".join(attributes) + ("/>" if not inner else ">"))
-    if inner:
-        lines += inner + ["</path>"]
-    lines.append("</g>")
-    return [line for line in lines if line]
+    if not inner:
+        return ["<path " + " ".join(attributes) + "/>"]
+    return ["<path " + " ".join(attributes) + ">", *inner, "</path>"]
 
 
 def _static_opacity(run: VectorRun) -> str:

@@ -107,25 +107,37 @@ def _scalar(prop: dict[str, Any]) -> dict[str, Any]:
 
 
 def _layer(run: VectorRun, index: int, frames: int) -> dict[str, Any]:
-    handles = run.ease
-    items: list[dict[str, Any]] = [_path(run.path_frames, p, shut, handles, i)
-                                   for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
-    linear = STRAIGHT
-    if run.stroke is not None:
-        colour, alpha = _colour_prop(run.paint_frames, run.stroke)
-        width = _scalar(_animated(run.paint_frames, [[round(float(w), 4)] for w in run.width], linear))
-        items.append({"ty": "st", "nm": "stroke", "c": colour, "o": alpha, "w": width, "lc": _CAPS[run.cap],
-                      "lj": _JOINS[run.join], "ml": run.miter_limit})
-    if run.fill is not None:
-        colour, alpha = _colour_prop(run.paint_frames, run.fill)
-        items.append({"ty": "fl", "nm": "fill", "c": colour, "o": alpha, "r": _FILL_RULES[run.fill_rule]})
-    items.append({"ty": "tr", **_transform(_static(100))})
-    opacity = _scalar(_animated(run.paint_frames, [[v] for v in _percent(run.opacity)], linear))
+    paths = [_path(run.path_frames, p, shut, run.ease, i) for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
+    groups = run.stroke_groups() if run.stroke is not None else []
+    shapes: list[dict[str, Any]] = []
+    if len(groups) == 1:  # one group: the paths, the stroke above the fill
+        items = [*paths, _stroke(run, groups[0][1]), *_fill(run), {"ty": "tr", **_transform(_static(100))}]
+        shapes.append({"ty": "gr", "nm": run.element, "it": items})
+    else:  # contours growing from a point stroke with their share of the width: strokes apart, above the fill
+        for members, widths in groups:
+            items = [*(paths[i] for i in members), _stroke(run, widths), {"ty": "tr", **_transform(_static(100))}]
+            shapes.append({"ty": "gr", "nm": f"{run.element} stroke", "it": items})
+        shapes.append({"ty": "gr", "nm": run.element,
+                       "it": [*paths, *_fill(run), {"ty": "tr", **_transform(_static(100))}]})
+    opacity = _scalar(_animated(run.paint_frames, [[v] for v in _percent(run.opacity)], STRAIGHT))
     return {"ddd": 0, "ind": index, "ty": 4, "nm": run.element, "sr": 1, "ks": _transform(opacity), "ao": 0,
             "ip": run.first - _EARLY_IN if run.first > 0 else 0,
             "op": run.stop - _EARLY_OUT if run.stop < frames else frames,
-            "st": 0, "bm": 0,
-            "shapes": [{"ty": "gr", "nm": run.element, "it": items}]}
+            "st": 0, "bm": 0, "shapes": shapes}
+
+
+def _stroke(run: VectorRun, widths: Array) -> dict[str, Any]:
+    colour, alpha = _colour_prop(run.paint_frames, run.stroke)  # type: ignore[arg-type]
+    width = _scalar(_animated(run.paint_frames, [[round(float(w), 4)] for w in widths], STRAIGHT))
+    return {"ty": "st", "nm": "stroke", "c": colour, "o": alpha, "w": width, "lc": _CAPS[run.cap],
+            "lj": _JOINS[run.join], "ml": run.miter_limit}
+
+
+def _fill(run: VectorRun) -> list[dict[str, Any]]:
+    if run.fill is None:
+        return []
+    colour, alpha = _colour_prop(run.paint_frames, run.fill)
+    return [{"ty": "fl", "nm": "fill", "c": colour, "o": alpha, "r": _FILL_RULES[run.fill_rule]}]
 
 
 def _background(clip: VectorClip, index: int) -> dict[str, Any]:

@@ -42,7 +42,8 @@ class VectorRun:
     ``paint_frames (P,)`` with ``fill``/``stroke (P, 4)`` straight RGBA in [0, 1] (``None``: never
     drawn), ``width (P,)`` pixels, ``opacity (P,)``, keyed straight. ``exact_frames``: every
     contour's exact pixels at every frame of the run, side by side, ``(stop - first, sum L_i, 2)``,
-    kept for measuring.
+    kept for measuring. ``contour_widths (P, C)``: each contour's stroke width where some contour grows
+    from (or shrinks to) a point and is stroked with its share of the width (``None``: all ``width``).
     """
 
     element: str
@@ -62,6 +63,23 @@ class VectorRun:
     join: str
     miter_limit: float
     exact_frames: Array
+    contour_widths: Array | None = None
+
+    def stroke_groups(self) -> list[tuple[list[int], Array]]:
+        """The contours stroked alike and their width at each paint keyframe: ``[(contour indices, (P,))]``
+        (one group of all unless some contour grows from a point with its share of the width)."""
+        if self.contour_widths is None:
+            return [(list(range(len(self.paths))), self.width)]
+        groups: list[tuple[list[int], Array]] = []
+        for index in range(len(self.paths)):
+            column = self.contour_widths[:, index]
+            for members, widths in groups:
+                if np.array_equal(widths, column):
+                    members.append(index)
+                    break
+            else:
+                groups.append(([index], column))
+        return groups
 
 
 @dataclass(frozen=True)

@@ -12,13 +12,14 @@ every other run is baked within ``max_error`` pixels; paint within 1/255 (width 
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..core.keyframes import greedy_keyframes, paint_channels
-from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, segment_method
+from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
 from ..encode.vector_data import EASE_HANDLES, STRAIGHT, Handles, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Scene, Shape
@@ -171,7 +172,7 @@ def _handles(ease: object) -> Handles | None:
 
 
 def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offset: int,
-            count: int) -> ShapeAt | None:
+            count: int) -> tuple[ShapeAt, list[Array]] | None:
     """The segment's second key, when the run ends because that key is drawn at clip frame ``stop`` by
     the next segment's run: then the run's keyframes go on to it, so a player moving between frames
     ``stop - 1`` and ``stop`` moves towards the key rather than holding still."""
@@ -182,27 +183,33 @@ def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offs
     if abs(at - stop) > _ON_FRAME or segment + 1 >= len(track.segments):
         return None
     end = evaluate_segment(seg, np.array([1.0]), method)[0]
-    return end if end.fade is None and all(np.all(np.isfinite(c)) for c in end.contours) else None
+    points = [p[0] for p in pair_paths(seg, np.array([1.0]), method)]  # every pair's, growing ones too
+    shares = tuple(0.0 if p.source[1] is None else 1.0 for p in seg.pairs)  # one shrunk to a point: no stroke
+    end = replace(end, widths=shares)
+    return (end, points) if end.fade is None and all(np.all(np.isfinite(p)) for p in points) else None
 
 
 def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: Viewport,
          exact: tuple[int, int, Segment] | None, method: str, max_error: float,
-         ending: ShapeAt | None = None) -> VectorRun:
+         ending: tuple[ShapeAt, list[Array]] | None = None) -> VectorRun:
     keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
     flips = shapes[0].reversed or (False,) * len(shapes[0].contours)
     samples = [np.stack([_drawn(viewport, at.contours[i], flips[i]) for at in shapes]) for i in keep]  # (F, L_i, 2)
     joined = np.concatenate(samples, axis=1) if samples else np.zeros((len(shapes), 0, 2))
-    if ending is not None:  # the key at frame ``stop`` closes the run's keyframes (not drawn by it)
-        samples = [np.concatenate([s, _drawn(viewport, ending.contours[i], flips[i])[None]])
+    every_pair = exact is not None and len(shapes[0].contours) == len(exact[2].pairs)
+    if ending is not None and len(shapes[0].contours) == len(ending[1]):
+        # the key at frame ``stop`` closes the run's keyframes (not drawn by it)
+        end_shape, end_points = ending
+        samples = [np.concatenate([s, _drawn(viewport, end_points[i], flips[i])[None]])
                    for s, i in zip(samples, keep)]
-        shapes = [*shapes, ending]
+        shapes = [*shapes, end_shape]
     closed = tuple(shapes[0].closed[i] for i in keep)
-    if exact is not None:
+    if exact is not None and every_pair:
         a, b, segment = exact
-        ends = evaluate_segment(segment, np.array([0.0, 1.0]), method)
+        ends = pair_paths(segment, np.array([0.0, 1.0]), method)  # every pair, growing ones too: (2, L_i, 2)
         path_frames: tuple[int, ...] = (a, b)
-        paths = tuple(np.stack([_drawn(viewport, ends[0].contours[i], flips[i]),
-                                _drawn(viewport, ends[1].contours[i], flips[i])]) for i in keep)
+        paths = tuple(np.stack([_drawn(viewport, ends[i][0], flips[i]), _drawn(viewport, ends[i][1], flips[i])])
+                      for i in keep)
         ease = _handles(segment.ease) or STRAIGHT
     else:
         keys = greedy_keyframes(np.concatenate(samples, axis=1), max_error) if samples else [0]
@@ -213,12 +220,18 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
     fill, stroke, width, opacity = _paint_arrays([at.paint for at in shapes], scale)
     channels = paint_channels(_or_clear(fill, len(shapes)), _or_clear(stroke, len(shapes)), width, opacity,
                               max_error)
+    shares = np.array([[at.widths[i] if at.widths else 1.0 for i in keep] for at in shapes]).reshape(len(shapes), -1)
+    contour_widths = None
+    if stroke is not None and np.any(shares != 1.0):
+        contour_widths = width[:, None] * shares  # (F, C)
+        channels = np.concatenate([channels, contour_widths[:, :, None] / max_error], axis=1)
     paint_keys = greedy_keyframes(channels, 1.0)
     pick = np.array(paint_keys)
     rule, cap, join, miter = _style(shape, shapes[0])
     return VectorRun(shape.name, first, stop, path_frames, paths, closed, ease, tuple(first + k for k in paint_keys),
                      None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
-                     opacity[pick], rule, cap, join, miter, joined)
+                     opacity[pick], rule, cap, join, miter, joined,
+                     None if contour_widths is None else contour_widths[pick])
 
 
 def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:

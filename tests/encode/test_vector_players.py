@@ -34,7 +34,10 @@ ICON_PAIRS = [("mdi/alpha-a.svg", "mdi/alpha-b.svg"),  # holes
               ("twemoji/1f600.svg", "twemoji/1f60e.svg"),  # several elements, their own colours
               ("heroicons/heart.svg", "heroicons/star.svg"),
               ("bootstrap/emoji-smile.svg", "bootstrap/sun-fill.svg"),
-              ("tabler/letter-a.svg", "tabler/heart.svg")]
+              ("tabler/letter-a.svg", "tabler/heart.svg"),
+              ("twemoji/1f4c4.svg", "twemoji/1f69a.svg"),  # a page becomes a truck: the paint order switches
+              ("heroicons/check-circle.svg", "octicons/sun-24.svg"),  # even-odd, pieces that appear
+              ("simple-icons/github.svg", "lucide/apple.svg")]
 PAINT = """size = [480, 270]
 fps = 12
 view = [0, 0, 16, 9]

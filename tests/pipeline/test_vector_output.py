@@ -300,3 +300,34 @@ def test_a_reel_to_a_vector_file_is_a_usage_error(tmp_path: Path, suffix: str) -
     done = run_module("reel", scene_path, "-o", tmp_path / f"reel{suffix}", "-q", cwd=tmp_path)
     assert done.returncode == 2 and "reel" in done.stderr and len(done.stderr.strip().splitlines()) == 1
     assert not (tmp_path / f"reel{suffix}").exists()
+
+
+def _two_squares(folder: Path, first: str, second: str, x: float) -> Path:
+    squares = {"a": f'<rect id="a" x="{x}" y="4" width="2" height="2" fill="#ff0000"/>',
+               "b": '<rect id="b" x="8.5" y="4" width="2" height="2" fill="#0000ff"/>'}
+    path = folder / f"{first}{second}{x}.svg"
+    path.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 20 10">{squares[first]}{squares[second]}'
+                    "</svg>")
+    return path
+
+
+def test_layers_split_and_reorder_where_the_paint_order_switches(tmp_path: Path) -> None:
+    """Square a passes over the still square b: under it in the first drawing, over it in the second; the
+    order switches at t = 21/32 (tests/scenefile/test_key_frames.py). Each layer keeps one order: b's
+    layer is above a's before the switch, below after it."""
+    scene = tr.load_scene([_two_squares(tmp_path, "a", "b", 4), _two_squares(tmp_path, "b", "a", 14)])
+    document = json.loads(tr.write(scene, tmp_path / "swap.json").read_text())
+    fps, frames = document["fr"], document["op"]
+    switch = math.ceil(21 / 32 * fps * 1.0 - 1e-9)  # the first frame at or after the switch (1 s segment)
+    layers = _shape_layers(document)  # first on top
+
+    def top_at(frame: int) -> str:
+        shown = [layer["nm"] for layer in layers if layer["ip"] <= frame < layer["op"]]
+        return shown[0]
+
+    assert top_at(0) == "b" and top_at(switch - 1) == "b"
+    assert top_at(switch) == "a" and top_at(frames - 1) == "a"
+    svg = tr.write(scene, tmp_path / "swap.svg").read_text()
+    ids = re.findall(r'<g id="([ab])-(\d+)"', svg)  # in paint order, first painted first
+    assert [name for name, start in ids if int(start) < switch] == ["a", "b"]
+    assert [name for name, start in ids if int(start) >= switch] == ["b", "a"]

@@ -331,3 +331,26 @@ def test_layers_split_and_reorder_where_the_paint_order_switches(tmp_path: Path)
     ids = re.findall(r'<g id="([ab])-(\d+)"', svg)  # in paint order, first painted first
     assert [name for name, start in ids if int(start) < switch] == ["a", "b"]
     assert [name for name, start in ids if int(start) >= switch] == ["b", "a"]
+
+
+def _drawing(folder: Path, name: str, body: str) -> Path:
+    path = folder / name
+    path.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 20 10">{body}</svg>')
+    return path
+
+
+@pytest.mark.parametrize("defs, paint, what", [
+    ('<linearGradient id="g"><stop offset="0" stop-color="#ff0000"/><stop offset="1" stop-color="#0000ff"/>'
+     "</linearGradient>", 'fill="url(#g)"', "gradient"),
+    ('<clipPath id="c"><rect x="0" y="0" width="6" height="10"/></clipPath>', 'fill="#ff0000" clip-path="url(#c)"',
+     "clipped")])
+def test_gradients_and_clip_paths_are_refused_naming_the_element(tmp_path: Path, defs: str, paint: str,
+                                                                  what: str) -> None:
+    first = _drawing(tmp_path, "a.svg", f'<defs>{defs}</defs><rect id="box" x="2" y="2" width="6" height="6" {paint}/>')
+    second = _drawing(tmp_path, "b.svg", f'<defs>{defs}</defs><rect id="box" x="9" y="1" width="8" height="4" '
+                                         f"{paint}/>")
+    scene = tr.load_scene([first, second])
+    for suffix in (".json", ".svg"):
+        with pytest.raises(OptionError, match=f"'box'.*{what}"):
+            tr.write(scene, tmp_path / f"x{suffix}")
+        assert not (tmp_path / f"x{suffix}").exists()

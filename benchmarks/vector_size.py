@@ -99,7 +99,8 @@ def main() -> int:
     parser.add_argument("--quick", action="store_true", help="the shipped scenes only")
     args = parser.parse_args()
     methods = [m for m in args.methods.split(",") if m]
-    subjects: list[tuple[str, tr.Scene]] = [(p.stem, tr.load_scene(p)) for p in sorted((ROOT / "scenes").glob("*.toml"))]
+    subjects: list[tuple[str, tr.Scene]] = [(p.stem, tr.load_scene(p))
+                                            for p in sorted((ROOT / "scenes").glob("*.toml"))]
     shipped = len(subjects)
     if not args.quick:
         subjects += [(f"{a.split('/')[0]}:{Path(a).stem}>{Path(b).stem}", tr.load_scene([ICONS / a, ICONS / b]))

@@ -127,7 +127,8 @@ def chromium_svg_frames(files: list[tuple[Path, list[float], tuple[int, int]]]) 
                              session=session)
                 url = path.resolve().as_uri()
                 browser.send("Page.navigate", {"url": url}, session=session)
-                _wait_for(browser, session, f"location.href === {json.dumps(url)} && document.readyState === 'complete'")
+                _wait_for(browser, session,
+                          f"location.href === {json.dumps(url)} && document.readyState === 'complete'")
                 shots = []
                 for when in times:
                     browser.send("Runtime.evaluate", {"expression": _PAUSE.format(time=repr(float(when))),
@@ -150,8 +151,8 @@ def _wait_for(browser: object, session: str, condition: str, seconds: float = 20
     """Poll the page until the JavaScript ``condition`` holds."""
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
-        reply = browser.send("Runtime.evaluate", {"expression": condition, "returnByValue": True},  # type: ignore[attr-defined]
-                             session=session)
+        reply = browser.send("Runtime.evaluate",  # type: ignore[attr-defined]
+                             {"expression": condition, "returnByValue": True}, session=session)
         if reply.get("result", {}).get("value") is True:
             return
         time.sleep(0.05)

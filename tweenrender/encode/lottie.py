@@ -1,10 +1,12 @@
 """Lottie JSON (bodymovin 5.x, as lottie-web, rlottie, ThorVG and Skottie play it) from a :class:`VectorClip`.
 
-One shape layer per run (an element over the frames of one segment, from ``ip`` to ``op``, about
-half a frame before the run's first frame and after its last), first in the list on top; in it one group: a ``sh`` path per contour (straight edges: in and out tangents
+One shape layer per run (an element over the frames of one segment and one paint order, from
+``ip`` to ``op``, about half a frame before the run's first frame and after its last), first in
+the list on top; in it one group: a ``sh`` path per contour (straight edges: in and out tangents
 zero; holes are sibling paths), the stroke (``st``) above the fill (``fl``, ``r`` 1 nonzero,
-2 even-odd), and the group's transform. The layer's opacity is the paint's, so fill and stroke
-fade together as one picture. A full-size rectangle layer at the bottom is the background.
+2 even-odd), and the group's transform (contours growing from a point: a group per stroke width
+above one of the fill). The layer's opacity is the paint's, so fill and stroke fade together as
+one picture. A full-size rectangle layer at the bottom is the background.
 """
 
 from __future__ import annotations
@@ -54,7 +56,8 @@ def _static(value: Any) -> dict[str, Any]:
 
 
 def _transform(opacity: dict[str, Any]) -> dict[str, Any]:
-    return {"o": opacity, "r": _static(0), "p": _static([0, 0, 0]), "a": _static([0, 0, 0]), "s": _static([100, 100, 100])}
+    return {"o": opacity, "r": _static(0), "p": _static([0, 0, 0]), "a": _static([0, 0, 0]),
+            "s": _static([100, 100, 100])}
 
 
 def _animated(frames: tuple[int, ...], values: list[Any], handles: Handles) -> dict[str, Any]:

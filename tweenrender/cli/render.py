@@ -18,7 +18,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     from ..core.methods import METHODS
     from ..encode.formats import FORMATS
 
-    p = sub.add_parser("render", help="render a scene, or SVG drawings morphing into each other, to video or PNG")
+    p = sub.add_parser("render", help="render a scene, or SVG drawings morphing into each other, to video, PNG, "
+                                       "Lottie or animated SVG")
     add_scene_argument(p)
     p.add_argument("-o", "--output", metavar="OUT",
                    help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png, "

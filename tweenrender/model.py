@@ -16,7 +16,8 @@ from numpy.typing import NDArray
 
 __all__ = [
     "Points", "Color", "METHODS", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
-    "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching",
+    "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint", "Shape",
+    "Matching",
     "Scene", "frozen_points",
 ]
 
@@ -32,6 +33,7 @@ BALANCES: tuple[str, ...] = ("copies", "spread")
 DEFAULT_BALANCE = "copies"
 """The balance rule of scenes that name none (benchmarks/balance_rules.py measured the two)."""
 EASES: tuple[str, ...] = ("linear", "in", "out", "in-out")
+"""The older easing names; ``core.easing`` reads these and CSS's curves, ``steps`` and ``hold``."""
 COSTS: tuple[str, ...] = ("distance", "sg")
 ALIGNS: tuple[str, ...] = ("none", "centroid")
 EQUAL_COUNTS: tuple[str, ...] = ("drawn", "match")
@@ -84,12 +86,25 @@ class Paint:
 
 
 @dataclass(frozen=True, slots=True)
+class Hint:
+    """A shape hint: ``letter`` (a–z) sits on vertex ``vertex`` of contour ``contour`` of its key
+    (snapped onto the outline when the scene was read); the same letter of the next key is its partner."""
+
+    letter: str
+    contour: int
+    vertex: int
+
+
+@dataclass(frozen=True, slots=True)
 class Key:
     """A keyframe: its time in seconds, its contours, the easing of the segment it starts, its paint.
 
     ``hidden`` marks where an element appearing in the next key grows from (or one
     leaving after the previous key shrinks to): it is interpolated towards, never
-    drawn on its own.
+    drawn on its own. ``ease`` is the easing as written; ``easing`` the parsed one
+    (a ``core.easing`` object; ``None``: parsed from ``ease``), a spacing chart included.
+    ``hints`` are this key's shape hints; ``delay`` the seconds after ``time`` at which
+    the segment starting here starts to move (a stagger or a hold; it still ends on time).
     """
 
     time: float
@@ -97,6 +112,9 @@ class Key:
     ease: str = "linear"
     paint: Paint = field(default_factory=Paint)
     hidden: bool = False
+    easing: object | None = None
+    hints: tuple[Hint, ...] = ()
+    delay: float = 0.0
 
     @property
     def points(self) -> Points:
@@ -182,11 +200,12 @@ class Scene:
     path: Path | None = None
     unmatched: str = "grow"
     balance: str = DEFAULT_BALANCE  # how balancing places copies of a vertex (maths §5.6)
+    end_hold: float = 0.0  # seconds the last keys stay after the last key's time (drawings' --hold)
 
     @property
     def duration(self) -> float:
-        """Seconds from time 0 to the last key of any shape."""
-        return max(shape.keys[-1].time for shape in self.shapes)
+        """Seconds from time 0 to the last key of any shape, and its hold."""
+        return max(shape.keys[-1].time for shape in self.shapes) + self.end_hold
 
     def method_of(self, shape: Shape) -> str:
         return shape.method or self.method

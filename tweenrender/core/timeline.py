@@ -10,7 +10,10 @@ anchor along straight paths. Paint blends in OKLab (:mod:`.paint`).
 
 Frame ``f`` is drawn at ``time = f / fps``; before the first key a shape holds
 its first key, after its last key the last one. A *hidden* key (where an element
-grows from or shrinks to) is reached, never shown.
+grows from or shrinks to) is reached, never shown. A segment's easing (:mod:`.easing`)
+maps its time to how far along the way it is, and may overshoot; a key's ``delay``
+(a stagger, a hold) starts its segment's motion later, still ending on time. Shape
+hints (:mod:`.hints`) pair contours and fix the correspondence at their vertices.
 """
 
 from __future__ import annotations
@@ -25,29 +28,30 @@ from ..model import Contour, Key, Matching, Paint, Points, Shape
 from .contours import anchor, pair_contours
 from .correspond import Correspondence, correspond, correspond_open
 from .balance import spread
+from .easing import LINEAR, Easing, parse_easing
+from .hint_search import correspond_hinted
+from .hints import Link, forced_contour_pairs, segment_links, vertex_links
 from .methods import interpolate
 from .paint import blend_paints
 
-__all__ = ["ease", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
+__all__ = ["easing_of", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
            "evaluate_segment", "pair_paths"]
 
 Array = NDArray[np.float64]
 
 
-def ease(t: Array, kind: str) -> Array:
-    """Reparametrise ``t (T,)`` in [0, 1]: ``linear``, ``in`` (t²), ``out``, ``in-out`` (smoothstep).
+def easing_of(key: Key) -> Easing:
+    """The easing of the segment ``key`` starts: its parsed ``easing``, else its ``ease`` parsed."""
+    if key.easing is not None:
+        return key.easing  # type: ignore[return-value]
+    try:
+        return parse_easing(key.ease)
+    except ValueError as error:
+        raise GeometryError(str(error)) from None
 
-    Every easing maps 0 → 0 and 1 → 1 exactly, so keys are hit exactly.
-    """
-    if kind == "linear":
-        return t
-    if kind == "in":
-        return t * t
-    if kind == "out":
-        return 1.0 - (1.0 - t) ** 2
-    if kind == "in-out":
-        return t * t * (3.0 - 2.0 * t)
-    raise GeometryError(f"unknown easing {kind!r}")
+
+_CLAMPED = ("injective",)
+"""Methods whose weights cannot leave [0, 1]: an overshooting easing is clamped for them."""
 
 
 def frame_count(duration: float, fps: float) -> int:
@@ -84,7 +88,11 @@ class Pair:
 
 @dataclass(frozen=True, slots=True)
 class Segment:
-    """Two consecutive keys in correspondence: their contour pairs, paints and easing."""
+    """Two consecutive keys in correspondence: their contour pairs, paints and easing.
+
+    The motion runs from ``start + delay`` to ``end`` seconds; ``ease`` is the easing as written,
+    ``easing`` the curve; ``links`` the shape hints both keys carry.
+    """
 
     start: float
     end: float
@@ -93,12 +101,20 @@ class Segment:
     joints: tuple[tuple[int, int], ...]  # in balanced vertex indices (one-contour shapes only)
     paints: tuple[Paint, Paint]
     shown: tuple[bool, bool]  # False for a hidden key
+    easing: Easing = LINEAR
+    delay: float = 0.0
+    links: tuple[Link, ...] = ()
+
+    def time_fraction(self, times: Array) -> Array:
+        """How much of the motion's time has passed at ``times (T,)`` seconds: ``(T,)`` in [0, 1]."""
+        begin = self.start + self.delay
+        span = self.end - begin
+        return np.clip((times - begin) / span, 0.0, 1.0)
 
     def local_t(self, times: Array) -> Array:
-        """Eased parameter in [0, 1] of ``times (T,)`` seconds within this segment."""
-        span = self.end - self.start
-        t = np.clip((times - self.start) / span, 0.0, 1.0)
-        return ease(t, self.ease)
+        """Eased parameter of ``times (T,)`` seconds within this segment: 0 and 1 at the keys, and
+        outside [0, 1] between them where the easing overshoots."""
+        return self.easing(self.time_fraction(times))
 
     @property
     def k0(self) -> Points:
@@ -203,6 +219,8 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
     moving = [i for i, p in enumerate(pairs) if p.moving]
+    if method in _CLAMPED:
+        t = np.clip(t, 0.0, 1.0)
     if moving:
         k0 = np.concatenate([pairs[i].k0 for i in moving])
         k1 = np.concatenate([pairs[i].k1 for i in moving])
@@ -222,7 +240,10 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
                 frames[i] = part
     for i, pair in enumerate(pairs):
         if frames[i] is None:
-            frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
+            # growing (shrinking) contours never turn inside out: their scale stops at 0
+            grows, shrinks = pair.source[0] is None, pair.source[1] is None
+            own = np.clip(t, 0.0 if grows else -np.inf, 1.0 if shrinks else np.inf) if not pair.fades else t
+            frames[i] = interpolate(pair.k0, pair.k1, own, "linear")
     return frames  # type: ignore[return-value]
 
 
@@ -231,6 +252,7 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
     pairs = segment.pairs
     frames = pair_paths(segment, t, method)
     closed = tuple(p.closed for p in pairs)
+    t = np.clip(t, 0.0, 1.0)  # paint, fades and visibility do not overshoot
     paints = blend_paints(*segment.paints, t)
     fading = any(p.fades for p in pairs)
     sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
@@ -267,7 +289,8 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
     joints = tuple(shape.joints)  # indices into the current key's vertices
     segments = []
     for before, after in zip(keys, keys[1:]):
-        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched, balance)
+        links = tuple(segment_links(before.hints, after.hints))
+        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched, balance, links)
         balanced_joints: tuple[tuple[int, int], ...] = ()
         if joints and len(pairs) == 1:
             found = pairs[0].correspondence
@@ -279,22 +302,24 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
                 carried = tuple((int(found.pairs[p, 1]), int(found.pairs[q, 1])) for p, q in balanced_joints)
             joints = carried
         segments.append(Segment(before.time, after.time, before.ease, pairs, balanced_joints,
-                                (before.paint, after.paint), (not before.hidden, not after.hidden)))
+                                (before.paint, after.paint), (not before.hidden, not after.hidden),
+                                easing_of(before), before.delay, links))
     return Track(shape.name, tuple(segments), _still(keys[0]))
 
 
 def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str,
-           balance: str = "copies") -> tuple[Pair, ...]:
+           balance: str = "copies", links: tuple[Link, ...] = ()) -> tuple[Pair, ...]:
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
         # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order
         return tuple(Pair(x.points, y.points, x.closed, (len(x.points), len(y.points)), None, (i, i))
                      for i, (x, y) in enumerate(zip(a, b)))
-    links = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b], [c.closed for c in b])
+    partners = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b],
+                             [c.closed for c in b], forced=forced_contour_pairs(links))
     pairs = []
-    for i, j in links:
+    for i, j in partners:
         if i is not None and j is not None:
-            pairs.append(_balanced(a[i], b[j], (i, j), matching, balance))
+            pairs.append(_balanced(a[i], b[j], (i, j), matching, balance, vertex_links(links, (i, j))))
             continue
         # a contour without a partner: it fades, or shrinks to (i) or grows from (j) a point of the other key
         alone, others = (a[i], b) if i is not None else (b[j], a)  # type: ignore[index]
@@ -310,9 +335,16 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
 
 
 def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matching,
-              balance: str = "copies") -> Pair:
+              balance: str = "copies", hinted: list[tuple[int, int]] | None = None) -> Pair:
     closed = a.closed and b.closed
     m, n = len(a.points), len(b.points)
+    if hinted and closed and m >= 2 and n >= 2:
+        found = correspond_hinted(a.points, b.points, hinted, matching)
+        k0, k1 = found.apply(a.points, b.points)
+        if balance == "spread":
+            pinned = [p for p, (i, j) in enumerate(found.pairs.tolist()) if (i, j) in set(hinted)]
+            k0, k1 = spread(k0, k1, fixed=pinned)
+        return Pair(_frozen(k0), _frozen(k1), closed, (m, n), found, source)
     if m == n and matching.equal_counts == "drawn":
         return Pair(a.points, b.points, closed, (m, n), None, source)
     if m < 2 or n < 2:  # a single point: every vertex of the other pairs with it

@@ -40,15 +40,17 @@ _recent: OrderedDict[tuple[int, str | None, tuple[int, int] | None, Color | None
     OrderedDict()
 
 
-def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0) -> Scene:
+def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0,
+               ease: str = "linear", hold: float = 0.0, stagger: float = 0.0) -> Scene:
     """The scene at ``path`` (TOML; JSON by its ``.json`` suffix; one SVG drawing by ``.svg``), validated;
-    or, for a list of SVG files, their drawings morphing one into the next every ``step`` seconds
-    (what ``tweenrender render a.svg b.svg`` renders)."""
+    or, for a list of SVG files, their drawings morphing one into the next (what ``tweenrender render
+    a.svg b.svg`` renders): each shown ``hold`` seconds, then moving for ``step`` seconds under ``ease``,
+    element i of a drawing starting ``i × stagger`` seconds later and arriving on time."""
     from ..scenefile import load_scene as load
 
     if isinstance(path, (str, os.PathLike)):
-        return load(Path(path), step)
-    return load([Path(p) for p in path], step)
+        return load(Path(path), step, ease, hold, stagger)
+    return load([Path(p) for p in path], step, ease, hold, stagger)
 
 
 def frame(scene: Scene, time: float, *, method: str | None = None, size: tuple[int, int] | None = None,

@@ -72,6 +72,22 @@ def seconds(text: str) -> float:
     return value
 
 
+def curve(text: str) -> str:
+    """An easing (``--ease``): a name, ``cubic-bezier(…)`` or ``steps(…)``, checked here, passed on as written."""
+    from ..core.easing import parse_easing
+
+    try:
+        parse_easing(text)
+    except ValueError as error:
+        raise UsageError(f"--ease: {error}") from None
+    return text
+
+
+def pause(flag: str) -> Callable[[str], float]:
+    """Seconds from 0 (``--hold``, ``--stagger``)."""
+    return _ranged(float, "seconds as a number", 0.0, 1e6, flag)
+
+
 def times(text: str) -> list[float]:
     try:
         values = [float(v) for v in text.split(",") if v.strip()]

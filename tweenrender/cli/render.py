@@ -10,7 +10,8 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..model import METHODS
-from .args import check_frame_count, count, fps, max_frames_flag, method, methods, print_path, seconds, size
+from .args import (check_frame_count, count, curve, fps, max_frames_flag, method, methods, pause, print_path, seconds,
+                   size)
 from .matching_flags import add_balance_flag, add_matching_flags
 from .overlay_flags import add_overlay_flags
 
@@ -23,6 +24,13 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="a scene file (.toml, .json), or SVG drawings, one key each")
     p.add_argument("--step", type=seconds, metavar="S", default=1.0,
                    help="seconds between the keys of SVG drawings given on the command line (default 1)")
+    p.add_argument("--ease", type=curve, metavar="CURVE",
+                   help="timing of SVG drawings' moves: linear, in, out, in-out, ease, ease-in, ease-out, "
+                        "ease-in-out, cubic-bezier(x1, y1, x2, y2), steps(n[, jump]) or hold (default linear)")
+    p.add_argument("--hold", type=pause("--hold"), metavar="S",
+                   help="seconds each SVG drawing stays before moving on for --step seconds (default 0)")
+    p.add_argument("--stagger", type=pause("--stagger"), metavar="S",
+                   help="seconds between the starts of a drawing's elements, in paint order; all arrive on time")
     p.add_argument("-o", "--output", metavar="OUT",
                    help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png)")
     p.add_argument("--method", type=method, metavar="M", help=f"one method for every shape: {', '.join(METHODS)}")
@@ -72,7 +80,11 @@ def run(args: argparse.Namespace) -> int:
     target = check_output_name(args.output) if args.output is not None else \
         default_target(args.scene, args.format, compare is not None)
     output_format(target, args.format)  # a name the format cannot be told from is refused before loading
-    scene = load_scene(args.scene if len(args.scene) > 1 else args.scene[0], args.step)
+    timing = {k: v for k, v in (("ease", args.ease), ("hold", args.hold), ("stagger", args.stagger)) if v is not None}
+    if timing and not all(Path(p).suffix.lower() == ".svg" for p in args.scene):
+        raise UsageError(f"--{next(iter(timing))}: applies to SVG drawings given on the command line; "
+                         "a scene file sets ease and stagger itself")
+    scene = load_scene(args.scene if len(args.scene) > 1 else args.scene[0], args.step, **timing)
     frames = pick_frames(args.frames, total_frames(scene, args.fps))
     check_frame_count(len(frames), args.max_frames, args.scene[0])
     bar = ProgressBar(target.name, enabled=False if args.quiet else None)

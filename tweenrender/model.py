@@ -153,6 +153,7 @@ class Shape:
     # keys of equal vertex counts: None follows the scene's [correspondence]; drawings say "match",
     # since the order an SVG editor wrote a contour in is no animator's correspondence
     equal_counts: str | None = None
+    stagger: float = 0.0  # seconds between the starts of the shape's contours in each segment
 
     @property
     def paint(self) -> Paint:

@@ -192,3 +192,29 @@ def test_drawing_hint_far_from_every_element(tmp_path) -> None:
                     '[[drawing]]\ntime = 1\nsvg = "b.svg"\nhints = { q = [50, 50] }\n')
     with pytest.raises(SceneError, match=r"drawing\[0\]\.hints\.q.*found one 40 away"):
         tr.load_scene(path)
+
+
+def test_shape_stagger_starts_contour_i_later(tmp_path) -> None:
+    pieces = [[[0, 0], [2, 0], [2, 2], [0, 2]], [[5, 0], [7, 0], [7, 2], [5, 2]], [[10, 0], [12, 0], [12, 2], [10, 2]]]
+    moved = [[[x, y + 10] for x, y in c] for c in pieces]
+    path = tmp_path / "s.toml"
+    path.write_text(f'[[shape]]\nname = "s"\nmethod = "linear"\nstagger = 0.5\n'
+                    f'[[shape.key]]\ntime = 0\ncontours = {pieces}\n[[shape.key]]\ntime = 2\ncontours = {moved}\n')
+    scene = tr.load_scene(path)
+    for time in np.linspace(0, 2, 33):
+        lows = [float(c[:, 1].min()) for c in tr.outlines(scene, float(time))]
+        for i in range(3):
+            begins = 0.5 * i
+            u = min(max((time - begins) / (2 - begins), 0.0), 1.0)
+            assert lows[i] == pytest.approx(10 * u, abs=1e-9)
+
+
+def test_shape_stagger_must_fit(tmp_path) -> None:
+    pieces = [[[0, 0], [2, 0], [2, 2], [0, 2]], [[5, 0], [7, 0], [7, 2], [5, 2]], [[10, 0], [12, 0], [12, 2], [10, 2]]]
+    path = tmp_path / "s.toml"
+    path.write_text(f'[[shape]]\nname = "s"\nstagger = 1\n'
+                    f'[[shape.key]]\ntime = 0\ncontours = {pieces}\n[[shape.key]]\ntime = 2\ncontours = {pieces}\n')
+    with pytest.raises(SceneError, match=r"s\.toml: shape\[0\]\.stagger \(line 3\): expected stagger × \(elements − 1\) "
+                                         r"shorter than the segment \(2 s\), found 1 × 2 = 2 s \(the segment from "
+                                         r"shape\[0\]\.key\[0\]\)"):
+        tr.load_scene(path)

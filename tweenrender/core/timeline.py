@@ -91,7 +91,8 @@ class Segment:
     """Two consecutive keys in correspondence: their contour pairs, paints and easing.
 
     The motion runs from ``start + delay`` to ``end`` seconds; ``ease`` is the easing as written,
-    ``easing`` the curve; ``links`` the shape hints both keys carry.
+    ``easing`` the curve; ``links`` the shape hints both keys carry. With a ``stagger``, the pair of
+    rank r in :meth:`stagger_order` starts ``r × stagger`` seconds later, still ending on time.
     """
 
     start: float
@@ -104,12 +105,20 @@ class Segment:
     easing: Easing = LINEAR
     delay: float = 0.0
     links: tuple[Link, ...] = ()
+    stagger: float = 0.0
 
-    def time_fraction(self, times: Array) -> Array:
-        """How much of the motion's time has passed at ``times (T,)`` seconds: ``(T,)`` in [0, 1]."""
-        begin = self.start + self.delay
+    def time_fraction(self, times: Array, rank: int = 0) -> Array:
+        """How much of the motion's time has passed at ``times (T,)`` seconds for the pair of stagger rank
+        ``rank``: ``(T,)`` in [0, 1]."""
+        begin = self.start + self.delay + rank * self.stagger
         span = self.end - begin
         return np.clip((times - begin) / span, 0.0, 1.0)
+
+    def stagger_order(self) -> list[int]:
+        """Pair indices in stagger order: the first key's contours in order, then those that appear."""
+        present = sorted((p.source[0], k) for k, p in enumerate(self.pairs) if p.source[0] is not None)
+        arriving = sorted((p.source[1], k) for k, p in enumerate(self.pairs) if p.source[0] is None)
+        return [k for _, k in present] + [k for _, k in arriving]  # type: ignore[misc]
 
     def local_t(self, times: Array) -> Array:
         """Eased parameter of ``times (T,)`` seconds within this segment: 0 and 1 at the keys, and
@@ -184,7 +193,8 @@ class Track:
         for s in np.unique(index):
             segment = self.segments[s]
             picked = np.flatnonzero(index == s)
-            for slot, shape in zip(picked, evaluate_segment(segment, segment.local_t(times[picked]), method)):
+            frames = staggered_paths(segment, times[picked], method) if segment.stagger > 0 else None
+            for slot, shape in zip(picked, evaluate_segment(segment, segment.local_t(times[picked]), method, frames)):
                 out[slot] = shape
         return out
 
@@ -247,10 +257,21 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     return frames  # type: ignore[return-value]
 
 
-def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
-    """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t."""
+def staggered_paths(segment: Segment, times: Array, method: str) -> list[Array]:
+    """Every pair's inbetweens at ``times (T,)`` seconds, each on its own staggered timing: one
+    ``(T, L_i, 2)`` array per pair. A pair's positions come from the whole shape's paths (one
+    centre, one turn) at its own eased parameter."""
+    out: list[Array] = [np.empty(0)] * len(segment.pairs)
+    for rank, k in enumerate(segment.stagger_order()):
+        out[k] = pair_paths(segment, segment.easing(segment.time_fraction(times, rank)), method)[k]
+    return out
+
+
+def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array] | None = None) -> list[ShapeAt]:
+    """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t (``frames``: the pairs'
+    inbetweens already computed, e.g. staggered; the paint follows ``t``)."""
     pairs = segment.pairs
-    frames = pair_paths(segment, t, method)
+    frames = pair_paths(segment, t, method) if frames is None else frames
     closed = tuple(p.closed for p in pairs)
     t = np.clip(t, 0.0, 1.0)  # paint, fades and visibility do not overshoot
     paints = blend_paints(*segment.paints, t)
@@ -303,7 +324,7 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
             joints = carried
         segments.append(Segment(before.time, after.time, before.ease, pairs, balanced_joints,
                                 (before.paint, after.paint), (not before.hidden, not after.hidden),
-                                easing_of(before), before.delay, links))
+                                easing_of(before), before.delay, links, shape.stagger))
     return Track(shape.name, tuple(segments), _still(keys[0]))
 
 

@@ -16,12 +16,15 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from ..core.easing import EASING_FORMS, NAMED, Easing, EasingSyntaxError, parse_easing
-from ..core.hints import SNAP_REACH, HintError, check_links, insert_hints, segment_links, snap_point
+from ..core.contours import pair_contours
+from ..core.hints import (SNAP_REACH, HintError, check_links, forced_contour_pairs, insert_hints, segment_links,
+                          snap_point)
 from ..core.spacing import SpacingError, spacing_chart
 from ..errors import SceneError
 from ..model import Contour, Hint, Key
 
-__all__ = ["read_easing", "read_timing", "read_hints", "pinned", "check_hints", "read_stagger", "check_stagger"]
+__all__ = ["read_easing", "read_timing", "read_hints", "pinned", "check_hints", "read_stagger", "check_stagger",
+           "check_shape_stagger"]
 
 Fail = Callable[[str, str], SceneError]
 _LETTER = re.compile(r"[a-z]")
@@ -146,3 +149,22 @@ def check_stagger(stagger: float, elements: int, start: float, end: float, where
     if elements > 1 and stagger * (elements - 1) >= end - start:
         raise fail(where, f"expected stagger × (elements − 1) shorter than the segment ({end - start:g} s), found "
                           f"{stagger:g} × {elements - 1} = {stagger * (elements - 1):g} s")
+
+
+def check_shape_stagger(keys: Sequence[Key], stagger: float, where: str, where_of: Callable[[int], str],
+                        fail: Fail) -> None:
+    """A shape's stagger spreads its contours over each segment: it must leave every segment time to move."""
+    if stagger <= 0:
+        return
+    for k in range(1, len(keys)):
+        before, after = keys[k - 1], keys[k]
+        a, b = before.contours, after.contours
+        if len(a) == 1 and len(b) == 1:
+            continue
+        links = forced_contour_pairs(segment_links(before.hints, after.hints))
+        count = len(pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b],
+                                  [c.closed for c in b], forced=links))
+        try:
+            check_stagger(stagger, count, before.time + before.delay, after.time, where, fail)
+        except SceneError as error:
+            raise fail(where, f"{error.message} (the segment from {where_of(k - 1)})") from None

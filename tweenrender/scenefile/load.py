@@ -21,7 +21,7 @@ from ..errors import SceneError
 from ..core.easing import LINEAR, Easing, parse_easing
 from ..model import (ALIGNS, BALANCES, CAPS, COSTS, DEFAULT_BALANCE, DEFAULT_FILL, EQUAL_COUNTS, FILL_RULES,
                      JOINS, METHODS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
-from .controls import check_hints, pinned, read_easing, read_hints, read_stagger, read_timing
+from .controls import check_hints, check_shape_stagger, pinned, read_easing, read_hints, read_stagger, read_timing
 from .locate import json_line_of, line_of
 
 __all__ = ["load_scene", "parse_scene", "LIMITS"]
@@ -44,7 +44,8 @@ LIMITS = {
 _TOP = ("title", "size", "fps", "background", "view", "method", "compare", "balance", "correspondence", "unmatched",
         "ease", "stagger", "shape", "drawing")
 _PAINT = ("fill", "stroke", "stroke_width", "opacity")
-_SHAPE = ("name", *_PAINT, "method", "joints", "balance", "fill_rule", "closed", "cap", "join", "unmatched", "key")
+_SHAPE = ("name", *_PAINT, "method", "joints", "balance", "fill_rule", "closed", "cap", "join", "unmatched", "stagger",
+          "key")
 _KEY = ("time", "points", "contours", "ease", "spacing", "hints", *_PAINT)
 _DRAWING = ("time", "svg", "ease", "spacing", "hints", "stagger", "tolerance")
 _SVG = ("svg", "id", "tolerance")
@@ -481,8 +482,12 @@ class _Reader:
             unmatched = self.choice(table["unmatched"], f"{where}.unmatched", UNMATCHED, "rule for unmatched contours")
         balance = self.choice(table["balance"], f"{where}.balance", BALANCES, "balance") \
             if "balance" in table else None
+        stagger = read_stagger(table["stagger"], f"{where}.stagger", self.fail) if "stagger" in table \
+            else self.stagger
+        place = f"{where}.stagger" if "stagger" in table else "stagger"
+        check_shape_stagger(keys, stagger, place, lambda k: f"{where}.key[{k}]", self.fail)
         return Shape(name=name, keys=keys, method=method, joints=joints, fill_rule=fill_rule, cap=cap, join=join,
-                     unmatched=unmatched, balance=balance)
+                     unmatched=unmatched, balance=balance, stagger=stagger)
 
     def paint(self, table: dict[str, Any], where: str, base: Paint) -> Paint:
         """``base`` with the ``fill``, ``stroke``, ``stroke_width`` and ``opacity`` that ``table`` gives."""

@@ -218,3 +218,12 @@ def test_shape_stagger_must_fit(tmp_path) -> None:
                                          r"shorter than the segment \(2 s\), found 1 × 2 = 2 s \(the segment from "
                                          r"shape\[0\]\.key\[0\]\)"):
         tr.load_scene(path)
+
+
+def test_check_json_carries_spacing_and_snapped_hints(tmp_path) -> None:
+    from tweenrender.reports.check_report import scene_dict
+
+    scene = tr.load_scene(_scene(tmp_path, "spacing = [0, 0.3, 1]\nhints = { a = [2, 0.05] }", "hints = { a = [12, 0] }"))
+    key = scene_dict(scene, (0, 0, 1, 1))["shapes"][0]["keys"][0]
+    assert key["ease"] == "spacing" and key["spacing"] == [0, 0.3, 1]
+    assert key["hints"] == {"a": [2.0, 0.0]}

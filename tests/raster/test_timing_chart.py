@@ -54,3 +54,13 @@ def test_hints_are_drawn_as_dots(cli, tmp_path, command: str) -> None:
         assert code == 0, err
         counts.append(_hint_pixels(iio.imread(target)))
     assert counts[0] == 0 and counts[1] > 100
+
+
+def test_a_hint_path_runs_from_its_point_to_its_partner(tmp_path) -> None:
+    from tweenrender.raster.plots.timing_chart import hint_paths
+
+    scene = _scene(tmp_path, "", hints=True)
+    segment = build_track(scene.shapes[0], scene.matching).segments[0]
+    (path,) = hint_paths(segment, "linear", samples=5)
+    # linear paths: a straight line from (2, 0) on the first key to (12, 2) on the second, evenly
+    assert path == pytest.approx(np.column_stack([np.linspace(2, 12, 5), np.linspace(0, 2, 5)]), abs=1e-12)

@@ -121,7 +121,7 @@ def draw_sheet(scene: Scene, tracks: Sequence[Track], methods: Sequence[str], vi
 
         marks = Painter(raster, 1.0)
         draw_timing_charts(marks, port, (0.0, 0.0), scene, tracks, scene.fps)
-        draw_hint_marks(marks, port, (0.0, 0.0), scene.shapes)
+        draw_hint_marks(marks, port, (0.0, 0.0), scene.shapes, tracks, method)
         canvas.restore()
     return raster.rgba().copy()
 

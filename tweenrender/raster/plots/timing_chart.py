@@ -14,12 +14,12 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ...core.timeline import Segment, Track
+from ...core.timeline import Segment, Track, pair_paths
 from ...model import Color, Scene, Shape
 from ..painter import Painter
 from ..view import Viewport
 
-__all__ = ["chart_ticks", "draw_timing_charts", "draw_hint_marks"]
+__all__ = ["chart_ticks", "draw_timing_charts", "draw_hint_marks", "hint_paths"]
 
 _CHART: Color = (200, 60, 40, 255)
 _HINT: Color = (120, 40, 170, 255)
@@ -62,10 +62,36 @@ def draw_timing_charts(painter: Painter, port: Viewport, offset: tuple[float, fl
                 painter.line(at - half * across, at + half * across, _CHART, 1.3 if key else 0.8, 1.0 if key else 0.8)
 
 
-def draw_hint_marks(painter: Painter, port: Viewport, offset: tuple[float, float], shapes: Sequence[Shape]) -> None:
-    """Every shown key's hints as lettered dots on their vertices."""
+def hint_paths(segment: Segment, method: str, samples: int = 65) -> list[NDArray[np.float64]]:
+    """The path each hinted point travels through ``segment`` under ``method``: one ``(samples, 2)`` array
+    per hint (world units), from its point on the first key to its partner on the second."""
+    t = np.linspace(0.0, 1.0, samples)
+    out = []
+    frames: list[NDArray[np.float64]] | None = None
+    for link in segment.links:
+        for k, pair in enumerate(segment.pairs):
+            found = pair.correspondence
+            if pair.source != (link.a[0], link.b[0]) or found is None:
+                continue
+            rows = np.flatnonzero((found.pairs[:, 0] == link.a[1]) & (found.pairs[:, 1] == link.b[1]))
+            if len(rows):
+                frames = frames if frames is not None else pair_paths(segment, t, method)
+                out.append(frames[k][:, int(rows[0])])
+    return out
+
+
+def draw_hint_marks(painter: Painter, port: Viewport, offset: tuple[float, float], shapes: Sequence[Shape],
+                    tracks: Sequence[Track] = (), method: str = "linear") -> None:
+    """Every shown key's hints as lettered dots on their vertices, and (given ``tracks``) the paths the
+    hinted points travel under ``method``."""
     s = painter.scale
     shift = np.array(offset)
+    for track in tracks:
+        for segment in track.segments:
+            for path in hint_paths(segment, method):
+                pixels = port.to_pixels(path) + shift
+                for a, b in zip(pixels[:-1], pixels[1:]):
+                    painter.line(a, b, _HINT, 1.2, 0.6)
     for shape in shapes:
         for key in shape.keys:
             if key.hidden:

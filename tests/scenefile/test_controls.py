@@ -227,3 +227,46 @@ def test_check_json_carries_spacing_and_snapped_hints(tmp_path) -> None:
     key = scene_dict(scene, (0, 0, 1, 1))["shapes"][0]["keys"][0]
     assert key["ease"] == "spacing" and key["spacing"] == [0, 0.3, 1]
     assert key["hints"] == {"a": [2.0, 0.0]}
+
+
+def test_json_scenes_take_the_controls_and_name_the_line(tmp_path) -> None:
+    import json
+
+    data = {"ease": "ease-out", "shape": [{"name": "s", "key": [
+        {"time": 0, "points": SQ, "hints": {"a": [2, 0]}, "spacing": [0, 0.5, 1]},
+        {"time": 2, "points": SQ2, "hints": {"a": [13, 0]}, "ease": "steps(3)"}]}]}
+    path = tmp_path / "s.json"
+    path.write_text(json.dumps(data, indent=1))
+    scene = tr.load_scene(path)
+    keys = scene.shapes[0].keys
+    assert keys[0].ease == "spacing" and keys[1].ease == "steps(3)"
+    data["shape"][0]["key"][1]["hints"] = {"a": [13, 3]}
+    path.write_text(json.dumps(data, indent=1))
+    with pytest.raises(SceneError, match=r"s\.json: shape\[0\]\.key\[1\]\.hints\.a \(line \d+\): expected a point "
+                                         r"within 0\.113137"):
+        tr.load_scene(path)
+
+
+def test_drawing_hints_out_of_order(tmp_path) -> None:
+    box = '<rect x="10" y="10" width="80" height="80"/>'
+    _svg(tmp_path / "a.svg", box)
+    _svg(tmp_path / "b.svg", box)
+    path = tmp_path / "d.toml"
+    path.write_text('[[drawing]]\ntime = 0\nsvg = "a.svg"\nhints = { a = [10, 10], b = [90, 10], c = [90, 90] }\n'
+                    '[[drawing]]\ntime = 1\nsvg = "b.svg"\nhints = { a = [10, 10], b = [90, 90], c = [90, 10] }\n')
+    with pytest.raises(SceneError, match=r"d\.toml: drawing\[1\]\.hints\.[abc]: expected hints [abc] and [abc] in the "
+                                         r"same cyclic order on both keys' outlines \(counter-clockwise\), found them "
+                                         r"swapped"):
+        tr.load_scene(path)
+
+
+def test_drawing_letter_on_neither_neighbour(tmp_path) -> None:
+    box = '<rect x="10" y="10" width="80" height="80"/>'
+    _svg(tmp_path / "a.svg", box)
+    _svg(tmp_path / "b.svg", box)
+    path = tmp_path / "d.toml"
+    path.write_text('[[drawing]]\ntime = 0\nsvg = "a.svg"\nhints = { a = [10, 10] }\n'
+                    '[[drawing]]\ntime = 1\nsvg = "b.svg"\nhints = { z = [10, 10] }\n')
+    with pytest.raises(SceneError, match=r"drawing\[0\]\.hints\.a: expected hint a on the drawing before or after "
+                                         r"too, found it on neither"):
+        tr.load_scene(path)

@@ -138,3 +138,59 @@ def test_hints_make_equal_counts_search(tmp_path) -> None:
     start, end = tr.outlines(scene, 0.0)[0], tr.outlines(scene, 1.0)[0]
     rows = np.flatnonzero(np.all(start == (0, 0), axis=1))
     assert any(end[r].tolist() == [4, 4] for r in rows)  # drawn order would keep it at (0, 0)
+
+
+def _every_open_path(m: int, n: int) -> list[np.ndarray]:
+    """Every monotone path from (0, 0) to (m - 1, n - 1)."""
+    out = []
+
+    def walk(i: int, j: int, path: list[tuple[int, int]]) -> None:
+        if (i, j) == (m - 1, n - 1):
+            out.append(np.array(path))
+            return
+        for a, b in ((0, 1), (1, 1), (1, 0)):
+            if i + a < m and j + b < n:
+                walk(i + a, j + b, path + [(i + a, j + b)])
+
+    walk(0, 0, [(0, 0)])
+    return out
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_hinted_open_search_is_the_brute_force_minimum(seed: int) -> None:
+    from tweenrender.core.correspond import is_open_monotone
+    from tweenrender.core.hint_search import correspond_hinted_open
+
+    rng = np.random.default_rng(100 + seed)
+    m, n = int(rng.integers(3, 7)), int(rng.integers(3, 7))
+    a, b = rng.normal(size=(m, 2)), rng.normal(size=(n, 2))
+    k = int(rng.integers(1, 3))
+    ia = sorted(rng.choice(m, k, replace=False).tolist())
+    backwards = bool(seed % 2)
+    jb = sorted(rng.choice(n, k, replace=False).tolist(), reverse=backwards)
+    hinted = list(zip(ia, jb))
+    found = correspond_hinted_open(a, b, hinted, Matching())
+    assert is_open_monotone(found.pairs, m, n, found.reversed)
+    candidates = []
+    for reverse in (False, True):
+        for path in _every_open_path(m, n):
+            pairs = path.copy()
+            if reverse:
+                pairs[:, 1] = n - 1 - pairs[:, 1]
+            if all(h in {tuple(p) for p in pairs.tolist()} for h in hinted):
+                candidates.append(path_work(a, b, pairs, Matching(), closed=False))
+    assert found.work == pytest.approx(min(candidates), rel=1e-9, abs=1e-12)
+
+
+def test_open_strokes_take_hints(tmp_path) -> None:
+    stroke0 = [[0, 0], [4, 0], [8, 0]]
+    stroke1 = [[0, 4], [2, 4], [4, 4], [6, 4], [8, 4]]
+    text = ('[[shape]]\nname = "s"\nmethod = "linear"\nclosed = false\nstroke = "#000"\n'
+            f'[[shape.key]]\ntime = 0\npoints = {stroke0}\nhints = {{ a = [4, 0] }}\n'
+            f'[[shape.key]]\ntime = 1\npoints = {stroke1}\nhints = {{ a = [2, 4] }}\n')
+    path = tmp_path / "open.toml"
+    path.write_text(text)
+    scene = tr.load_scene(path)
+    start, end = tr.outlines(scene, 0.0)[0], tr.outlines(scene, 1.0)[0]
+    rows = np.flatnonzero(np.all(start == (4, 0), axis=1))
+    assert any(end[r].tolist() == [2, 4] for r in rows)

@@ -22,11 +22,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import GeometryError
+from dataclasses import replace
+
 from ..model import Matching, Points
 from .correspond import (Correspondence, _aligned, _aligned_work, _as_polygon, _check_matching, _kernels,
                          _winds_opposite)
 
-__all__ = ["correspond_hinted"]
+__all__ = ["correspond_hinted", "correspond_hinted_open"]
 
 _DEFAULT = Matching()
 
@@ -62,6 +64,42 @@ def correspond_hinted(a: Points, b: Points, hinted: Sequence[tuple[int, int]],
     pairs = np.column_stack([path[:, 0], walk[path[:, 1]]]).astype(np.intp)
     pairs.flags.writeable = False
     return Correspondence(pairs, _aligned_work(a, b, pairs, matching), backwards)
+
+
+def correspond_hinted_open(a: Points, b: Points, hinted: Sequence[tuple[int, int]],
+                           matching: Matching = _DEFAULT) -> Correspondence:
+    """The least-work correspondence of open curves ``a (m, 2)`` and ``b (n, 2)`` (ends with ends, maths
+    §5.7) whose nodes include every hinted pair ``(i, j)``: pieces from one end through the hints to
+    the other. b is walked forwards or backwards as the hints' order says (both tried for one hint);
+    the work is the distance after ``matching.align``, as :func:`.correspond.correspond_open`'s."""
+    _check_matching(matching)
+    matching = replace(matching, cost="distance")
+    a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
+    m, n = len(a), len(b)
+    ends = sorted((int(i), int(j)) for i, j in hinted)
+    kernels = _kernels()
+    best: Correspondence | None = None
+    for backwards in (False, True):
+        walk = np.arange(n)[::-1] if backwards else np.arange(n)
+        position = [(i, (n - 1 - j) if backwards else j) for i, j in ends]
+        stops = [(0, 0), *position, (m - 1, n - 1)]
+        if any(q[0] < p[0] or q[1] < p[1] for p, q in zip(stops, stops[1:])):
+            continue  # the hints do not run this way along b
+        w = kernels.distance_matrix(a, np.ascontiguousarray(b[walk]))
+        nodes = []
+        for (i0, j0), (i1, j1) in zip(stops, stops[1:]):
+            rows, cols = np.arange(i0, i1 + 1), np.arange(j0, j1 + 1)
+            _, local = kernels.open_search(np.ascontiguousarray(w[np.ix_(rows, cols)]))
+            nodes.append(np.column_stack([rows[local[:, 0]], cols[local[:, 1]]]))
+        path = np.concatenate([piece[:-1] for piece in nodes] + [nodes[-1][-1:]])
+        pairs = np.column_stack([path[:, 0], walk[path[:, 1]]]).astype(np.intp)
+        pairs.flags.writeable = False
+        found = Correspondence(pairs, _aligned_work(a, b, pairs, matching), backwards)
+        if best is None or found.work < best.work - 1e-12 * max(1.0, abs(best.work)):
+            best = found
+    if best is None:
+        raise GeometryError("expected hinted pairs in the same order along both strokes")
+    return best
 
 
 def _pieces(ends: list[tuple[int, int]], m: int, n: int) -> list[tuple[NDArray[np.intp], NDArray[np.intp]]]:

@@ -29,7 +29,7 @@ from .contours import anchor, pair_contours
 from .correspond import Correspondence, correspond, correspond_open
 from .balance import spread
 from .easing import LINEAR, Easing, parse_easing
-from .hint_search import correspond_hinted
+from .hint_search import correspond_hinted, correspond_hinted_open
 from .hints import Link, forced_contour_pairs, segment_links, vertex_links
 from .methods import interpolate
 from .paint import blend_paints
@@ -359,10 +359,11 @@ def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matchin
               balance: str = "copies", hinted: list[tuple[int, int]] | None = None) -> Pair:
     closed = a.closed and b.closed
     m, n = len(a.points), len(b.points)
-    if hinted and closed and m >= 2 and n >= 2:
-        found = correspond_hinted(a.points, b.points, hinted, matching)
+    if hinted and m >= 2 and n >= 2:
+        search = correspond_hinted if closed else correspond_hinted_open
+        found = search(a.points, b.points, hinted, matching)
         k0, k1 = found.apply(a.points, b.points)
-        if balance == "spread":
+        if balance == "spread" and closed:
             pinned = [p for p, (i, j) in enumerate(found.pairs.tolist()) if (i, j) in set(hinted)]
             k0, k1 = spread(k0, k1, fixed=pinned)
         return Pair(_frozen(k0), _frozen(k1), closed, (m, n), found, source)

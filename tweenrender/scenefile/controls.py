@@ -105,8 +105,6 @@ def pinned(contours: Sequence[Contour], hints: dict[str, tuple[float, float]], w
             raise fail(f"{where}.{letter}", f"expected a point within {reach / scale:.6g} of the key's outline "
                                             f"(2 % of its bounding box's diagonal), found one "
                                             f"{snap.distance / scale:.6g} away")
-        if not closed[snap.contour]:
-            raise fail(f"{where}.{letter}", "expected a hint on a closed outline, found it on an open stroke")
         snaps[letter] = snap
     try:
         new, placed, moved = insert_hints(points, closed, snaps)

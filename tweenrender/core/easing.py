@@ -32,7 +32,7 @@ from numpy.typing import ArrayLike, NDArray
 from .spacing import Spacing
 
 __all__ = ["Easing", "CubicBezier", "Steps", "Hold", "Linear", "EasingSyntaxError", "parse_easing", "LINEAR",
-           "NAMED", "JUMPS", "EASING_FORMS", "eased"]
+           "NAMED", "JUMPS", "EASING_FORMS"]
 
 Array = NDArray[np.float64]
 
@@ -218,11 +218,6 @@ def parse_easing(text: str) -> Easing:
                                     f"found {count}")
         return Steps(count, jump, text=word)
     raise EasingSyntaxError(f"unknown easing {text!r}; expected one of {', '.join(EASING_FORMS)}")
-
-
-def eased(easing: Easing, u: ArrayLike) -> Array:
-    """``easing`` at time fractions ``u (T,)`` (clipped to [0, 1]): the fractions of the way ``(T,)``."""
-    return easing(np.clip(_times(u), 0.0, 1.0))
 
 
 def _times(u: ArrayLike) -> Array:

@@ -240,3 +240,26 @@ def test_overshoot_moves_the_shape_past_the_keys_and_a_growing_contour_never_inv
             assert not hole or np.ptp(hole[0], axis=0).max() == 0.0
         else:
             assert hole and np.ptp(hole[0], axis=0) == pytest.approx(np.full(2, 4 * t), rel=1e-9)
+
+
+@pytest.mark.parametrize("method", ["linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "auto"])
+def test_every_method_follows_an_overshoot_without_nan(tmp_path, method: str) -> None:
+    from pathlib import Path
+
+    walk = (Path(__file__).parents[2] / "scenes" / "walk.toml").read_text()
+    path = tmp_path / "walk.toml"
+    path.write_text('ease = "cubic-bezier(0.6, -0.8, 0.4, 1.8)"\n' + walk)
+    scene = tr.load_scene(path)
+    for time in np.linspace(0, scene.duration, 25):
+        for contour in tr.outlines(scene, float(time), method=method):
+            assert np.all(np.isfinite(contour))
+    # the first segment, where its curve dips lowest (t < 0): the shape has moved back past its first key
+    keys = scene.shapes[0].keys
+    u = np.linspace(0, 1, 2001)
+    low = u[np.argmin(CubicBezier(0.6, -0.8, 0.4, 1.8)(u))]
+    time = keys[0].time + low * (keys[1].time - keys[0].time)
+    if method == "linear":
+        t = float(CubicBezier(0.6, -0.8, 0.4, 1.8)(np.array([low]))[0])
+        assert t < -0.1
+        want = keys[0].points + t * (keys[1].points - keys[0].points)
+        assert tr.outlines(scene, time, method=method)[0] == pytest.approx(want, abs=1e-9)

@@ -194,3 +194,18 @@ def test_open_strokes_take_hints(tmp_path) -> None:
     start, end = tr.outlines(scene, 0.0)[0], tr.outlines(scene, 1.0)[0]
     rows = np.flatnonzero(np.all(start == (4, 0), axis=1))
     assert any(end[r].tolist() == [2, 4] for r in rows)
+
+
+def test_spread_keeps_a_hinted_copy_on_its_vertex() -> None:
+    from tweenrender.core.balance import spread
+
+    # key a: the corner (4, 0) copied three times (balanced indices 1, 2, 3); key b walks four points there
+    k0 = np.array([[0.0, 0], [4, 0], [4, 0], [4, 0], [4, 4], [0, 4]])
+    k1 = np.array([[0.0, 0], [3, 0], [4, 1], [4, 2], [4, 4], [0, 4]])
+    free, _ = spread(k0, k1)
+    assert free[3].tolist() != [4, 0]  # unpinned, the last copy moves off the corner
+    pinned, _ = spread(k0, k1, fixed=[3])
+    assert pinned[3].tolist() == [4, 0]
+    # the copies before it go onto the half-edge before the corner, in order, none on the corner
+    assert all(p[1] == 0 and 2 <= p[0] < 4 for p in pinned[1:3])
+    assert pinned[1][0] < pinned[2][0]

@@ -50,8 +50,20 @@ def test_timing_flags_are_for_drawings(cli, tmp_path) -> None:
     scene = tmp_path / "s.toml"
     scene.write_text('[[shape]]\nname = "s"\n[[shape.key]]\ntime = 0\npoints = [[0, 0], [1, 0], [0, 1]]\n')
     code, _, err = cli("render", scene, "--stagger", "0.1", "-o", tmp_path / "x.gif")
-    assert code == 2 and err.strip().endswith("--stagger: applies to SVG drawings given on the command line; "
+    assert code == 2 and err.strip().endswith("--stagger: applies to SVG drawings morphing into each other; "
                                               "a scene file sets ease and stagger itself")
     code, _, err = cli("render", *_drawings(tmp_path), "--ease", "steps(0)", "-o", tmp_path / "x.gif")
     assert code == 2 and "--ease: expected n from 1 to 10000 in steps(n), found 0" in err
     assert not (tmp_path / "x.gif").exists()
+
+
+def test_the_library_names_the_keyword(tmp_path) -> None:
+    import pytest
+
+    import tweenrender as tr
+
+    drawings = _drawings(tmp_path)
+    with pytest.raises(tr.OptionError, match=r"^ease=: expected n from 1 to 10000 in steps\(n\), found 0$"):
+        tr.load_scene(drawings, ease="steps(0)")
+    with pytest.raises(tr.OptionError, match=r"^hold=: expected seconds from 0"):
+        tr.load_scene(drawings, hold=-1)

@@ -283,7 +283,8 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
            unmatched: str, hints: Sequence[dict[int, tuple[Hint, ...]]], delays: dict[int, float]) -> Shape:
     first_k, last_k = chain[0][0], chain[-1][0]
     elements = [drawings[k].elements[e] for k, e in chain]
-    out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint, easing=keys[k].easing,
+    out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint, fill_rule=e.fill_rule, cap=e.cap, join=e.join,
+               miter_limit=e.miter_limit, layer=index, clips=e.clips, easing=keys[k].easing,
                hints=hints[k].get(index, ()), delay=delays.get(k, 0.0))
            for (k, index), e in zip(chain, elements)]
     if first_k > 0:  # it appears: it comes from the key before
@@ -299,8 +300,11 @@ def _hidden(element: Element, at: DrawingKey, unmatched: str) -> Key:
     """Where an element comes from or goes to: its centre (``grow``) or itself at opacity 0 (``fade``)."""
     if unmatched == "fade":
         return Key(at.time, element.contours, at.ease, replace(element.paint, opacity=0.0), hidden=True,
-                   easing=at.easing)
+                   fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
+                   clips=element.clips, easing=at.easing)
     centre = _centre(element)
     contours = tuple(Contour(frozen_points(np.broadcast_to(centre, c.points.shape)), c.closed)
                      for c in element.contours)
-    return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True, easing=at.easing)
+    return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True,
+               fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
+               clips=element.clips, easing=at.easing)

@@ -6,7 +6,6 @@ expected and what was found.
 
 from __future__ import annotations
 
-import difflib
 import json
 import math
 import os
@@ -17,10 +16,11 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from ..errors import SceneError
 from ..core.easing import LINEAR, Easing, parse_easing
+from ..core.methods import METHODS, REGISTRY
+from ..errors import SceneError, did_you_mean
 from ..model import (ALIGNS, BALANCES, CAPS, COSTS, DEFAULT_BALANCE, DEFAULT_FILL, EQUAL_COUNTS, FILL_RULES,
-                     JOINS, METHODS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
+                     JOINS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
 from .controls import check_hints, check_shape_stagger, pinned, read_easing, read_hints, read_stagger, read_timing
 from .locate import json_line_of, line_of
 
@@ -127,7 +127,7 @@ def drawings_scene(paths: Sequence[Path], step: float = 1.0, ease: str = "linear
     if not shapes:
         raise SceneError(paths[0], None, "expected at least one visible shape in the drawings, found none")
     scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0],
-                  end_hold=float(hold) if len(paths) > 1 else 0.0)
+                  sources=tuple(dict.fromkeys(paths)), end_hold=float(hold) if len(paths) > 1 else 0.0)
     _Reader(paths[0], "", "toml").matching_effort(shapes, scene.matching)
     return scene
 
@@ -217,11 +217,6 @@ def _describe(value: Any) -> str:
     return f"{kind} {_short(value)}"
 
 
-def _suggest(word: str, choices: tuple[str, ...] | list[str]) -> str:
-    close = difflib.get_close_matches(word, choices, n=1, cutoff=0.6)
-    return f" (did you mean {close[0]!r}?)" if close else ""
-
-
 class _Reader:
     """Validates one parsed document; knows where it came from for messages."""
 
@@ -232,6 +227,7 @@ class _Reader:
         self.timing: tuple[str, Easing] = ("linear", LINEAR)  # the scene's ease: every key's default
         self.stagger = 0.0
         self.moved: dict[str, list[np.ndarray]] = {}  # key path -> where hints moved its contours' vertices
+        self.sources: list[Path] = []  # files the scene refers to, in the order they are read
 
     def fail(self, where: str, message: str) -> SceneError:
         line = self.locate(self.text, where) if where else None
@@ -245,7 +241,7 @@ class _Reader:
         for key in value:
             if key not in allowed:
                 at = f"{where}.{key}" if where else str(key)
-                raise self.fail(at, f"unknown key {_short(key)}{_suggest(str(key), allowed)}; "
+                raise self.fail(at, f"unknown key {_short(key)}{did_you_mean(str(key), allowed)}; "
                                     f"expected one of {', '.join(allowed)}")
         return value
 
@@ -281,7 +277,7 @@ class _Reader:
     def choice(self, value: Any, where: str, choices: tuple[str, ...], what: str) -> str:
         word = self.string(value, where)
         if word not in choices:
-            raise self.fail(where, f"unknown {what} {_short(word)}{_suggest(word, choices)}; "
+            raise self.fail(where, f"unknown {what} {_short(word)}{did_you_mean(word, choices)}; "
                                    f"expected one of {', '.join(choices)}")
         return word
 
@@ -343,8 +339,9 @@ class _Reader:
                 raise self.fail("compare", "expected at least one method name, found an empty list")
             compare = tuple(self.choice(m, f"compare[{i}]", METHODS, "method") for i, m in enumerate(items))
         for i, shape in enumerate(shapes):
-            if (shape.method or method) == "jointed" and not shape.joints:
-                raise self.fail(f"shape[{i}].method", "method 'jointed' needs joints = [[a, b], ...], found none")
+            chosen = shape.method or method
+            if REGISTRY[chosen].needs_joints and not shape.joints:
+                raise self.fail(f"shape[{i}].method", f"method {chosen!r} needs joints = [[a, b], ...], found none")
         title = self.string(top["title"], "title") if "title" in top else None
         background = self.background(top.get("background", "#ffffff"), "background")
         matching = self.matching(top.get("correspondence", {}))
@@ -352,7 +349,7 @@ class _Reader:
         balance = self.choice(top.get("balance", DEFAULT_BALANCE), "balance", BALANCES, "balance")
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
                      method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched,
-                     balance=balance)
+                     balance=balance, sources=tuple(dict.fromkeys((self.path, *self.sources))))
 
     def drawings(self, items: list[Any], unmatched: str) -> tuple[tuple[Shape, ...], tuple[float, float, float, float]]:
         """``[[drawing]]`` keys: whole SVG files at times; their shapes and the first drawing's view box."""
@@ -381,6 +378,7 @@ class _Reader:
             stagger = read_stagger(table["stagger"], f"{where}.stagger", self.fail) \
                 if "stagger" in table else self.stagger
             keys.append(DrawingKey(file, time, text, tolerance, easing=easing, hints=hints, stagger=stagger))
+            self.sources.append(file)
         try:
             drawings, box = read_drawings(keys)
         except SvgError as error:
@@ -591,6 +589,7 @@ class _Reader:
         element = self.string(table["id"], f"{where}.id")
         tolerance = self.number(table.get("tolerance", DEFAULT_TOLERANCE), f"{where}.tolerance",
                                 1e-9, 1e6, "a tolerance in world units")
+        self.sources.append(self.path.parent / file)
         try:
             contours = load_svg_contours(self.path.parent / file, element, tolerance)
         except SvgError as error:

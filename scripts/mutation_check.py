@@ -49,6 +49,7 @@ STROKE = ("tests/raster/test_round_stroke.py",)
 CONTROLS = ("tests/core/test_easing.py", "tests/core/test_hints.py", "tests/scenefile/test_controls.py",
             "tests/cli/test_timing_flags.py")
 ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
+VECTOR = ("tests/core/test_keyframes.py", "tests/pipeline/test_vector_output.py")
 OWNED = ("tests/encode/test_manifest.py", "tests/cli/test_targets.py")
 _CLUSTER_TESTS = "tests/pipeline/test_cluster_failures.py::"
 CLUSTER = tuple(_CLUSTER_TESTS + name for name in ("test_a_bad_address_is_refused_before_connecting",
@@ -279,6 +280,20 @@ MUTANTS = [
            "        discard(old)  # a folder", "        pass  # a folder", ATOMIC),
     Mutant("signals: a hang-up not handled", "tweenrender/cli/main.py",
            '("SIGTERM", "SIGHUP")', '("SIGTERM",)', ("tests/cli/test_signals.py",)),
+    Mutant("keyframes: the tolerance taken as its square", "tweenrender/core/keyframes.py",
+           "limit = tolerance * tolerance", "limit = tolerance", VECTOR),
+    Mutant("keyframes: the full check skipped after the screen", "tweenrender/core/keyframes.py",
+           "        if _within(values, a, int(b), limit):", "        if True:", VECTOR),
+    Mutant("lottie: fill rules swapped", "tweenrender/encode/lottie.py",
+           '_FILL_RULES = {"nonzero": 1, "evenodd": 2}', '_FILL_RULES = {"nonzero": 2, "evenodd": 1}', VECTOR),
+    Mutant("lottie: layers hand over at the key frame (rlottie draws both)", "tweenrender/encode/lottie.py",
+           "_EARLY_IN, _EARLY_OUT = 0.499, 0.501", "_EARLY_IN, _EARLY_OUT = 0.0, 0.0", VECTOR),
+    Mutant("lottie: easing handles' x and y swapped", "tweenrender/encode/lottie.py",
+           'key["o"] = {"x": [x1], "y": [y1]}', 'key["o"] = {"x": [y1], "y": [x1]}', VECTOR),
+    Mutant("svg: keyTimes over F - 1 frames", "tweenrender/encode/animated_svg.py",
+           "times = [f / total for f in frames]", "times = [f / (total - 1) for f in frames]", VECTOR),
+    Mutant("vector: a linear segment's easing dropped", "tweenrender/pipeline/vector_export.py",
+           "ease = _handles(segment.ease) or STRAIGHT", "ease = STRAIGHT", VECTOR),
 ]
 
 

@@ -39,7 +39,9 @@ class Format:
     chunks, each with an encoder of its own; ``container`` the container's options that a join by stream
     copy repeats; ``yuv420`` whether opaque frames go to ffmpeg as yuv420p
     planes made here; ``encode_cost`` the encoder's CPU seconds per megapixel of frame (``None``: measured
-    when needed, as PNG compression is).
+    when needed, as PNG compression is); ``vector`` whether the file holds the animated paths rather than
+    pictures (written by :mod:`.lottie` or :mod:`.animated_svg`, a player draws them: any size, any
+    background).
     """
 
     name: str
@@ -55,6 +57,7 @@ class Format:
     yuv420: bool = False
     encode_cost: float | None = None
     listed: bool = True  # False: an internal format (a GIF's lossless parts), never asked for by name
+    vector: bool = False  # the paths themselves, keyframed (Lottie, animated SVG): no frames are drawn
 
     @property
     def keeps_alpha(self) -> bool:
@@ -105,6 +108,8 @@ TABLE: dict[str, Format] = {f.name: f for f in (
                   ("paletteuse=dither=sierra2_4a", "paletteuse=dither=sierra2_4a:alpha_threshold=128")),
            max_side=65535, join="lossless", encode_cost=0.049),
     Format("png", "PNG", "", alpha=(), join="frames"),  # any size the canvas takes
+    Format("lottie", "Lottie", ".json", alpha=(), vector=True),
+    Format("svg", "animated SVG", ".svg", alpha=(), vector=True),
     # a GIF's chunk: FFV1 in NUT, BGRA, exact frame times; encoded into the GIF when the parts are joined
     Format("nut", "FFV1", ".nut", ("-c:v", "ffv1", "-pix_fmt", "bgra", "-f", "nut"), alpha=(), max_side=65536,
            listed=False),
@@ -136,8 +141,9 @@ def by_suffix(suffix: str) -> Format | None:
 
 
 def formats_for(width: int, height: int) -> list[str]:
-    """The formats whose encoders take ``width × height`` frames."""
-    return [name for name in FORMATS if TABLE[name].size_problem(width, height) is None]
+    """The formats of pictures whose encoders take ``width × height`` frames (the vector formats, which
+    take any size, are not among them)."""
+    return [name for name in FORMATS if not TABLE[name].vector and TABLE[name].size_problem(width, height) is None]
 
 
 def check_frame_size(fmt: str, width: int, height: int) -> None:

@@ -155,7 +155,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
     Options come by their long names (``method, compare, format, size, fps, frames, background, balance,
-    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress``; see
+    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress, max_error``; see
     :class:`~.options.RenderOptions`) or as one ``options`` object. The format is ``format`` or
     ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name without one is a folder of PNG
     frames). ``background`` overrides the scene's (``"none"``: transparent, kept by every format but MP4).
@@ -167,6 +167,10 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     renders on a dask.distributed cluster instead: a scheduler's address, or ``"local:N"`` (needs the
     ``cluster`` extra). ``progress`` is called with ``(done, total)`` frames. The target changes only
     when the whole output was written and checked.
+
+    ``.json`` (format ``lottie``) writes Lottie, ``.svg`` (``svg``) an animated SVG: the paths themselves,
+    keyframed within ``max_error`` output pixels (default 0.25) of every frame; they take no ``compare``,
+    ``paths``, ``onion``, ``strip``, ``workers`` or ``cluster``.
     """
     from ..encode.formats import TABLE, check_alpha, check_frame_size
     from ..encode.targets import check_frames_folder, check_output_name
@@ -184,10 +188,20 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     _not_an_input(target, scene)
     if TABLE[fmt].folder:
         check_frames_folder(target)
+    if TABLE[fmt].vector:
+        from .vector_export import refuse_raster_options
+
+        refuse_raster_options(fmt, opts)
+    elif opts.max_error is not None:
+        raise OptionError(f"applies to the vector formats (lottie, svg) only, not {fmt}", "max_error")
     job = render_job(scene, opts)
     if len(job.frame_range) > opts.max_frames:
         raise OptionError(f"{len(job.frame_range)} frames is more than {opts.max_frames}; "
                           "raise it to render them anyway", "max_frames")
+    if TABLE[fmt].vector:
+        from .vector_export import write_vector
+
+        return write_vector(job, fmt, target, opts.max_error)
     check_alpha(fmt, job.scene.background[3] < 255)
     check_frame_size(fmt, *job.frame_size)  # before drawing a frame or starting ffmpeg
     if opts.cluster is not None:

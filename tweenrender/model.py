@@ -27,7 +27,8 @@ Color = tuple[int, int, int, int]
 """Straight (unpremultiplied) RGBA, each 0..255."""
 
 Method = Literal["linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto"]
-METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto")
+METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length",
+                            "injective", "auto")
 BALANCES: tuple[str, ...] = ("copies", "spread")
 DEFAULT_BALANCE = "copies"
 """The balance rule of scenes that name none (benchmarks/balance_rules.py measured the two)."""

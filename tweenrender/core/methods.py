@@ -10,6 +10,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..errors import GeometryError
 from . import paths
 from .arap import arap
+from .injective import injective
 from .intrinsic import intrinsic
 from .joints import jointed
 from .qcurves import auto
@@ -52,6 +53,7 @@ _METHODS: dict[str, Callable[[Array, Array, ArrayLike, Joints], Array]] = {
     "arap": _arap,  # joints are not needed: the triangulated shape bends where it must
     "intrinsic": _intrinsic,  # the paper's closing weights
     "intrinsic-length": _intrinsic_length,  # closing weighted by edge length (docs/intrinsic.md)
+    "injective": injective,  # never crosses itself (maths §5.9)
     "auto": auto,
 }
 

@@ -216,6 +216,14 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
                 pair = pairs[i]
                 own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
                 frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
+        elif segment_method(segment, method) == "injective" and not single:
+            # one mesh for every moving contour, so holes stay inside their outlines
+            from .injective import injective_contours
+
+            found = injective_contours([pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving],
+                                       [pairs[i].closed for i in moving], t)
+            for i, part in zip(moving, found):
+                frames[i] = part
         else:
             together = interpolate(k0, k1, t, segment_method(segment, method), segment.joints)
             for i, part in zip(moving, np.split(together, cuts, axis=1)):

@@ -1,0 +1,188 @@
+"""Injective paths: in-betweens that never cross themselves (maths §5.9).
+
+After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
+(2001), on Floater & Gotsman, "How to morph tilings injectively" (1999):
+
+1. the best-fit rigid motion (maths §5.2) is taken out: key 1 is turned back
+   by the best-fit angle φ about its vertex mean, both keys centred;
+2. the contours of both keys get one compatible triangulation inside a common
+   frame (:mod:`.compatible`);
+3. in each key every vertex but the frame's is the mean-value combination
+   (Floater 2003: positive weights) of its neighbours; at ``t`` the weights are
+   blended, ``λ(t) = (1-t)·λ(0) + t·λ(1)`` (t clamped to [0, 1]), and the
+   vertices solve ``x_i = Σ_j λ_ij(t)·x_j`` with the frame held (one sparse LU
+   per frame). By Tutte and Floater the result is a valid triangulation at every
+   t, so no contour crosses itself or another, and a hole stays in its outline;
+4. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
+   mean, which moves on a straight line.
+
+Copies of a vertex (balancing by copies) are spread along their edges first
+(:func:`.balance.spread`): coincident vertices cannot be triangulated. Keys
+whose contours cross themselves or each other, or nest differently, have no
+such paths: they take the exact rigid paths (maths §5.2) instead, as do
+contours of fewer than three vertices (two for an open stroke).
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from typing import Callable, Sequence
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .balance import coincident_runs, spread
+from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
+from .geometry import best_fit_rotation, centroid, rotate
+from .paths import as_times, rigid
+
+__all__ = ["injective", "injective_contours", "injective_mesh", "mean_value_weights"]
+
+Array = NDArray[np.float64]
+
+_CACHE = 32  # pairs of keys whose mesh is kept
+_FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
+_cache: OrderedDict[bytes, Callable[[Array], list[Array]]] = OrderedDict()
+
+
+def mean_value_weights(points: Array, triangles: NDArray[np.intp]) -> tuple[NDArray[np.intp], NDArray[np.intp], Array]:
+    """Floater's mean-value weights of a triangulation ``points (V, 2)``, ``triangles (F, 3)``
+    (counter-clockwise): ``(rows, cols, w)`` with one entry per directed edge ``i → j``, in the order
+    of ``np.unique`` over ``i·V + j``, ``w`` normalised so each row sums to 1."""
+    v = len(points)
+    i = triangles.reshape(-1)
+    j = np.roll(triangles, -1, axis=1).reshape(-1)
+    k = np.roll(triangles, -2, axis=1).reshape(-1)
+    a, b = points[j] - points[i], points[k] - points[i]
+    la, lb = np.linalg.norm(a, axis=1), np.linalg.norm(b, axis=1)
+    sine, cosine = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]), (a * b).sum(axis=1)  # times la·lb
+    # tan(θ/2) = sin / (1 + cos) = (1 - cos) / sin, each where it does not cancel
+    with np.errstate(divide="ignore", invalid="ignore"):
+        half = np.where(cosine >= 0, sine / (la * lb + cosine), (la * lb - cosine) / sine)
+    # a triangle flat to rounding (an overlay sliver) keeps a finite, positive weight
+    half = np.clip(np.nan_to_num(half, nan=_FLAT, posinf=_FLAT), 1.0 / _FLAT, _FLAT)
+    codes = np.concatenate([i * v + j, i * v + k])
+    values = np.concatenate([half / la, half / lb])
+    unique, where = np.unique(codes, return_inverse=True)
+    w = np.bincount(where, weights=values, minlength=len(unique))
+    rows, cols = unique // v, unique % v
+    w /= np.bincount(rows, weights=w, minlength=v)[rows]
+    return rows, cols, w
+
+
+def injective_mesh(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> CompatibleMesh:
+    """The compatible triangulation the paths use, of keys already centred and turned (step 2)."""
+    return compatible_triangulation(k0, k1, cuts, closed)
+
+
+class _Paths:
+    """Injective paths of one pair of keys: call with ``t (T,)`` for ``(T, N, 2)``."""
+
+    def __init__(self, k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> None:
+        self.c0, self.c1 = centroid(k0), centroid(k1)
+        self.phi = float(best_fit_rotation(k0, k1))
+        a0, a1 = k0 - self.c0, rotate(k1 - self.c1, -self.phi)
+        self.mesh = mesh = injective_mesh(a0, a1, cuts, closed)
+        rows, cols, self.w0 = mean_value_weights(mesh.p0, mesh.triangles)
+        rows1, cols1, self.w1 = mean_value_weights(mesh.p1, mesh.triangles)
+        if not (np.array_equal(rows, rows1) and np.array_equal(cols, cols1)):
+            raise CompatibleError("the two keys' meshes differ")
+        size = len(mesh.p0)
+        fixed = np.zeros(size, dtype=bool)
+        fixed[mesh.frame] = True
+        free = np.flatnonzero(~fixed)
+        slot = np.full(size, -1)
+        slot[free] = np.arange(len(free))
+        keep = ~fixed[rows]
+        self.inner = keep & ~fixed[cols]
+        self.outer = keep & fixed[cols]
+        self.rows, self.cols, self.slot, self.free = rows, cols, slot, free
+        self.n = len(k0)
+        self.frame = mesh.p0[mesh.frame]
+
+    def __call__(self, t: Array) -> Array:
+        from scipy.sparse import csc_matrix, identity
+        from scipy.sparse.linalg import splu
+
+        mesh, n = self.mesh, self.n
+        out = np.empty((len(t), n, 2))
+        size = len(self.free)
+        r_in, c_in = self.slot[self.rows[self.inner]], self.slot[self.cols[self.inner]]
+        r_out = self.slot[self.rows[self.outer]]
+        boundary = mesh.p0[self.cols[self.outer]]
+        for f, s in enumerate(np.clip(t, 0.0, 1.0).tolist()):
+            w = (1.0 - s) * self.w0 + s * self.w1
+            matrix = identity(size, format="csc") - csc_matrix((w[self.inner], (r_in, c_in)), shape=(size, size))
+            rhs = np.zeros((size, 2))
+            np.add.at(rhs, r_out, w[self.outer][:, None] * boundary)
+            x = splu(matrix).solve(rhs)
+            out[f] = x[self.slot[:n]]
+        center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
+        return center[:, None, :] + rotate(out, (t * self.phi)[:, None])
+
+
+def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> Callable[[Array], list[Array]]:
+    """The paths of every contour, those that cannot be in the mesh on the rigid paths of all."""
+    sizes = np.diff(cuts)
+    meshed = [int(s) >= (3 if c else 2) for s, c in zip(sizes, closed)]
+    if not any(meshed) or not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
+        return lambda t: _split(rigid(k0, k1, t), cuts)
+    parts0, parts1 = [], []
+    for c, (start, end) in enumerate(zip(cuts, cuts[1:])):
+        a, b = k0[start:end], k1[start:end]
+        if meshed[c] and closed[c] and (coincident_runs(a) or coincident_runs(b)):
+            a, b = spread(a, b)
+        parts0.append(a)
+        parts1.append(b)
+    picked = [c for c in range(len(meshed)) if meshed[c]]
+    m0 = np.concatenate([parts0[c] for c in picked])
+    m1 = np.concatenate([parts1[c] for c in picked])
+    mcuts = np.concatenate([[0], np.cumsum([len(parts0[c]) for c in picked])]).tolist()
+    try:
+        paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
+    except CompatibleError:
+        return lambda t: _split(rigid(k0, k1, t), cuts)
+    every = list(range(len(meshed)))
+
+    def evaluate(t: Array) -> list[Array]:
+        moved = _split(paths(t), mcuts)
+        still = _split(rigid(k0, k1, t), cuts)
+        found = dict(zip(picked, moved))
+        return [found.get(c, still[c]) for c in every]
+
+    return evaluate
+
+
+def _split(frames: Array, cuts: Sequence[int]) -> list[Array]:
+    return [frames[:, a:b] for a, b in zip(cuts, cuts[1:])]
+
+
+def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool], t: ArrayLike) -> list[Array]:
+    """Injective inbetweens of a shape's corresponding contours (``k0s[i]``, ``k1s[i]`` both
+    ``(L_i, 2)``; ``closed[i]``), all in one mesh, at ``t (T,)``: one ``(T, L_i, 2)`` per contour.
+
+    The mesh of a set of keys is cached, so successive blocks of frames of one segment pay it once.
+    """
+    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
+    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
+    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
+    key = k0.tobytes() + b"|" + k1.tobytes() + b"|" + repr((cuts, list(closed))).encode()
+    paths = _cache.get(key)
+    if paths is None:
+        paths = _build(k0, k1, cuts, [bool(c) for c in closed])
+        _cache[key] = paths
+        while len(_cache) > _CACHE:
+            _cache.popitem(last=False)
+    else:
+        _cache.move_to_end(key)
+    t = as_times(t)
+    found = paths(t)
+    for frames, a, b in zip(found, k0s, k1s):
+        frames[t == 0.0] = a
+        frames[t == 1.0] = b
+    return found
+
+
+def injective(k0: Array, k1: Array, t: ArrayLike, joints: Sequence[tuple[int, int]] = ()) -> Array:
+    """Injective inbetweens of one closed outline ``(N, 2)`` at ``t (T,)``: ``(T, N, 2)``."""
+    return injective_contours([k0], [k1], [True], t)[0]

@@ -20,7 +20,8 @@ Copies of a vertex (balancing by copies) are spread along their edges first
 (:func:`.balance.spread`): coincident vertices cannot be triangulated. Keys
 whose contours cross themselves or each other, or nest differently, have no
 such paths: they take the exact rigid paths (maths §5.2) instead, as do
-contours of fewer than three vertices (two for an open stroke).
+contours of fewer than three vertices (two for an open stroke), and open strokes
+with a repeated vertex.
 """
 
 from __future__ import annotations
@@ -123,8 +124,7 @@ class _Paths:
 
 def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> Callable[[Array], list[Array]]:
     """The paths of every contour, those that cannot be in the mesh on the rigid paths of all."""
-    sizes = np.diff(cuts)
-    meshed = [int(s) >= (3 if c else 2) for s, c in zip(sizes, closed)]
+    meshed = [_meshable(k0[a:b], k1[a:b], c) for a, b, c in zip(cuts, cuts[1:], closed)]
     if not any(meshed) or not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
         return lambda t: _split(rigid(k0, k1, t), cuts)
     parts0, parts1 = [], []
@@ -151,6 +151,14 @@ def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) ->
         return [found.get(c, still[c]) for c in every]
 
     return evaluate
+
+
+def _meshable(a: Array, b: Array, closed: bool) -> bool:
+    """Whether a contour ``(L, 2)`` in both keys can be in the mesh: three vertices (two for an open
+    stroke), and for an open stroke no vertex repeated (copies are spread on closed contours only)."""
+    if len(a) < (3 if closed else 2):
+        return False
+    return closed or not (np.any(np.all(a[1:] == a[:-1], axis=1)) or np.any(np.all(b[1:] == b[:-1], axis=1)))
 
 
 def _split(frames: Array, cuts: Sequence[int]) -> list[Array]:

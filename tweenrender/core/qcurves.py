@@ -21,6 +21,8 @@ from ..errors import GeometryError
 from . import joints as _joints
 from . import paths
 from .geometry import best_fit_rotation, cross, edge_lengths
+from .injective import injective
+from .tangles import linear_tangles
 
 __all__ = [
     "control_points", "evaluate", "angle_at", "passes_through_zero", "non_monotonic",
@@ -253,7 +255,7 @@ def classify(k0: ArrayLike, k1: ArrayLike, rel_tol: float = 1e-3) -> Motion:
 class AutoChoice:
     """What ``auto`` does with a shape and why."""
 
-    method: str  # "nonlinear" | "linear", or "jointed" when joints cut the shape into bodies
+    method: str  # "nonlinear" | "linear" | "injective", or "jointed" when joints cut the shape into bodies
     why: str  # one line in words
     bodies: tuple[str, ...]  # "nonlinear" | "linear" per local body (joints.bodies order)
 
@@ -270,27 +272,42 @@ def _short(motion: Motion) -> str:
     return "pure translation" if motion.kind == "translation" else "non-rigid change"
 
 
+def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array]) -> AutoChoice:
+    """``choice``, or ``injective`` where it is ``linear`` and the linear inbetweens of the closed
+    contours ``k0s``, ``k1s`` tangle while the keys do not (maths §5.9)."""
+    if choice.method != "linear" or not k0s:
+        return choice
+    closed = [len(k) >= 3 for k in k0s]
+    crossed = linear_tangles(k0s, k1s, closed)
+    if not crossed or crossed[0] == 0.0 or crossed[-1] == 1.0:
+        return choice  # straight paths never tangle, or a key does already: nothing to keep clean
+    return AutoChoice("injective", f"{choice.why}; straight paths would cross at t = {crossed[0]:g}",
+                      tuple("injective" for _ in choice.bodies))
+
+
 def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = ()) -> AutoChoice:
-    """Choose nonlinear paths where the Q-curves show a rigid rotation, linear otherwise.
+    """Choose nonlinear paths where the Q-curves show a rigid rotation; otherwise linear paths where
+    they never cross themselves, else injective paths (maths §5.9).
 
     With ``joints`` the choice is made per local body (each with its own size
     for the tolerance); the method is then ``"jointed"`` if any body turns, and
-    ``"linear"`` if none does (averaged linear paths are the linear paths).
+    ``"linear"`` (or ``"injective"``) if none does (averaged linear paths are the linear paths).
     Raises :class:`joints.JointError` for bad joints.
     """
     k0, k1 = _keys(k0, k1)
     if len(joints) == 0:
         motion = classify(k0, k1)
-        return AutoChoice(_method(motion), motion.why, (_method(motion),))
+        return _untangled(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1])
     motions = [classify(k0[b], k1[b]) for b in _joints.bodies(k0.shape[0], joints)]
     methods = tuple(_method(m) for m in motions)
     method = "jointed" if "nonlinear" in methods else "linear"
-    return AutoChoice(method, "bodies: " + " / ".join(_short(m) for m in motions), methods)
+    return _untangled(AutoChoice(method, "bodies: " + " / ".join(_short(m) for m in motions), methods), [k0], [k1])
 
 
 def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike]) -> AutoChoice:
     """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys:
-    nonlinear when every contour turns rigidly by the same angle (within 1°), else linear."""
+    nonlinear when every contour turns rigidly by the same angle (within 1°), else linear where its
+    inbetweens never tangle (a contour crossing itself, a hole leaving its outline), else injective."""
     motions = [classify(a, b) for a, b in zip(k0s, k1s)]
     if not motions:
         return AutoChoice("linear", "no closed contour moves", ("linear",))
@@ -300,21 +317,25 @@ def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike]) -> 
         return AutoChoice("nonlinear", why, ("nonlinear",))
     if all(m.kind == "translation" for m in motions):
         return AutoChoice("linear", f"pure translation ({len(motions)} contours)", ("linear",))
-    return AutoChoice("linear", "contours change or move differently: " + " / ".join(_short(m) for m in motions),
-                      ("linear",))
+    return _untangled(AutoChoice("linear", "contours change or move differently: " +
+                                 " / ".join(_short(m) for m in motions), ("linear",)),
+                      [np.asarray(k, dtype=np.float64) for k in k0s], [np.asarray(k, dtype=np.float64) for k in k1s])
 
 
-_PATHS = {"nonlinear": paths.nonlinear, "linear": paths.linear}
+_PATHS = {"nonlinear": paths.nonlinear, "linear": paths.linear, "injective": injective}
 
 
 def auto(k0: ArrayLike, k1: ArrayLike, t: ArrayLike, joints: Joints = ()) -> Array:
     """The ``auto`` method's inbetweens: ``(T, N, 2)``.
 
     Per body, the nonlinear paths where its Q-curves show a rotation and linear
-    paths otherwise; joint vertices follow the mean of their bodies' paths.
+    paths otherwise; joint vertices follow the mean of their bodies' paths; the
+    whole shape's injective paths where linear ones would cross (maths §5.9).
     """
     k0, k1 = _keys(k0, k1)
     choice = auto_choice(k0, k1, joints)
+    if choice.method == "injective":
+        return injective(k0, k1, t)
     functions = [_PATHS[m] for m in choice.bodies]
     if len(joints) == 0:
         return functions[0](k0, k1, t)

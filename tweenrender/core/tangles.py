@@ -17,15 +17,22 @@ less than all pairs.
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from fractions import Fraction
 from typing import Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["parents", "tangles", "tangled_times", "proper_crossings"]
+__all__ = ["SWEEP", "parents", "tangles", "tangled_times", "proper_crossings", "linear_tangles"]
 
 Array = NDArray[np.float64]
+
+SWEEP = np.linspace(0.0, 1.0, 101)
+"""The swept t of a segment at which crossings are looked for (``stats``' ``crossings``, ``auto``)."""
+
+_CACHED = 64  # shapes whose linear crossings are kept
+_linear_cache: OrderedDict[bytes, list[float]] = OrderedDict()
 
 _BOUND = 4.0 * np.finfo(np.float64).eps  # relative rounding bound of a 2x2 orientation determinant
 
@@ -153,3 +160,21 @@ def tangled_times(frames: Sequence[Array], closed: Sequence[bool], t: Array) -> 
         return []
     parent = parents([f[0] for f in frames], closed)
     return [float(x) for k, x in enumerate(t.tolist()) if tangles([f[k] for f in frames], closed, parent)]
+
+
+def linear_tangles(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> list[float]:
+    """The t of :data:`SWEEP` at which the straight-line inbetweens of contours ``k0s[i]``, ``k1s[i]``
+    (``(L_i, 2)`` each) tangle (remembered for the last few shapes asked about)."""
+    a = [np.asarray(k, dtype=np.float64) for k in k0s]
+    b = [np.asarray(k, dtype=np.float64) for k in k1s]
+    key = b"|".join(x.tobytes() + b"/" + y.tobytes() for x, y in zip(a, b)) + repr(list(closed)).encode()
+    found = _linear_cache.get(key)
+    if found is None:
+        t = SWEEP[:, None, None]
+        found = tangled_times([(1.0 - t) * x + t * y for x, y in zip(a, b)], closed, SWEEP)
+        _linear_cache[key] = found
+        while len(_linear_cache) > _CACHED:
+            _linear_cache.popitem(last=False)
+    else:
+        _linear_cache.move_to_end(key)
+    return list(found)

@@ -81,6 +81,16 @@ def _orient(a: Sequence[float], b: Sequence[float], c: Sequence[float]) -> float
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 
 
+_THIN = 1e-9  # a new triangle whose sine at a corner is below this counts as flat
+
+
+def _fat(a: Sequence[float], b: Sequence[float], c: Sequence[float]) -> bool:
+    """Whether triangle ``abc`` is counter-clockwise and not flat to rounding (its sine at ``a``
+    above :data:`_THIN`): flips make no triangle that rounding could turn over."""
+    area = _orient(a, b, c)
+    return area > _THIN * math.hypot(b[0] - a[0], b[1] - a[1]) * math.hypot(c[0] - a[0], c[1] - a[1])
+
+
 class _Triangulation:
     """A mutable triangulation: counter-clockwise triangles, half-edges ``(u, v) → triangle``,
     constraint edges ``fixed`` (never flipped), a face label per triangle."""
@@ -214,7 +224,7 @@ class _Triangulation:
             u, v = queue.popleft()
             x, y = self.third(u, v), self.third(v, u)
             pu, pv, px, py = self.pts[u], self.pts[v], self.pts[x], self.pts[y]
-            if _orient(pu, py, px) > 0 and _orient(py, pv, px) > 0:
+            if _fat(pu, py, px) and _fat(py, pv, px) and _fat(px, pu, py) and _fat(pv, px, py):
                 self.flip(u, v)
                 if {x, y} != {a, b} and _proper(pa, pb, px, py):
                     queue.append((x, y))
@@ -543,8 +553,56 @@ def _overlay(keys: _Keys, n: int, frame_ids: list[int]) -> CompatibleMesh:
         m = len(order)
         for cell in cells:
             triangles.append(tuple(order[i] if i < m else base + i - m for i in cell))  # type: ignore[arg-type]
-    return CompatibleMesh(np.array(p0), np.array(p1), np.array(triangles, dtype=np.intp),
-                          np.array(frame_ids, dtype=np.intp), n, len(p0) - n - len(frame_ids))
+    tris = np.array(triangles, dtype=np.intp).reshape(-1, 3)
+    start = n + len(frame_ids)
+    return CompatibleMesh(_relax(np.array(p0), tris, start), _relax(np.array(p1), tris, start), tris,
+                          np.array(frame_ids, dtype=np.intp), n, len(p0) - start)
+
+
+_RELAX_ROUNDS = 8
+
+
+def _relax(points: Array, triangles: Triangles, start: int) -> Array:
+    """Move the Steiner points (rows from ``start`` on; drawn by no contour) towards the mean of
+    their neighbours wherever that fattens their thinnest triangle: the overlay's slivers, thin
+    enough to turn over in floating point, get room. A point moves only where every triangle
+    around it stays counter-clockwise."""
+    points = points.copy()
+    if start >= len(points):
+        return points
+    incident: dict[int, list[int]] = {}
+    for t, corners in enumerate(triangles.tolist()):
+        for v in corners:
+            if v >= start:
+                incident.setdefault(v, []).append(t)
+    stars = {v: np.array(ts, dtype=np.intp) for v, ts in incident.items()}
+    for _ in range(_RELAX_ROUNDS):
+        moved = False
+        for v, ts in stars.items():
+            tri = triangles[ts]
+            # the two other corners of each triangle, in counter-clockwise order after v
+            first = np.where(tri[:, 0] == v, tri[:, 1], np.where(tri[:, 1] == v, tri[:, 2], tri[:, 0]))
+            second = np.where(tri[:, 0] == v, tri[:, 2], np.where(tri[:, 1] == v, tri[:, 0], tri[:, 1]))
+            a, b = points[first], points[second]
+
+            def worst(p: Array) -> float:
+                return float(np.min((a[:, 0] - p[0]) * (b[:, 1] - p[1]) - (a[:, 1] - p[1]) * (b[:, 0] - p[0])))
+
+            here = worst(points[v])
+            goals = np.vstack([0.5 * (a.mean(axis=0) + b.mean(axis=0)), (a + b + points[v]) / 3.0])
+            best, best_value = points[v], max(here, 0.0) * 1.01
+            for goal in goals:
+                for step in (1.0, 0.5, 0.25):
+                    candidate = points[v] + step * (goal - points[v])
+                    there = worst(candidate)
+                    if there > best_value:
+                        best, best_value = candidate, there
+            if best is not points[v]:
+                points[v] = best
+                moved = True
+        if not moved:
+            break
+    return points
 
 
 class _Polygon:
@@ -596,7 +654,8 @@ def _fewer_crossings(m: int, tris0: list[tuple[int, int, int]], tris1: list[tupl
                 if (a, b) not in mesh.he:
                     continue
                 x, y = mesh.he[(a, b)], mesh.he[(b, a)]
-                if _orient(pos[a], pos[y], pos[x]) <= 0 or _orient(pos[y], pos[b], pos[x]) <= 0:
+                if not (_fat(pos[a], pos[y], pos[x]) and _fat(pos[y], pos[b], pos[x]) and _fat(pos[x], pos[a], pos[y])
+                        and _fat(pos[b], pos[x], pos[y])):
                     continue
                 before = _crossing_count(a, b, lo, hi)
                 after = _crossing_count(x, y, lo, hi)

@@ -279,6 +279,12 @@ class _Keys:
         return self.one, self.two
 
 
+def _winding(points: Array) -> float:
+    """Twice the signed area of a closed polygon ``(L, 2)``."""
+    x, y = points[:, 0], points[:, 1]
+    return float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
 def _contour_edges(cuts: Sequence[int], closed: Sequence[bool]) -> list[tuple[int, int, int]]:
     edges = []
     for c, (start, end) in enumerate(zip(cuts, cuts[1:])):
@@ -329,6 +335,9 @@ def compatible_triangulation(k0: Array, k1: Array, cuts: Sequence[int], closed: 
     farthest vertex)."""
     k0, k1 = np.asarray(k0, dtype=np.float64), np.asarray(k1, dtype=np.float64)
     n = len(k0)
+    for start, end, shut in zip(cuts, cuts[1:], closed):
+        if shut and np.sign(_winding(k0[start:end])) != np.sign(_winding(k1[start:end])):
+            raise CompatibleError("a contour winds the other way round in the second key")
     if radius is None:
         radius = _FRAME_SCALE * max(float(np.abs(k0).max(initial=0.0)), float(np.abs(k1).max(initial=0.0)),
                                     1e-300) * math.sqrt(2.0)

@@ -71,9 +71,20 @@ def mean_value_weights(points: Array, triangles: NDArray[np.intp]) -> tuple[NDAr
     return rows, cols, w
 
 
-def injective_mesh(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> CompatibleMesh:
-    """The compatible triangulation the paths use, of keys already centred and turned (step 2)."""
-    return compatible_triangulation(k0, k1, cuts, closed)
+def injective_mesh(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> CompatibleMesh | None:
+    """The compatible triangulation :func:`injective_contours` uses for these contours, in the keys'
+    turned and centred frame (step 1), or None where the contours take the rigid paths instead."""
+    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
+    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
+    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
+    picked = [c for c, shut in enumerate(closed) if _meshable(k0[cuts[c]:cuts[c + 1]], k1[cuts[c]:cuts[c + 1]], shut)]
+    if not picked:
+        return None
+    m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
+    try:
+        return _Paths(m0, m1, mcuts, [closed[c] for c in picked]).mesh
+    except CompatibleError:
+        return None
 
 
 class _Paths:
@@ -83,7 +94,7 @@ class _Paths:
         self.c0, self.c1 = centroid(k0), centroid(k1)
         self.phi = float(best_fit_rotation(k0, k1))
         a0, a1 = k0 - self.c0, rotate(k1 - self.c1, -self.phi)
-        self.mesh = mesh = injective_mesh(a0, a1, cuts, closed)
+        self.mesh = mesh = compatible_triangulation(a0, a1, cuts, closed)
         rows, cols, self.w0 = mean_value_weights(mesh.p0, mesh.triangles)
         rows1, cols1, self.w1 = mean_value_weights(mesh.p1, mesh.triangles)
         if not (np.array_equal(rows, rows1) and np.array_equal(cols, cols1)):
@@ -127,17 +138,8 @@ def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) ->
     meshed = [_meshable(k0[a:b], k1[a:b], c) for a, b, c in zip(cuts, cuts[1:], closed)]
     if not any(meshed) or not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
         return lambda t: _split(rigid(k0, k1, t), cuts)
-    parts0, parts1 = [], []
-    for c, (start, end) in enumerate(zip(cuts, cuts[1:])):
-        a, b = k0[start:end], k1[start:end]
-        if meshed[c] and closed[c] and (coincident_runs(a) or coincident_runs(b)):
-            a, b = spread(a, b)
-        parts0.append(a)
-        parts1.append(b)
     picked = [c for c in range(len(meshed)) if meshed[c]]
-    m0 = np.concatenate([parts0[c] for c in picked])
-    m1 = np.concatenate([parts1[c] for c in picked])
-    mcuts = np.concatenate([[0], np.cumsum([len(parts0[c]) for c in picked])]).tolist()
+    m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
     try:
         paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
     except CompatibleError:
@@ -151,6 +153,20 @@ def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) ->
         return [found.get(c, still[c]) for c in every]
 
     return evaluate
+
+
+def _meshed_keys(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool], picked: Sequence[int]
+                 ) -> tuple[Array, Array, list[int]]:
+    """The keys of the ``picked`` contours, copies spread, concatenated: ``(M, 2)`` twice and their cuts."""
+    parts0, parts1 = [], []
+    for c in picked:
+        a, b = k0[cuts[c]:cuts[c + 1]], k1[cuts[c]:cuts[c + 1]]
+        if closed[c] and (coincident_runs(a) or coincident_runs(b)):
+            a, b = spread(a, b)
+        parts0.append(a)
+        parts1.append(b)
+    mcuts = np.concatenate([[0], np.cumsum([len(p) for p in parts0])]).astype(int).tolist()
+    return np.concatenate(parts0), np.concatenate(parts1), mcuts
 
 
 def _meshable(a: Array, b: Array, closed: bool) -> bool:

@@ -568,49 +568,63 @@ def _overlay(keys: _Keys, n: int, frame_ids: list[int]) -> CompatibleMesh:
                           np.array(frame_ids, dtype=np.intp), n, len(p0) - start)
 
 
-_RELAX_ROUNDS = 8
+_RELAX_ROUNDS = 40
+_STEPS = np.array([1.0, 0.5, 0.25])
 
 
 def _relax(points: Array, triangles: Triangles, start: int) -> Array:
     """Move the Steiner points (rows from ``start`` on; drawn by no contour) towards the mean of
-    their neighbours wherever that fattens their thinnest triangle: the overlay's slivers, thin
-    enough to turn over in floating point, get room. A point moves only where every triangle
-    around it stays counter-clockwise."""
+    their neighbours, or into their thinnest triangle, wherever that fattens the thinnest triangle
+    around them: the overlay's slivers, thin enough to turn over in floating point, get room.
+    A point moves only where every triangle around it stays counter-clockwise; in a round, points
+    that move are never neighbours (the rest wait for the next round)."""
     points = points.copy()
-    if start >= len(points):
+    if start >= len(points) or len(triangles) == 0:
         return points
-    incident: dict[int, list[int]] = {}
-    for t, corners in enumerate(triangles.tolist()):
-        for v in corners:
-            if v >= start:
-                incident.setdefault(v, []).append(t)
-    stars = {v: np.array(ts, dtype=np.intp) for v, ts in incident.items()}
+    # one row per (Steiner corner v, its triangle): the two other corners a, b, counter-clockwise after v
+    v = np.concatenate([triangles[:, k] for k in range(3)])
+    a = np.concatenate([triangles[:, (k + 1) % 3] for k in range(3)])
+    b = np.concatenate([triangles[:, (k + 2) % 3] for k in range(3)])
+    keep = v >= start
+    order = np.argsort(v[keep], kind="stable")
+    v, a, b = v[keep][order], a[keep][order], b[keep][order]
+    heads = np.flatnonzero(np.r_[True, v[1:] != v[:-1]])
+    movable = v[heads]  # (S,)
+    slot = np.repeat(np.arange(len(heads)), np.diff(np.r_[heads, len(v)]))
+    counts = np.diff(np.r_[heads, len(v)])
+    # neighbouring Steiner points, as pairs of slots
+    index = np.full(len(points), -1)
+    index[movable] = np.arange(len(movable))
+    pairs = np.column_stack([slot, index[a]])
+    pairs = pairs[pairs[:, 1] >= 0]
+    priority = np.random.default_rng(0).permutation(len(movable))
+
+    def areas(p: Array) -> Array:  # (R, C) doubled areas of each row's triangle with v at p (R, C, 2)
+        pa, pb = points[a][:, None, :], points[b][:, None, :]
+        return (pa[..., 0] - p[..., 0]) * (pb[..., 1] - p[..., 1]) - (pa[..., 1] - p[..., 1]) * (pb[..., 0] - p[..., 0])
+
     for _ in range(_RELAX_ROUNDS):
-        moved = False
-        for v, ts in stars.items():
-            tri = triangles[ts]
-            # the two other corners of each triangle, in counter-clockwise order after v
-            first = np.where(tri[:, 0] == v, tri[:, 1], np.where(tri[:, 1] == v, tri[:, 2], tri[:, 0]))
-            second = np.where(tri[:, 0] == v, tri[:, 2], np.where(tri[:, 1] == v, tri[:, 0], tri[:, 1]))
-            a, b = points[first], points[second]
-
-            def worst(p: Array) -> float:
-                return float(np.min((a[:, 0] - p[0]) * (b[:, 1] - p[1]) - (a[:, 1] - p[1]) * (b[:, 0] - p[0])))
-
-            here = worst(points[v])
-            goals = np.vstack([0.5 * (a.mean(axis=0) + b.mean(axis=0)), (a + b + points[v]) / 3.0])
-            best, best_value = points[v], max(here, 0.0) * 1.01
-            for goal in goals:
-                for step in (1.0, 0.5, 0.25):
-                    candidate = points[v] + step * (goal - points[v])
-                    there = worst(candidate)
-                    if there > best_value:
-                        best, best_value = candidate, there
-            if best is not points[v]:
-                points[v] = best
-                moved = True
-        if not moved:
+        here = points[movable]  # (S, 2)
+        now = np.minimum.reduceat(areas(here[slot][:, None, :])[:, 0], heads)  # (S,)
+        mean = np.add.reduceat(0.5 * (points[a] + points[b]), heads) / counts[:, None]
+        own = areas(here[slot][:, None, :])[:, 0]
+        thinnest = np.lexsort((own, slot))[heads]  # each point's thinnest triangle
+        inside = (points[a[thinnest]] + points[b[thinnest]] + here) / 3.0
+        goals = np.concatenate([here[:, None, :] + _STEPS[None, :, None] * (g - here)[:, None, :]
+                                for g in (mean, inside)], axis=1)  # (S, 6, 2)
+        value = np.minimum.reduceat(areas(goals[slot]), heads, axis=0)  # (S, 6)
+        pick = np.argmax(value, axis=1)
+        best = value[np.arange(len(movable)), pick]
+        wants = best > np.maximum(now, 0.0) * 1.01 + 1e-300
+        if not wants.any():
             break
+        # of two neighbours that both want to move, the lower priority waits
+        both = wants[pairs[:, 0]] & wants[pairs[:, 1]]
+        lower = np.where(priority[pairs[both, 0]] < priority[pairs[both, 1]], pairs[both, 0], pairs[both, 1])
+        wants[lower] = False
+        chosen = np.flatnonzero(wants)
+        points[movable[chosen]] = goals[chosen, pick[chosen]]
+        priority = np.roll(priority, 1)
     return points
 
 

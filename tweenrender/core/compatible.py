@@ -657,7 +657,7 @@ def _crossing_count(a: int, b: int, lo: NDArray[np.intp], hi: NDArray[np.intp]) 
     return int(np.count_nonzero(((a < lo) & (lo < b) & (b < hi)) | ((lo < a) & (a < hi) & (hi < b))))
 
 
-_FLIP_ROUNDS = 6  # passes of crossing-reducing flips over both triangulations
+_FLIP_ROUNDS = 100  # passes of crossing-reducing flips over both triangulations
 
 
 def _fewer_crossings(m: int, tris0: list[tuple[int, int, int]], tris1: list[tuple[int, int, int]],

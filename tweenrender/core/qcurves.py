@@ -21,13 +21,14 @@ from ..errors import GeometryError
 from . import joints as _joints
 from . import paths
 from .geometry import best_fit_rotation, cross, edge_lengths
+from .balance import spread_copies
 from .injective import injective
 from .tangles import linear_tangles
 
 __all__ = [
     "control_points", "evaluate", "angle_at", "passes_through_zero", "non_monotonic",
     "sweeps_over_180", "Motion", "vertex_kinds", "classify", "AutoChoice", "auto_choice",
-    "auto_choice_contours", "auto",
+    "auto_choice_contours", "auto", "straight",
 ]
 
 Array = NDArray[np.float64]
@@ -278,7 +279,8 @@ def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array]) -
     if choice.method != "linear" or not k0s:
         return choice
     closed = [len(k) >= 3 for k in k0s]
-    crossed = linear_tangles(k0s, k1s, closed)
+    spread_keys = [spread_copies(a, b) if shut else (a, b) for a, b, shut in zip(k0s, k1s, closed)]
+    crossed = linear_tangles([a for a, _ in spread_keys], [b for _, b in spread_keys], closed)
     if not crossed or crossed[0] == 0.0 or crossed[-1] == 1.0:
         return choice  # straight paths never tangle, or a key does already: nothing to keep clean
     return AutoChoice("injective", f"{choice.why}; straight paths would cross at t = {crossed[0]:g}",
@@ -322,6 +324,15 @@ def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike]) -> 
                       [np.asarray(k, dtype=np.float64) for k in k0s], [np.asarray(k, dtype=np.float64) for k in k1s])
 
 
+def straight(k0: Array, k1: Array, t: ArrayLike) -> Array:
+    """``auto``'s straight paths: linear paths between the keys with copies of a vertex spread along
+    its edges (maths §5.6), so a vertex that many of the other key's meet opens out along its
+    edges instead of leaving a sawtooth: ``(T, N, 2)``."""
+    if len(k0) < 3:
+        return paths.linear(k0, k1, t)
+    return paths.linear(*spread_copies(k0, k1), t)
+
+
 _PATHS = {"nonlinear": paths.nonlinear, "linear": paths.linear, "injective": injective}
 
 
@@ -336,6 +347,8 @@ def auto(k0: ArrayLike, k1: ArrayLike, t: ArrayLike, joints: Joints = ()) -> Arr
     choice = auto_choice(k0, k1, joints)
     if choice.method == "injective":
         return injective(k0, k1, t)
+    if len(joints) == 0 and choice.method == "linear":
+        return straight(k0, k1, t)
     functions = [_PATHS[m] for m in choice.bodies]
     if len(joints) == 0:
         return functions[0](k0, k1, t)

@@ -224,6 +224,14 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
                                        [pairs[i].closed for i in moving], t)
             for i, part in zip(moving, found):
                 frames[i] = part
+        elif method == "auto" and segment_method(segment, method) == "linear" and not single:
+            # auto's straight paths: each closed contour's copies spread along its edges first
+            from .qcurves import straight
+
+            for i in moving:
+                pair = pairs[i]
+                frames[i] = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
+                frames[i][t == 0.0], frames[i][t == 1.0] = pair.k0, pair.k1
         else:
             together = interpolate(k0, k1, t, segment_method(segment, method), segment.joints)
             for i, part in zip(moving, np.split(together, cuts, axis=1)):

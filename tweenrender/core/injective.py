@@ -13,7 +13,10 @@ After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
    vertices solve ``x_i = Σ_j λ_ij(t)·x_j`` with the frame held (one sparse LU
    per frame). By Tutte and Floater the result is a valid triangulation at every
    t, so no contour crosses itself or another, and a hole stays in its outline;
-4. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
+4. the contours are scaled about their vertex mean to the keys' interpolated
+   area, ``(1-t)·A0 + t·A1`` (closed contours' signed areas summed): a
+   similarity keeps them simple, and the solve alone pulls shapes in mid-way;
+5. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
    mean, which moves on a straight line.
 
 Copies of a vertex (balancing by copies) are spread along their edges first
@@ -26,6 +29,7 @@ with a repeated vertex.
 
 from __future__ import annotations
 
+import math
 from collections import OrderedDict
 from typing import Callable, Sequence
 
@@ -111,6 +115,27 @@ class _Paths:
         self.rows, self.cols, self.slot, self.free = rows, cols, slot, free
         self.n = len(k0)
         self.frame = mesh.p0[mesh.frame]
+        self.cuts, self.closed = list(cuts), list(closed)
+        self.areas = (self._area(a0), self._area(a1))
+
+    def _area(self, points: Array) -> float:
+        """Signed area of the closed contours of ``points (N, 2)`` together (holes wound the other way count less)."""
+        total = 0.0
+        for start, end, shut in zip(self.cuts, self.cuts[1:], self.closed):
+            if shut:
+                x, y = points[start:end, 0], points[start:end, 1]
+                total += 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+        return total
+
+    def _sized(self, x: Array, s: float) -> Array:
+        """``x (N, 2)`` scaled about its vertex mean to the keys' interpolated area: a similarity,
+        which keeps every contour as simple as it is (the solve alone pulls shapes in mid-way)."""
+        goal = (1.0 - s) * self.areas[0] + s * self.areas[1]
+        now = self._area(x)
+        if goal == 0.0 or now == 0.0 or (goal > 0) != (now > 0):
+            return x
+        middle = x.mean(axis=0)
+        return middle + math.sqrt(goal / now) * (x - middle)
 
     def __call__(self, t: Array) -> Array:
         from scipy.sparse import csc_matrix, identity
@@ -128,7 +153,7 @@ class _Paths:
             rhs = np.zeros((size, 2))
             np.add.at(rhs, r_out, w[self.outer][:, None] * boundary)
             x = splu(matrix).solve(rhs)
-            out[f] = x[self.slot[:n]]
+            out[f] = self._sized(x[self.slot[:n]], s)
         center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
         return center[:, None, :] + rotate(out, (t * self.phi)[:, None])
 

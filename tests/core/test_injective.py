@@ -211,3 +211,25 @@ def test_a_hole_that_changes_sides_is_refused_cleanly(tmp_path: Path) -> None:
     assert injective_mesh([outer, hole], [outer, hole + [20.0, 0.0]], [True, True]) is None
     mesh = injective_mesh([outer, hole], [outer * 1.5, hole + [1.0, 2.0]], [True, True])
     assert mesh is not None
+
+
+def test_an_open_stroke_with_repeated_vertices_stays_inside_its_outline() -> None:
+    outline0 = np.array([[0, 0], [10, 0], [10, 10], [0, 10]], dtype=float)
+    outline1 = np.array([[0, 0], [12, -2], [8, 9], [-1, 7]], dtype=float)
+    smile0 = np.array([[2, 6], [4, 3], [4, 3], [4, 3], [6, 3], [8, 6]], dtype=float)
+    smile1 = np.array([[7, 2], [6, 2], [3, 4], [2, 6], [2, 6], [5, 7]], dtype=float)
+    k0s, k1s, closed = [outline0, smile0], [outline1, smile1], [True, False]
+    assert injective_mesh(k0s, k1s, closed) is not None
+    frames = injective_contours(k0s, k1s, closed, T)
+    _check_never_tangles(k0s, k1s, closed, frames)
+
+
+def test_past_the_steiner_cap_the_rigid_paths_take_over(monkeypatch: pytest.MonkeyPatch) -> None:
+    from tweenrender.core import compatible
+
+    k0, k1 = _spiral_and_star()
+    assert injective_mesh([k0], [k1], [True]).steiner > 0  # type: ignore[union-attr]
+    monkeypatch.setattr(compatible, "STEINER_CAP", 0)
+    assert injective_mesh([k0], [k1], [True]) is None
+    frames = injective_contours([k0], [k1 + 0.25], [True], [0.5])  # fresh keys: not from the cache
+    assert np.all(np.isfinite(frames[0]))

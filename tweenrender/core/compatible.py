@@ -27,8 +27,10 @@ triangles and every triangle is counter-clockwise in both keys:
    both.
 
 Pure numpy (and scipy's Delaunay triangulation, imported when it runs).
-Keys whose contours cross themselves or each other, or whose contours nest
-differently, raise :class:`CompatibleError`.
+Keys whose contours cross themselves or each other, wind the other way round, or
+nest differently, raise :class:`CompatibleError`, as does an overlay that would
+need more than :data:`STEINER_CAP` Steiner points (a frame would then cost more
+than the animation is worth).
 """
 
 from __future__ import annotations
@@ -43,13 +45,16 @@ from numpy.typing import NDArray
 
 from ..errors import GeometryError
 
-__all__ = ["CompatibleError", "CompatibleMesh", "compatible_triangulation", "FRAME_SIDES"]
+__all__ = ["CompatibleError", "CompatibleMesh", "compatible_triangulation", "FRAME_SIDES", "STEINER_CAP"]
 
 Array = NDArray[np.float64]
 Triangles = NDArray[np.intp]
 
 FRAME_SIDES = 24
 """Corners of the frame polygon (a regular polygon around both keys)."""
+
+STEINER_CAP = 20_000
+"""Most crossing points one face's overlay may add; past it the keys have no injective paths here."""
 
 _FRAME_SCALE = 2.0  # frame radius over the keys' largest distance from their centre
 _FLIP_GUARD = 200  # flips allowed per recovered edge, times the edges it crosses at first
@@ -715,6 +720,8 @@ def _overlay_face(m: int, tris0: list[tuple[int, int, int]], tris1: list[tuple[i
     c, d = only1[:, 0][None, :], only1[:, 1][None, :]
     hit = ((a < c) & (c < b) & (b < d)) | ((c < a) & (a < d) & (d < b))
     i, j = np.nonzero(hit)
+    if len(i) > STEINER_CAP:
+        raise CompatibleError(f"the overlay needs {len(i)} Steiner points, more than {STEINER_CAP}")
     angle = 2.0 * np.pi * np.arange(m) / m
     q = np.column_stack([np.cos(angle), np.sin(angle)])
     qa, qb, qc, qd = q[only0[i, 0]], q[only0[i, 1]], q[only1[j, 0]], q[only1[j, 1]]

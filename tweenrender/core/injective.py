@@ -24,7 +24,7 @@ Copies of a vertex (balancing by copies) are spread along their edges first
 whose contours cross themselves or each other, or nest differently, have no
 such paths: they take the exact rigid paths (maths §5.2) instead, as do
 contours of fewer than three vertices (two for an open stroke), and open strokes
-with a repeated vertex.
+all at one point. An open stroke's repeated vertices are spread along its next edge.
 """
 
 from __future__ import annotations
@@ -188,6 +188,8 @@ def _meshed_keys(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[boo
         a, b = k0[cuts[c]:cuts[c + 1]], k1[cuts[c]:cuts[c + 1]]
         if closed[c] and (coincident_runs(a) or coincident_runs(b)):
             a, b = spread(a, b)
+        elif not closed[c]:
+            a, b = _spread_open(a), _spread_open(b)
         parts0.append(a)
         parts1.append(b)
     mcuts = np.concatenate([[0], np.cumsum([len(p) for p in parts0])]).astype(int).tolist()
@@ -196,10 +198,33 @@ def _meshed_keys(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[boo
 
 def _meshable(a: Array, b: Array, closed: bool) -> bool:
     """Whether a contour ``(L, 2)`` in both keys can be in the mesh: three vertices (two for an open
-    stroke), and for an open stroke no vertex repeated (copies are spread on closed contours only)."""
+    stroke), and an open stroke not all at one point in either key."""
     if len(a) < (3 if closed else 2):
         return False
-    return closed or not (np.any(np.all(a[1:] == a[:-1], axis=1)) or np.any(np.all(b[1:] == b[:-1], axis=1)))
+    return closed or (bool(np.any(a != a[0])) and bool(np.any(b != b[0])))
+
+
+def _spread_open(points: Array) -> Array:
+    """An open stroke ``(L, 2)`` with each run of equal vertices spread along the next edge (the
+    previous one for a run at the end), within its first half: the stroke as drawn is unchanged."""
+    out = np.array(points, dtype=np.float64)
+    n, i = len(out), 0
+    while i < n:
+        j = i
+        while j + 1 < n and np.array_equal(out[j + 1], out[i]):
+            j += 1
+        k = j - i + 1
+        if k >= 2:
+            if j + 1 < n:  # toward the next vertex; the run's first copy stays
+                step = (out[j + 1] - out[i]) / (2 * k)
+                for m in range(1, k):
+                    out[i + m] = out[i] + m * step
+            elif i > 0:  # a run at the end: toward the previous vertex; the last copy stays
+                step = (out[i - 1] - out[i]) / (2 * k)
+                for m in range(k - 1):
+                    out[i + m] = out[j] + (k - 1 - m) * step
+        i = j + 1
+    return out
 
 
 def _split(frames: Array, cuts: Sequence[int]) -> list[Array]:

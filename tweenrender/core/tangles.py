@@ -37,7 +37,10 @@ _linear_cache: OrderedDict[bytes, list[float]] = OrderedDict()
 _BOUND = 4.0 * np.finfo(np.float64).eps  # relative rounding bound of a 2x2 orientation determinant
 
 
-def _edges(contours: Sequence[Array], closed: Sequence[bool]) -> tuple[Array, Array, NDArray[np.intp], NDArray[np.intp], NDArray[np.intp]]:
+Indices = NDArray[np.intp]
+
+
+def _edges(contours: Sequence[Array], closed: Sequence[bool]) -> tuple[Array, Array, Indices, Indices, Indices]:
     """Every edge ``a → b`` (``(E, 2)`` each), its contour, its index in the contour and the contour's edge count."""
     a, b, owner, index, count = [], [], [], [], []
     for c, (points, shut) in enumerate(zip(contours, closed)):

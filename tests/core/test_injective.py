@@ -233,3 +233,17 @@ def test_past_the_steiner_cap_the_rigid_paths_take_over(monkeypatch: pytest.Monk
     assert injective_mesh([k0], [k1], [True]) is None
     frames = injective_contours([k0], [k1 + 0.25], [True], [0.5])  # fresh keys: not from the cache
     assert np.all(np.isfinite(frames[0]))
+
+
+@pytest.mark.parametrize("size", [1e-300, 1e300])
+def test_keys_near_the_ends_of_the_float_range_make_no_warning(size: float) -> None:
+    import warnings
+
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float) * size
+    kite = np.array([[0, 0], [1, 0], [0.5, 1], [0, 1]], dtype=float) * size
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        frames = interpolate(square, kite, T, "injective")
+        assert injective_mesh([square], [kite], [True]) is not None
+    assert np.all(np.isfinite(frames))
+    _check_never_tangles([square], [kite], [True], [frames])

@@ -95,6 +95,9 @@ class _Paths:
     """Injective paths of one pair of keys: call with ``t (T,)`` for ``(T, N, 2)``."""
 
     def __init__(self, k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> None:
+        # work at unit size: coordinates near the float range's ends neither overflow nor underflow
+        self.scale = float(max(np.abs(k0).max(initial=0.0), np.abs(k1).max(initial=0.0))) or 1.0
+        k0, k1 = k0 / self.scale, k1 / self.scale
         self.c0, self.c1 = centroid(k0), centroid(k1)
         self.phi = float(best_fit_rotation(k0, k1))
         a0, a1 = k0 - self.c0, rotate(k1 - self.c1, -self.phi)
@@ -155,7 +158,7 @@ class _Paths:
             x = splu(matrix).solve(rhs)
             out[f] = self._sized(x[self.slot[:n]], s)
         center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
-        return center[:, None, :] + rotate(out, (t * self.phi)[:, None])
+        return self.scale * (center[:, None, :] + rotate(out, (t * self.phi)[:, None]))
 
 
 def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> Callable[[Array], list[Array]]:
@@ -172,9 +175,10 @@ def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) ->
     every = list(range(len(meshed)))
 
     def evaluate(t: Array) -> list[Array]:
-        moved = _split(paths(t), mcuts)
+        found = dict(zip(picked, _split(paths(t), mcuts)))
+        if len(found) == len(every):
+            return [found[c] for c in every]
         still = _split(rigid(k0, k1, t), cuts)
-        found = dict(zip(picked, moved))
         return [found.get(c, still[c]) for c in every]
 
     return evaluate

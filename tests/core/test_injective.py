@@ -247,3 +247,17 @@ def test_keys_near_the_ends_of_the_float_range_make_no_warning(size: float) -> N
         assert injective_mesh([square], [kite], [True]) is not None
     assert np.all(np.isfinite(frames))
     _check_never_tangles([square], [kite], [True], [frames])
+
+
+def test_auto_keeps_an_open_stroke_from_crossing_itself() -> None:
+    from tweenrender.model import Contour, Key, Matching, Shape
+
+    k0 = np.array([[0, 0], [4, 0], [4, 4], [1, 4], [1, 1]], dtype=float)
+    k1 = np.array([[6, -3], [2, 4], [1, 7], [7, 6], [2, 6]], dtype=float)
+    straight = interpolate(k0, k1, T, "linear")
+    assert any(tangled([f], [False], [None]) for f in straight)  # straight paths do cross here
+    shape = Shape(name="stroke", keys=(Key(time=0.0, contours=(Contour(k0, closed=False),)),
+                                       Key(time=1.0, contours=(Contour(k1, closed=False),))))
+    segment = build_track(shape, Matching()).segments[0]
+    frames = pair_paths(segment, T, "auto")[0]
+    _check_never_tangles([k0], [k1], [False], [frames])

@@ -273,12 +273,14 @@ def _short(motion: Motion) -> str:
     return "pure translation" if motion.kind == "translation" else "non-rigid change"
 
 
-def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array]) -> AutoChoice:
-    """``choice``, or ``injective`` where it is ``linear`` and the linear inbetweens of the closed
-    contours ``k0s``, ``k1s`` tangle while the keys do not (maths §5.9)."""
+def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array],
+               closed: Sequence[bool] | None = None) -> AutoChoice:
+    """``choice``, or ``injective`` where it is ``linear`` and the straight inbetweens of contours
+    ``k0s``, ``k1s`` (closed where ``closed`` says; default: those of three vertices or more)
+    tangle while the keys do not (maths §5.9)."""
     if choice.method != "linear" or not k0s:
         return choice
-    closed = [len(k) >= 3 for k in k0s]
+    closed = [len(k) >= 3 for k in k0s] if closed is None else [bool(c) and len(k) >= 3 for c, k in zip(closed, k0s)]
     spread_keys = [spread_copies(a, b) if shut else (a, b) for a, b, shut in zip(k0s, k1s, closed)]
     crossed = linear_tangles([a for a, _ in spread_keys], [b for _, b in spread_keys], closed)
     if not crossed or crossed[0] == 0.0 or crossed[-1] == 1.0:
@@ -287,32 +289,39 @@ def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array]) -
                       tuple("injective" for _ in choice.bodies))
 
 
-def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = ()) -> AutoChoice:
+def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool = True) -> AutoChoice:
     """Choose nonlinear paths where the Q-curves show a rigid rotation; otherwise linear paths where
     they never cross themselves, else injective paths (maths §5.9).
 
     With ``joints`` the choice is made per local body (each with its own size
     for the tolerance); the method is then ``"jointed"`` if any body turns, and
     ``"linear"`` (or ``"injective"``) if none does (averaged linear paths are the linear paths).
+    ``closed=False`` reads the keys as an open stroke when it looks for crossings.
     Raises :class:`joints.JointError` for bad joints.
     """
     k0, k1 = _keys(k0, k1)
     if len(joints) == 0:
         motion = classify(k0, k1)
-        return _untangled(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1])
+        return _untangled(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed])
     motions = [classify(k0[b], k1[b]) for b in _joints.bodies(k0.shape[0], joints)]
     methods = tuple(_method(m) for m in motions)
     method = "jointed" if "nonlinear" in methods else "linear"
-    return _untangled(AutoChoice(method, "bodies: " + " / ".join(_short(m) for m in motions), methods), [k0], [k1])
+    return _untangled(AutoChoice(method, "bodies: " + " / ".join(_short(m) for m in motions), methods), [k0], [k1],
+                      [closed])
 
 
-def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike]) -> AutoChoice:
-    """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys:
-    nonlinear when every contour turns rigidly by the same angle (within 1°), else linear where its
-    inbetweens never tangle (a contour crossing itself, a hole leaving its outline), else injective."""
+def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
+                         strokes0: Sequence[ArrayLike] = (), strokes1: Sequence[ArrayLike] = ()) -> AutoChoice:
+    """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys (and
+    the open strokes ``strokes0``, ``strokes1`` that move with them): nonlinear when every closed
+    contour turns rigidly by the same angle (within 1°), else linear where the shape's inbetweens
+    never tangle (a contour crossing itself, a hole leaving its outline), else injective."""
     motions = [classify(a, b) for a, b in zip(k0s, k1s)]
+    every0 = [np.asarray(k, dtype=np.float64) for k in [*k0s, *strokes0]]
+    every1 = [np.asarray(k, dtype=np.float64) for k in [*k1s, *strokes1]]
+    closed = [True] * len(k0s) + [False] * len(strokes0)
     if not motions:
-        return AutoChoice("linear", "no closed contour moves", ("linear",))
+        return _untangled(AutoChoice("linear", "no closed contour moves", ("linear",)), every0, every1, closed)
     turns = [m.rotation_deg for m in motions if m.kind == "rotation"]
     if len(turns) == len(motions) and max(turns) - min(turns) <= 1.0:
         why = f"rigid rotation of {turns[0]:.1f} degrees ({len(motions)} contours)"
@@ -320,8 +329,7 @@ def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike]) -> 
     if all(m.kind == "translation" for m in motions):
         return AutoChoice("linear", f"pure translation ({len(motions)} contours)", ("linear",))
     return _untangled(AutoChoice("linear", "contours change or move differently: " +
-                                 " / ".join(_short(m) for m in motions), ("linear",)),
-                      [np.asarray(k, dtype=np.float64) for k in k0s], [np.asarray(k, dtype=np.float64) for k in k1s])
+                                 " / ".join(_short(m) for m in motions), ("linear",)), every0, every1, closed)
 
 
 def straight(k0: Array, k1: Array, t: ArrayLike) -> Array:

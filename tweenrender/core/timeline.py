@@ -178,14 +178,20 @@ class Track:
 
 
 def segment_method(segment: Segment, method: str) -> str:
-    """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its closed
-    contours when it has several (a one-contour segment keeps ``auto``, which decides per body)."""
+    """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its contours
+    when it has several (a one-outline segment keeps ``auto``, which decides per body; one open
+    stroke takes ``linear`` or ``injective`` where auto would, else keeps ``auto``)."""
     moving = [p for p in segment.pairs if p.moving]
-    if method != "auto" or len(moving) <= 1:
+    if method != "auto" or not moving or (len(moving) == 1 and moving[0].closed):
         return method
-    from .qcurves import auto_choice_contours
+    from .qcurves import auto_choice, auto_choice_contours
 
-    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed]).method
+    if len(moving) == 1:  # one open stroke: auto's own choice, its crossings read as a stroke's
+        chosen = auto_choice(moving[0].k0, moving[0].k1, segment.joints, closed=False).method
+        return chosen if chosen in ("linear", "injective") else method
+
+    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
+                                [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed]).method
 
 
 _PER_OUTLINE = ("arap", "intrinsic", "intrinsic-length")

@@ -74,9 +74,9 @@ def relax(points: Array, triangles: Triangles, start: int) -> Array:
 
     for _ in range(_RELAX_ROUNDS):
         here = points[movable]  # (S, 2)
-        now = np.minimum.reduceat(areas(here[slot][:, None, :])[:, 0], heads)  # (S,)
-        mean = np.add.reduceat(0.5 * (points[a] + points[b]), heads) / counts[:, None]
         own = areas(here[slot][:, None, :])[:, 0]
+        now = np.minimum.reduceat(own, heads)  # (S,)
+        mean = np.add.reduceat(0.5 * (points[a] + points[b]), heads) / counts[:, None]
         thinnest = np.lexsort((own, slot))[heads]  # each point's thinnest triangle
         inside = (points[a[thinnest]] + points[b[thinnest]] + here) / 3.0
         goals = np.concatenate([here[:, None, :] + _STEPS[None, :, None] * (g - here)[:, None, :]
@@ -106,11 +106,12 @@ class _Polygon:
         for a, b, c in triangles:
             self.he[(a, b)], self.he[(b, c)], self.he[(c, a)] = c, a, b
 
-    def chords(self) -> set[tuple[int, int]]:
-        return {(a, b) for (a, b) in self.he if a < b and (b, a) in self.he}
+        self.chords = {(a, b) for (a, b) in self.he if a < b and (b, a) in self.he}
 
     def flip(self, a: int, b: int) -> tuple[int, int]:
         x, y = self.he.pop((a, b)), self.he.pop((b, a))
+        self.chords.discard((min(a, b), max(a, b)))
+        self.chords.add((min(x, y), max(x, y)))
         del self.he[(b, x)], self.he[(x, a)], self.he[(a, y)], self.he[(y, b)]
         for u, v, w in ((a, y, x), (y, b, x)):
             self.he[(u, v)], self.he[(v, w)], self.he[(w, u)] = w, u, v
@@ -140,9 +141,9 @@ def fewer_crossings(m: int, tris0: list[tuple[int, int, int]], tris1: list[tuple
         changed = False
         for side in (0, 1):
             mesh, other, pos = meshes[side], meshes[1 - side], positions[side]
-            theirs = np.array(sorted(other.chords()), dtype=np.intp).reshape(-1, 2)
+            theirs = np.array(sorted(other.chords), dtype=np.intp).reshape(-1, 2)
             lo, hi = theirs[:, 0], theirs[:, 1]
-            for a, b in sorted(mesh.chords() - other.chords()):
+            for a, b in sorted(mesh.chords - other.chords):
                 if (a, b) not in mesh.he:
                     continue
                 x, y = mesh.he[(a, b)], mesh.he[(b, a)]
@@ -196,7 +197,6 @@ def overlay_face(m: int, tris0: list[tuple[int, int, int]], tris1: list[tuple[in
     u = (w[:, 0] * r[:, 1] - w[:, 1] * r[:, 0]) / denom
     points = qa + s[:, None] * r
     # the planar graph: boundary edges and every chord cut at its crossings
-    where = np.vstack([q, points])
     outgoing: dict[int, list[tuple[float, int]]] = {}
 
     def link(x: int, y: int, direction: Array) -> None:
@@ -222,19 +222,16 @@ def overlay_face(m: int, tris0: list[tuple[int, int, int]], tris1: list[tuple[in
     for (x, y) in list(position):
         if (x, y) in done:
             continue
-        cycle, hx, hy = [], x, y
+        cycle, hx, hy, outside = [], x, y, False
         while (hx, hy) not in done:
             done.add((hx, hy))
             cycle.append(hx)
+            outside = outside or (hx, hy) == (1, 0)  # the boundary walked backwards: the outside
             edges = outgoing[hy]
             nxt = edges[position[(hy, hx)] - 1][1]
             hx, hy = hy, nxt
-        if len(cycle) < 3:
+        if len(cycle) < 3 or outside:
             continue
-        pts = where[cycle]
-        area = np.sum(pts[:, 0] * np.roll(pts[:, 1], -1) - np.roll(pts[:, 0], -1) * pts[:, 1])
-        if area <= 0:
-            continue  # the outside
         cells.extend((cycle[0], cycle[k], cycle[k + 1]) for k in range(1, len(cycle) - 1))
     extra = [(int(only0[i[k], 0]), int(only0[i[k], 1]), float(s[k]), int(only1[j[k], 0]), int(only1[j[k], 1]),
               float(u[k])) for k in range(len(i))]

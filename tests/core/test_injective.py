@@ -59,7 +59,8 @@ def _exact_orientations(points: np.ndarray, triangles: np.ndarray) -> list[int]:
     return signs
 
 
-def _check_never_tangles(k0s: list[np.ndarray], k1s: list[np.ndarray], closed: list[bool], frames: list[np.ndarray]) -> None:
+def _check_never_tangles(k0s: list[np.ndarray], k1s: list[np.ndarray], closed: list[bool],
+                         frames: list[np.ndarray]) -> None:
     parent = parents_of(k0s, closed)
     assert not tangled(k0s, closed, parent) and not tangled(k1s, closed, parent), "the keys must be simple"
     for k, t in enumerate(T):

@@ -214,6 +214,7 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
         k1 = np.concatenate([pairs[i].k1 for i in moving])
         cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
         single = len(moving) == 1 and pairs[moving[0]].closed
+        chosen = segment_method(segment, method)
         if method in _PER_OUTLINE and not single:
             # these methods need one closed outline: each contour takes them on its own (open ones the
             # rigid paths), and its centre follows the rigid paths of the whole shape
@@ -222,7 +223,7 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
                 pair = pairs[i]
                 own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
                 frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
-        elif segment_method(segment, method) == "injective" and not single:
+        elif chosen == "injective" and not single:
             # one mesh for every moving contour, so holes stay inside their outlines
             from .injective import injective_contours
 
@@ -230,16 +231,17 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
                                        [pairs[i].closed for i in moving], t)
             for i, part in zip(moving, found):
                 frames[i] = part
-        elif method == "auto" and segment_method(segment, method) == "linear" and not single:
+        elif method == "auto" and chosen == "linear" and not single:
             # auto's straight paths: each closed contour's copies spread along its edges first
             from .qcurves import straight
 
             for i in moving:
                 pair = pairs[i]
-                frames[i] = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
-                frames[i][t == 0.0], frames[i][t == 1.0] = pair.k0, pair.k1
+                path = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
+                path[t == 0.0], path[t == 1.0] = pair.k0, pair.k1
+                frames[i] = path
         else:
-            together = interpolate(k0, k1, t, segment_method(segment, method), segment.joints)
+            together = interpolate(k0, k1, t, chosen, segment.joints)
             for i, part in zip(moving, np.split(together, cuts, axis=1)):
                 frames[i] = part
     for i, pair in enumerate(pairs):

@@ -17,7 +17,7 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["spread", "coincident_runs"]
+__all__ = ["spread", "spread_copies", "coincident_runs"]
 
 Array = NDArray[np.float64]
 
@@ -53,6 +53,13 @@ def spread(k0: Array, k1: Array, fixed: Sequence[int] = ()) -> tuple[Array, Arra
     k0 = np.array(k0, dtype=np.float64)
     k1 = np.array(k1, dtype=np.float64)
     return _spread_one(k0, k1, fixed), _spread_one(k1, k0, fixed)
+
+
+def spread_copies(k0: Array, k1: Array, fixed: Sequence[int] = ()) -> tuple[Array, Array]:
+    """:func:`spread` where either closed key ``(L, 2)`` has copies of a vertex; else the keys as they are."""
+    if coincident_runs(k0) or coincident_runs(k1):
+        return spread(k0, k1, fixed)
+    return k0, k1
 
 
 def _spread_one(key: Array, other: Array, fixed: Sequence[int] = ()) -> Array:

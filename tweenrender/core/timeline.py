@@ -218,14 +218,20 @@ class Track:
 
 
 def segment_method(segment: Segment, method: str) -> str:
-    """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its closed
-    contours when it has several (a one-contour segment keeps ``auto``, which decides per body)."""
+    """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its contours
+    when it has several (a one-outline segment keeps ``auto``, which decides per body; one open
+    stroke takes ``linear`` or ``injective`` where auto would, else keeps ``auto``)."""
     moving = [p for p in segment.pairs if p.moving]
-    if method != "auto" or len(moving) <= 1:
+    if method != "auto" or not moving or (len(moving) == 1 and moving[0].closed):
         return method
-    from .qcurves import auto_choice_contours
+    from .qcurves import auto_choice, auto_choice_contours
 
-    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed]).method
+    if len(moving) == 1:  # one open stroke: auto's own choice, its crossings read as a stroke's
+        chosen = auto_choice(moving[0].k0, moving[0].k1, segment.joints, closed=False).method
+        return chosen if chosen in ("linear", "injective") else method
+
+    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
+                                [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed]).method
 
 
 def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
@@ -246,6 +252,7 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
         k1 = np.concatenate([pairs[i].k1 for i in moving])
         cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
         single = len(moving) == 1 and pairs[moving[0]].closed
+        chosen = segment_method(segment, method)
         if per_outline(method) and not single:
             # these methods need one closed outline: each contour takes them on its own (open ones the
             # rigid paths), and its centre follows the rigid paths of the whole shape
@@ -254,8 +261,25 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
                 pair = pairs[i]
                 own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
                 frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
+        elif chosen == "injective" and not single:
+            # one mesh for every moving contour, so holes stay inside their outlines
+            from .injective import injective_contours
+
+            found = injective_contours([pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving],
+                                       [pairs[i].closed for i in moving], t)
+            for i, part in zip(moving, found):
+                frames[i] = part
+        elif method == "auto" and chosen == "linear" and not single:
+            # auto's straight paths: each closed contour's copies spread along its edges first
+            from .qcurves import straight
+
+            for i in moving:
+                pair = pairs[i]
+                path = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
+                path[t == 0.0], path[t == 1.0] = pair.k0, pair.k1
+                frames[i] = path
         else:
-            together = interpolate(k0, k1, t, segment_method(segment, method), segment.joints)
+            together = interpolate(k0, k1, t, chosen, segment.joints)
             for i, part in zip(moving, np.split(together, cuts, axis=1)):
                 frames[i] = part
     for i, pair in enumerate(pairs):

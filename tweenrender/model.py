@@ -182,6 +182,7 @@ class Scene:
     path: Path | None = None
     unmatched: str = "grow"
     balance: str = DEFAULT_BALANCE  # how balancing places copies of a vertex (maths §5.6)
+    sources: tuple[Path, ...] = ()  # every file the scene was read from: the scene, its SVG keys and drawings
 
     @property
     def duration(self) -> float:

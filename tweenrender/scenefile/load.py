@@ -107,7 +107,8 @@ def drawings_scene(paths: Sequence[Path], step: float = 1.0) -> Scene:
     shapes = tuple(drawing_shapes(drawings, keys, "grow"))
     if not shapes:
         raise SceneError(paths[0], None, "expected at least one visible shape in the drawings, found none")
-    scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0])
+    scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0],
+                  sources=tuple(paths))
     _Reader(paths[0], "", "toml").matching_effort(shapes, scene.matching)
     return scene
 
@@ -200,6 +201,7 @@ class _Reader:
         self.path = path
         self.text = text
         self.locate = json_line_of if fmt == "json" else line_of
+        self.sources: dict[Path, None] = {path: None}  # every file read, in order (a dict keeps it once)
 
     def fail(self, where: str, message: str) -> SceneError:
         line = self.locate(self.text, where) if where else None
@@ -315,7 +317,7 @@ class _Reader:
         balance = self.choice(top.get("balance", DEFAULT_BALANCE), "balance", BALANCES, "balance")
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
                      method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched,
-                     balance=balance)
+                     balance=balance, sources=tuple(self.sources))
 
     def drawings(self, items: list[Any], unmatched: str) -> tuple[tuple[Shape, ...], tuple[float, float, float, float]]:
         """``[[drawing]]`` keys: whole SVG files at times; their shapes and the first drawing's view box."""
@@ -340,6 +342,7 @@ class _Reader:
                 tolerance = self.number(table["tolerance"], f"{where}.tolerance", 1e-9, 1e6,
                                         "a tolerance in world units")
             keys.append(DrawingKey(file, time, ease, tolerance))
+            self.sources[file] = None
         try:
             drawings, box = read_drawings(keys)
         except SvgError as error:
@@ -538,6 +541,7 @@ class _Reader:
         element = self.string(table["id"], f"{where}.id")
         tolerance = self.number(table.get("tolerance", DEFAULT_TOLERANCE), f"{where}.tolerance",
                                 1e-9, 1e6, "a tolerance in world units")
+        self.sources[self.path.parent / file] = None
         try:
             contours = load_svg_contours(self.path.parent / file, element, tolerance)
         except SvgError as error:

@@ -20,6 +20,7 @@ from typing import Sequence
 
 import numpy as np
 
+from ..core.assignment import min_cost_assignment
 from ..model import Contour, Key, Shape, frozen_points
 from .svg import Drawing, Element, read_drawing
 
@@ -80,8 +81,6 @@ def drawing_shapes(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], unma
 
 def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> list[tuple[int | None, int | None]]:
     """Pairs ``(i, j)`` of elements of consecutive drawings (``None``: no partner)."""
-    from scipy.optimize import linear_sum_assignment
-
     pairs: list[tuple[int | None, int | None]] = []
     ids_a = {e.id: i for i, e in enumerate(a) if e.id and sum(x.id == e.id for x in a) == 1}
     ids_b = {e.id: j for j, e in enumerate(b) if e.id and sum(x.id == e.id for x in b) == 1}
@@ -103,7 +102,7 @@ def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float) 
             full[:m, n:] = np.where(np.eye(m, dtype=bool), _UNMATCHED_COST, big)
             full[m:, :n] = np.where(np.eye(n, dtype=bool), _UNMATCHED_COST, big)
             full[m:, n:] = 0.0
-            rows, cols = linear_sum_assignment(full)
+            rows, cols = min_cost_assignment(full)
             paired = [(left[r], right[c]) for r, c in zip(rows, cols) if r < m and c < n]
             pairs += paired
             left = [i for i in left if i not in {p[0] for p in paired}]

@@ -203,7 +203,11 @@ def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> C
     walked_b = np.ascontiguousarray(b[walk])
     small = matching.cost == "distance" and not exhaustive and _small_dtw.takes(len(a), len(b))
     kernels = _small_dtw if small else _kernels()
-    if matching.cost == "distance":
+    if matching.cost == "distance" and not (exhaustive or small):
+        from . import _lean_dtw  # the same path as maes_search, in memory n·√m instead of m·n
+
+        _, nodes = _lean_dtw.lean_maes_search(a, walked_b, _lean_dtw.checkpoint_rows(len(a)))
+    elif matching.cost == "distance":
         search = kernels.every_start_search if exhaustive else kernels.maes_search
         _, nodes = search(kernels.distance_matrix(a, walked_b))
     else:

@@ -114,7 +114,7 @@ def test_default_workers() -> None:
     scene_text = SQUARE.replace("time = 2\n", "time = 20\n")
     job = RenderJob(parse_scene(scene_text, "long.toml"), size=(1920, 1080))  # 481 frames of 1080p
     assert default_workers(job, "mp4", cpus=8) == 1  # the encoder is the limit
-    assert default_workers(job, "png", cpus=4) == 4
+    assert default_workers(job, "png", cpus=4) == 2  # four would hold more than 400 MiB at 1080p
     assert default_workers(job, "png", cpus=1) == 1
     short = RenderJob(job.scene, size=(320, 240))
     assert default_workers(short, "png", cpus=4) == 1

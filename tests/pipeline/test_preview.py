@@ -259,3 +259,16 @@ def test_a_bad_scene_at_start_is_shown_not_fatal(tmp_path: Path) -> None:
         assert state["error"] is None
     finally:
         assert stop(preview)[0] == 143
+
+
+def test_watchfiles_is_imported_by_the_preview_only(tmp_path: Path) -> None:
+    scene = tmp_path / "box.toml"
+    scene.write_text(SCENE.format(fill=_hex(RED)))
+    code = ("import sys\n"
+            "from tweenrender.cli.main import main\n"
+            f"code = main(['render', {str(scene)!r}, '-o', {str(tmp_path / 'f')!r}, '-q', '--frames', '0:2'])\n"
+            "import tweenrender.pipeline.preview\n"
+            "print('result', code, 'watchfiles' in sys.modules)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, cwd=ROOT,
+                          env={**os.environ, "PYTHONPATH": str(ROOT)})
+    assert done.stdout.splitlines()[-1] == "result 0 False", done.stderr

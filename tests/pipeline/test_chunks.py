@@ -120,6 +120,9 @@ def test_default_workers_measures_only_what_can_pay(tmp_path: Path, monkeypatch:
     assert workers.default_workers(job, "mp4", cpus=2) == 2 and measured == ["mp4"]
     assert workers.default_workers(RenderJob(job.scene, size=(160, 120)), "mp4", cpus=2) == 1
     assert workers.default_workers(job, "mp4", cpus=1) == 1 and measured == ["mp4"]
+    # at 1080p no second process with its encoder fits 400 MiB: one, and nothing measured
+    assert workers.default_workers(RenderJob(job.scene, size=(1920, 1080)), "mp4", cpus=8) == 1
+    assert measured == ["mp4"]
 
 
 def test_ctrl_c_stops_chunk_workers_at_once_and_leaves_nothing(tmp_path: Path) -> None:

@@ -158,8 +158,9 @@ def default_workers(job: RenderJob, fmt: str, cpus: int | None = None, cost: Cos
     :func:`choose_workers`: an encoder-bound video keeps one process (more
     would only compete with the encoder for the cores), a detailed, stroked
     scene whose drawing is the limit gets more, and PNG frames, compressed
-    where they are drawn, one per core. Clips too short to repay starting
-    processes are not measured.
+    where they are drawn, one per core, as far as the memory budget allows.
+    Clips too short to repay starting processes, and frames too large for a
+    second process to fit the budget, are not measured.
     """
     if cpus is None:
         cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
@@ -167,6 +168,8 @@ def default_workers(job: RenderJob, fmt: str, cpus: int | None = None, cost: Cos
     frames = len(job.frame_range)
     if cpus < 2 or width * height * frames < _MIN_PARALLEL_PIXELS:
         return 1
+    if tree_mib(fmt, width * height, 2) > memory_budget_mib(width * height):
+        return 1  # no second process fits the memory budget: nothing to measure
     cost = cost or measure_cost(job, fmt)
     return choose_workers(cost, fmt, frames, width * height * 4, cpus)
 

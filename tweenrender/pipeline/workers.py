@@ -71,8 +71,8 @@ class Cost:
 
 
 def measure_cost(job: RenderJob, fmt: str) -> Cost:
-    """Time drawing frames of ``job`` (three from its middle: the first builds the job's tracks and
-    surface, the other two are timed) and the encoder on those three frames (its CPU time, start
+    """Time drawing frames of ``job`` in CPU seconds (three from its middle: the first builds the job's
+    tracks and surface, the other two are timed) and the encoder on those three frames (its CPU time, start
     included, see :mod:`..encode.encoder_cost`; PNG compression timed for PNG frames)."""
     import time
 
@@ -83,14 +83,14 @@ def measure_cost(job: RenderJob, fmt: str) -> Cost:
     middle = len(indices) // 2
     picked = [indices[min(middle + k, len(indices) - 1)] for k in range(3)]
     pictures = [draw_frame(frames, picked[0]).copy()]
-    start = time.perf_counter()
+    start = time.process_time()  # CPU seconds, as the encoder's are: other load on the machine stretches neither
     for index in picked[1:]:
         pictures.append(draw_frame(frames, index).copy())
-    draw = (time.perf_counter() - start) / (len(picked) - 1)
+    draw = (time.process_time() - start) / (len(picked) - 1)
     if fmt == "png":
-        start = time.perf_counter()
+        start = time.process_time()
         png_bytes(pictures[-1])
-        return Cost(draw, time.perf_counter() - start)
+        return Cost(draw, time.process_time() - start)
     from ..encode.encoder_cost import encoder_seconds
 
     return Cost(draw, encoder_seconds(fmt, pictures, job.rate, alpha=job.scene.background[3] < 255))

@@ -294,6 +294,24 @@ MUTANTS = [
            "times = [f / total for f in frames]", "times = [f / (total - 1) for f in frames]", VECTOR),
     Mutant("vector: a linear segment's easing dropped", "tweenrender/pipeline/vector_export.py",
            "ease = _handles(segment.ease) or STRAIGHT", "ease = STRAIGHT", VECTOR),
+    # -- start-up, memory and the preview ------------------------------------------------------------
+    Mutant("assignment: column potentials raised instead of lowered", "tweenrender/core/assignment.py",
+           "v[used] -= delta", "v[used] += delta", ("tests/core/test_assignment.py",)),
+    Mutant("small search: ties go to the diagonal step", "tweenrender/core/_small_dtw.py",
+           "better = diagonal < left", "better = diagonal <= left", ("tests/core/test_small_dtw.py",)),
+    Mutant("small search: the last start met among equals", "tweenrender/core/_small_dtw.py",
+           "start = next(s for s in _start_order(n) if costs[s] == best)",
+           "start = [s for s in _start_order(n) if costs[s] == best][-1]", ("tests/core/test_small_dtw.py",)),
+    Mutant("checkpointed search: a stretch recomputed from the checkpoint before", "tweenrender/core/_lean_dtw.py",
+           "prev[:] = checkpoints[stretch, :]", "prev[:] = checkpoints[max(stretch - 1, 0), :]",
+           ("tests/core/test_lean_dtw.py",)),
+    Mutant("workers: the memory budget ignored", "tweenrender/pipeline/workers.py",
+           "        if tree_mib(fmt, pixels, processes) > memory_budget_mib(pixels):\n            break",
+           "        if False:\n            break", ("tests/pipeline/test_chunks.py",)),
+    Mutant("preview: a bad save replaces the shown take", "tweenrender/pipeline/preview/takes.py",
+           "            elif error is not None:\n                self.error = error",
+           "            elif error is not None:\n                self.error, self.take = error, None",
+           ("tests/pipeline/test_preview.py",)),
 ]
 
 

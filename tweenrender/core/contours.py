@@ -16,6 +16,7 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from .assignment import min_cost_assignment
 from .geometry import signed_area
 
 __all__ = ["ROLES", "inside", "roles", "pair_contours", "nearest_point", "anchor", "contour_size"]
@@ -114,9 +115,7 @@ def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Arra
         sb = np.log([contour_size(b[j], b_closed[j]) for j in jb])
         cost = (np.linalg.norm(pa[:, None] - pb[None], axis=-1) / scale
                 + _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))
-        from scipy.optimize import linear_sum_assignment
-
-        rows, cols = linear_sum_assignment(cost)
+        rows, cols = min_cost_assignment(cost)
         pairs += [(ia[r], jb[c]) for r, c in zip(rows, cols)]
         pairs += [(i, None) for k, i in enumerate(ia) if k not in set(rows.tolist())]
         pairs += [(None, j) for k, j in enumerate(jb) if k not in set(cols.tolist())]

@@ -20,6 +20,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
+from ..core.assignment import min_cost_assignment
 from ..core.easing import Easing
 from ..errors import SceneError
 from ..model import Contour, Hint, Key, Shape, frozen_points
@@ -181,8 +182,6 @@ def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float,
                    forced: Sequence[tuple[int, int]] = ()) -> list[tuple[int | None, int | None]]:
     """Pairs ``(i, j)`` of elements of consecutive drawings (``None``: no partner); ``forced`` pairs
     (shape hints make them) come first, then ids, then the assignment."""
-    from scipy.optimize import linear_sum_assignment
-
     pairs: list[tuple[int | None, int | None]] = [(i, j) for i, j in forced]
     taken_a, taken_b = {i for i, _ in forced}, {j for _, j in forced}
     ids_a = {e.id: i for i, e in enumerate(a) if e.id and sum(x.id == e.id for x in a) == 1 and i not in taken_a}
@@ -205,7 +204,7 @@ def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float,
             full[:m, n:] = np.where(np.eye(m, dtype=bool), _UNMATCHED_COST, big)
             full[m:, :n] = np.where(np.eye(n, dtype=bool), _UNMATCHED_COST, big)
             full[m:, n:] = 0.0
-            rows, cols = linear_sum_assignment(full)
+            rows, cols = min_cost_assignment(full)
             paired = [(left[r], right[c]) for r, c in zip(rows, cols) if r < m and c < n]
             pairs += paired
             left = [i for i in left if i not in {p[0] for p in paired}]

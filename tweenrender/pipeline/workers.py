@@ -88,7 +88,7 @@ def measure_cost(job: RenderJob, fmt: str) -> Cost:
     for index in picked[1:]:
         pictures.append(draw_frame(frames, index).copy())
     draw = (time.process_time() - start) / (len(picked) - 1)
-    if TABLE[fmt].encode_cost is None:  # compressed where it is drawn: timed here
+    if TABLE[fmt].folder:  # compressed where it is drawn: timed here
         start = time.process_time()
         png_bytes(pictures[-1])
         return Cost(draw, time.process_time() - start)

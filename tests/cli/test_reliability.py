@@ -72,7 +72,7 @@ def test_verbose_shows_the_traceback_and_keeps_the_exit_code(tmp_path: Path) -> 
 def test_an_unexpected_failure_is_one_line_and_exit_1(cli, tmp_path: Path, monkeypatch) -> None:
     import tweenrender.scenefile
 
-    def broken(path: object, step: float = 1.0) -> None:
+    def broken(path: object, step: float = 1.0, *timing: object) -> None:
         raise ZeroDivisionError("a bug\nover two lines")
 
     monkeypatch.setattr(tweenrender.scenefile, "load_scene", broken)
@@ -259,7 +259,7 @@ def _scene_text(keys: list[list[tuple[float, float]]], method: str, view: str = 
 def _frames(folder: Path) -> list[np.ndarray]:
     import imageio.v3 as iio
 
-    return [iio.imread(path) for path in sorted(folder.iterdir())]
+    return [iio.imread(path) for path in sorted(folder.glob("frame_*.png"))]
 
 
 @pytest.mark.parametrize("method", METHODS)

@@ -40,20 +40,43 @@ _recent: OrderedDict[tuple[int, str | None, tuple[int, int] | None, Color | None
     OrderedDict()
 
 
-def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0) -> Scene:
+def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0,
+               ease: str = "linear", hold: float = 0.0, stagger: float = 0.0) -> Scene:
     """The scene at ``path`` (TOML; JSON by its ``.json`` suffix; one SVG drawing by ``.svg``), validated;
-    or, for a list of SVG files, their drawings morphing one into the next every ``step`` seconds
-    (what ``tweenrender render a.svg b.svg`` renders)."""
+    or, for a list of SVG files, their drawings morphing one into the next (what ``tweenrender render
+    a.svg b.svg`` renders): each shown ``hold`` seconds, then moving for ``step`` seconds under ``ease``,
+    element i of a drawing starting ``i × stagger`` seconds later and arriving on time."""
     from ..scenefile import load_scene as load
 
     if isinstance(path, (str, os.PathLike)):
-        return load(Path(path), step)
+        given = [n for n, v, d in (("ease", ease, "linear"), ("hold", hold, 0.0), ("stagger", stagger, 0.0)) if v != d]
+        if given and Path(path).suffix.lower() != ".svg":
+            raise OptionError("applies to SVG drawings morphing into each other; a scene file sets ease and "
+                              "stagger itself", given[0])
+        _check_timing(ease, hold, stagger)
+        return load(Path(path), step, ease, float(hold), float(stagger))
     if isinstance(path, (bytes, bytearray)) or not isinstance(path, Sequence) or \
             not all(isinstance(p, (str, os.PathLike)) for p in path):
         raise OptionError(f"path: expected a scene file's name or a list of SVG files, found {path!r}")
     if isinstance(step, bool) or not isinstance(step, Real):
         raise OptionError(f"expected seconds between drawings as a number, found {step!r}", "step")
-    return load([Path(p) for p in path], float(step))
+    _check_timing(ease, hold, stagger)
+    return load([Path(p) for p in path], float(step), ease, float(hold), float(stagger))
+
+
+def _check_timing(ease: object, hold: object, stagger: object) -> None:
+    """Refuse a timing of drawings that is not one: an unknown curve, a negative or non-numeric hold."""
+    from ..core.easing import parse_easing
+
+    if not isinstance(ease, str):
+        raise OptionError(f"expected an easing name or curve, found {ease!r}", "ease")
+    try:
+        parse_easing(ease)
+    except ValueError as error:
+        raise OptionError(str(error), "ease") from None
+    for name, value in (("hold", hold), ("stagger", stagger)):
+        if isinstance(value, bool) or not isinstance(value, Real) or not 0 <= float(value) <= 1e6:
+            raise OptionError(f"expected seconds from 0 to 1000000, found {value!r}", name)
 
 
 def frame(scene: Scene, time: float, *, method: str | None = None, size: tuple[int, int] | None = None,

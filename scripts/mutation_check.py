@@ -293,7 +293,7 @@ MUTANTS = [
     Mutant("svg: keyTimes over F - 1 frames", "tweenrender/encode/animated_svg.py",
            "times = [f / total for f in frames]", "times = [f / (total - 1) for f in frames]", VECTOR),
     Mutant("vector: a linear segment's easing dropped", "tweenrender/pipeline/vector_export.py",
-           "ease = _handles(segment.ease) or STRAIGHT", "ease = STRAIGHT", VECTOR),
+           "ease = _timing(segment) or STRAIGHT", "ease = STRAIGHT", VECTOR),
     # -- start-up, memory and the preview ------------------------------------------------------------
     Mutant("assignment: column potentials raised instead of lowered", "tweenrender/core/assignment.py",
            "v[used] -= delta", "v[used] += delta", ("tests/core/test_assignment.py",)),

@@ -354,3 +354,30 @@ def test_gradients_and_clip_paths_are_refused_naming_the_element(tmp_path: Path,
         with pytest.raises(OptionError, match=f"'box'.*{what}"):
             tr.write(scene, tmp_path / f"x{suffix}")
         assert not (tmp_path / f"x{suffix}").exists()
+
+
+@pytest.mark.parametrize("ease, handles", [("ease-in-out", (0.42, 0.0, 0.58, 1.0)),
+                                           ("cubic-bezier(0.3, -0.4, 0.7, 1.4)", (0.3, -0.4, 0.7, 1.4))])
+def test_css_easings_export_exactly_as_handles(tmp_path: Path, ease: str, handles: tuple) -> None:
+    """CSS curves (overshoot too) are the keyframe's handles; played by hand (x(u) = fraction by bisection,
+    the position at y(u)) they give the exact outlines at every frame."""
+    scene = _turn(tmp_path, "linear", ease)
+    document = json.loads(tr.write(scene, tmp_path / "css.json").read_text())
+    outline = _items(_shape_layers(document)[0], "sh")[0]["ks"]["k"]
+    assert [k["t"] for k in outline] == [0, 40]
+    got = (outline[0]["o"]["x"][0], outline[0]["o"]["y"][0], outline[0]["i"]["x"][0], outline[0]["i"]["y"][0])
+    assert got == pytest.approx(handles)
+    x1, y1, x2, y2 = handles
+    start, end = np.array(outline[0]["s"][0]["v"]), np.array(outline[1]["s"][0]["v"])
+
+    def bezier(u: float, p1: float, p2: float) -> float:
+        return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
+
+    for frame in range(41):
+        low, high = 0.0, 1.0
+        for _ in range(60):
+            mid = (low + high) / 2
+            low, high = (mid, high) if bezier(mid, x1, x2) < frame / 40 else (low, mid)
+        played = start + bezier(low, y1, y2) * (end - start)
+        exact = _pixels(tr.outlines(scene, frame / 20)[0])
+        assert np.linalg.norm(played - exact, axis=1).max() <= 0.01

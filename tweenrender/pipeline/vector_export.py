@@ -144,20 +144,26 @@ def _refuse_unsupported(shape: Shape, at: ShapeAt) -> None:
 
 def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int,
                 count: int) -> tuple[int, int, Segment] | None:
-    """The clip frames of a ``linear`` segment's two keys (and the segment), when both are whole
-    frames of the clip and its easing has exact handles."""
+    """The clip frames where a ``linear`` segment's motion starts (its first key, or after the key's hold)
+    and ends (its second key), and the segment, when both are whole frames of the clip, every pair moves
+    together (no stagger) and its easing has exact handles."""
     if not track.segments:
         return None
     seg = track.segments[segment]
-    if segment_method(seg, method) != "linear" or _handles(seg.ease) is None:
+    if segment_method(seg, method) != "linear" or _timing(seg) is None or seg.stagger > 0:
         return None
     ends = []
-    for time in (seg.start, seg.end):
+    for time in (seg.start + seg.delay, seg.end):
         at = time * fps - offset
         if abs(at - round(at)) > _ON_FRAME or not 0 <= round(at) < count:
             return None
         ends.append(int(round(at)))
     return ends[0], ends[1], seg
+
+
+def _timing(segment: Segment) -> Handles | None:
+    """The cubic-bezier handles of a segment's easing curve (else of its easing's name), if a Bézier draws it."""
+    return _handles(segment.easing) or _handles(segment.ease)
 
 
 def _handles(ease: object) -> Handles | None:
@@ -210,7 +216,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         path_frames: tuple[int, ...] = (a, b)
         paths = tuple(np.stack([_drawn(viewport, ends[i][0], flips[i]), _drawn(viewport, ends[i][1], flips[i])])
                       for i in keep)
-        ease = _handles(segment.ease) or STRAIGHT
+        ease = _timing(segment) or STRAIGHT
     else:
         keys = greedy_keyframes(np.concatenate(samples, axis=1), max_error) if samples else [0]
         path_frames = tuple(first + k for k in keys)

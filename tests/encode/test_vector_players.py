@@ -6,7 +6,8 @@ the frames on both sides of every key — the animated
 SVG by headless Chromium paused at t = 0, ¼, ½, ¾, 1 of the clip (at frame times). Each picture
 is compared with ``tr.frame`` at the same time: coverage IoU ≥ 0.98 and mean colour error ≤ 0.03
 (DESIGN, "Measures used in acceptance"), for the shipped scenes, real icon pairs (holes, strokes,
-several coloured elements), every method, and a scene whose paint changes.
+several coloured elements, a paint order that switches), every method, a scene whose paint changes,
+and drawings held between moves on a CSS easing with their elements staggered.
 """
 
 from __future__ import annotations
@@ -150,6 +151,16 @@ def test_every_method_in_rlottie_and_thorvg(method: str, pair: tuple[str, str], 
     _lottie_players(_icons(*pair), tmp_path, method, every_frame=False)
 
 
+def _timed() -> tr.Scene:
+    """Three drawings, each held a quarter second, moving on CSS's ease-in-out, elements staggered."""
+    faces = [ICONS / "twemoji/1f600.svg", ICONS / "twemoji/1f60e.svg", ICONS / "twemoji/1f600.svg"]
+    return tr.load_scene(faces, step=1.0, ease="ease-in-out", hold=0.25, stagger=0.05)
+
+
+def test_holds_css_easing_and_stagger_in_rlottie_and_thorvg(tmp_path: Path) -> None:
+    _lottie_players(_timed(), tmp_path)
+
+
 def test_paint_changes_in_rlottie_and_thorvg(tmp_path: Path) -> None:
     _lottie_players(_paint_scene(tmp_path), tmp_path)
 
@@ -162,7 +173,7 @@ def test_svg_in_chromium_at_five_times(tmp_path: Path) -> None:
         pytest.skip("no chromium on this machine to play the animated SVG")
     cases: list[tuple[str, tr.Scene, str | None]] = [(p.stem, tr.load_scene(p), None) for p in SHIPPED]
     cases += [(a.replace("/", "-"), _icons(a, b), None) for a, b in ICON_PAIRS]
-    cases += [("paint", _paint_scene(tmp_path), None)]
+    cases += [("paint", _paint_scene(tmp_path), None), ("timed", _timed(), None)]
     cases += [(f"holes-{m}", _icons(*ICON_PAIRS[0]), m) for m in ("nonlinear", "arap", "intrinsic")]
     files, picks = [], []
     for name, scene, method in cases:

@@ -162,8 +162,13 @@ def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int
 
 
 def _timing(segment: Segment) -> Handles | None:
-    """The cubic-bezier handles of a segment's easing curve (else of its easing's name), if a Bézier draws it."""
-    return _handles(segment.easing) or _handles(segment.ease)
+    """The cubic-bezier handles of a segment's easing curve (else of its easing's name), if a Bézier draws it
+    and both files can carry it: SMIL's ``keySplines`` take values in [0, 1] only, so a curve that
+    overshoots is baked."""
+    handles = _handles(segment.easing) or _handles(segment.ease)
+    if handles is None or not all(0.0 <= h <= 1.0 for h in handles):
+        return None
+    return handles
 
 
 def _handles(ease: object) -> Handles | None:

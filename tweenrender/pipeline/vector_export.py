@@ -83,7 +83,8 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
             exact = _exact_keys(track, int(segments[first]), method, job.rate, offset, count)
             ending = _ending(track, int(segments[first]), method, stop, job.rate, offset, count) \
                 if exact is None and whole else None
-            run = _run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error, ending)
+            run = _run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error,
+                       times[first:stop], ending)
             placed.append((int(phases[first]), orders[int(phases[first])].index(index), run))
     runs = tuple(run for _, _, run in sorted(placed, key=lambda item: item[:2]))
     return VectorClip((width, height), job.rate, count, scene.background, runs, max_error)
@@ -201,7 +202,7 @@ def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offs
 
 
 def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: Viewport,
-         exact: tuple[int, int, Segment] | None, method: str, max_error: float,
+         exact: tuple[int, int, Segment] | None, method: str, max_error: float, run_times: Array,
          ending: tuple[ShapeAt, list[Array]] | None = None) -> VectorRun:
     keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
     flips = shapes[0].reversed or (False,) * len(shapes[0].contours)
@@ -215,6 +216,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                    for s, i in zip(samples, keep)]
         shapes = [*shapes, end_shape]
     closed = tuple(shapes[0].closed[i] for i in keep)
+    paths: tuple[Array, ...] = ()
     if exact is not None and every_pair:
         a, b, segment = exact
         ends = pair_paths(segment, np.array([0.0, 1.0]), method)  # every pair, growing ones too: (2, L_i, 2)
@@ -222,7 +224,15 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         paths = tuple(np.stack([_drawn(viewport, ends[i][0], flips[i]), _drawn(viewport, ends[i][1], flips[i])])
                       for i in keep)
         ease = _timing(segment) or STRAIGHT
-    else:
+        # the eased chord must be what is drawn at every frame (a contour may grow otherwise than straight)
+        t = segment.local_t(run_times)
+        k0 = np.concatenate([p[0] for p in paths]) if paths else np.zeros((0, 2))
+        k1 = np.concatenate([p[1] for p in paths]) if paths else np.zeros((0, 2))
+        chord = k0 + t[:, None, None] * (k1 - k0)
+        if paths and float(np.linalg.norm(chord - joined, axis=-1).max()) > max_error:
+            paths = ()
+            exact = None
+    if exact is None or not every_pair:
         keys = greedy_keyframes(np.concatenate(samples, axis=1), max_error) if samples else [0]
         path_frames = tuple(first + k for k in keys)
         paths = tuple(s[keys] for s in samples)

@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from ..errors import UsageError
-from ..model import METHODS
+from ..core.methods import METHODS
 from .args import fps, method, seconds, size
 
 

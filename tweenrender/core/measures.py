@@ -23,6 +23,7 @@ from numpy.typing import NDArray
 
 from .angles import shorter_change, turning_angles, wrap
 from .crossings import self_crossings
+from .tangles import SWEEP as _SWEEP
 from .geometry import edge_lengths, perimeter, signed_area
 from .methods import interpolate
 
@@ -31,8 +32,8 @@ __all__ = ["SWEEP", "MethodReport", "Curves", "report", "curves", "edge_error", 
 
 Array = NDArray[np.float64]
 
-SWEEP = np.linspace(0.0, 1.0, 101)
-"""The t values over which minima and maxima are taken."""
+SWEEP = _SWEEP
+"""The t values over which minima and maxima are taken: 101 evenly spaced."""
 
 
 def edge_error(frames: Array, k0: Array, k1: Array, t: Array) -> Array:
@@ -92,10 +93,12 @@ class Curves:
 
 
 def curves(k0: Array, k1: Array, method: str, t: Array = SWEEP,
-           joints: Sequence[tuple[int, int]] = ()) -> Curves:
-    """Every measure of ``method`` between corresponding keys ``(N, 2)`` at each of ``t (T,)``."""
+           joints: Sequence[tuple[int, int]] = (), frames: Array | None = None) -> Curves:
+    """Every measure of ``method`` between corresponding keys ``(N, 2)`` at each of ``t (T,)``;
+    ``frames (T, N, 2)``, when given, are the inbetweens as drawn (a contour moving with others)."""
     t = np.asarray(t, dtype=np.float64)
-    frames = interpolate(k0, k1, t, method, joints)
+    if frames is None:
+        frames = interpolate(k0, k1, t, method, joints)
     return Curves(
         t=t,
         perimeter_ratio=perimeter_ratio(frames, k0, k1, t),

@@ -22,6 +22,7 @@ from typing import Any, Callable, Iterator, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from ..encode.formats import TABLE
 from ..errors import RenderError
 from .job import Frames, RenderJob
 
@@ -87,7 +88,7 @@ def measure_cost(job: RenderJob, fmt: str) -> Cost:
     for index in picked[1:]:
         pictures.append(draw_frame(frames, index).copy())
     draw = (time.process_time() - start) / (len(picked) - 1)
-    if fmt == "png":
+    if TABLE[fmt].folder:  # compressed where it is drawn: timed here
         start = time.process_time()
         png_bytes(pictures[-1])
         return Cost(draw, time.process_time() - start)
@@ -99,18 +100,18 @@ def measure_cost(job: RenderJob, fmt: str) -> Cost:
 def predicted_seconds(cost: Cost, fmt: str, frames: int, frame_bytes: int, processes: int, cpus: int) -> float:
     """Predicted wall time of rendering ``frames`` frames with ``processes`` drawing processes on ``cpus`` cores.
 
-    PNG: each process draws and compresses, so the work divides among the
-    processes (up to the cores). Video: one process draws while the encoder
+    PNG frames: each process draws and compresses, so the work divides among
+    the processes (up to the cores). Video: one process draws while the encoder
     runs, so a frame takes the longer of drawing it (slowed by sharing the
     cores) and the cores' time for all the work; more processes divide the
-    drawing (MP4 and WebM as chunks with encoders of their own, a GIF as
-    frames sent back to its one encoder, which costs a copy each).
+    drawing (a chunked format as chunks with encoders of their own, any other
+    as frames sent back to its one encoder, which costs a copy each).
     """
     start = _START_SECONDS * processes if processes > 1 else 0.0
-    if fmt == "png":
+    if TABLE[fmt].folder:
         return frames * (cost.draw + cost.encode) / min(processes, cpus) + start
     shared = cost.draw + cost.encode
-    if processes > 1 and fmt == "gif":
+    if processes > 1 and not TABLE[fmt].chunked:
         shared += _TRANSFER_SECONDS_PER_BYTE * frame_bytes
     per_frame = max(cost.draw * _CONTENTION / processes, shared / cpus)
     return frames * per_frame + start
@@ -122,9 +123,9 @@ def tree_mib(fmt: str, pixels: int, processes: int) -> float:
     its own; PNG and GIF as frames drawn there and written (or encoded) by the command's process."""
     megapixels = pixels / 1e6
     encoder = _ENCODER_MIB_PER_MEGAPIXEL * megapixels
-    if fmt in ("mp4", "webm"):
+    if TABLE[fmt].chunked:
         return _IDLE_PARENT_MIB + processes * (_PROCESS_MIB + encoder)
-    if fmt == "png":  # compressed where drawn, written by the command's process
+    if TABLE[fmt].folder:  # compressed where drawn, written by the command's process
         return _IDLE_PARENT_MIB + processes * _PROCESS_MIB
     return _PROCESS_MIB + encoder + processes * _PROCESS_MIB  # one encoder, fed by the command's process
 

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any, Sequence
 
 from ...errors import TweenrenderError, printable
-from ...model import METHODS
+from ...core.methods import METHODS
 
 __all__ = ["Take", "Previewer", "MAX_FRAMES"]
 

@@ -54,10 +54,6 @@ def easing_of(key: Key) -> Easing:
         raise GeometryError(str(error)) from None
 
 
-_CLAMPED = ("injective",)
-"""Methods whose weights cannot leave [0, 1]: an overshooting easing is clamped for them."""
-
-
 def frame_count(duration: float, fps: float) -> int:
     """Frames from time 0 to the frame nearest ``duration``, both included: ``round(duration · fps) + 1``.
 
@@ -245,8 +241,6 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
     moving = [i for i, p in enumerate(pairs) if p.moving]
-    if method in _CLAMPED:
-        t = np.clip(t, 0.0, 1.0)
     if moving:
         k0 = np.concatenate([pairs[i].k0 for i in moving])
         k1 = np.concatenate([pairs[i].k1 for i in moving])

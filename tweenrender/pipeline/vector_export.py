@@ -148,10 +148,10 @@ def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int
     if not track.segments:
         return None
     seg = track.segments[segment]
-    if segment_method(seg, method) != "linear" or _handles(seg.ease) is None:
+    if segment_method(seg, method) != "linear" or _handles(seg.easing) is None or seg.stagger > 0:
         return None
     ends = []
-    for time in (seg.start, seg.end):
+    for time in (seg.start + seg.delay, seg.end):  # a hold or a stagger starts the motion late
         at = time * fps - offset
         if abs(at - round(at)) > _ON_FRAME or not 0 <= round(at) < count:
             return None
@@ -203,7 +203,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         path_frames: tuple[int, ...] = (a, b)
         paths = tuple(np.stack([_drawn(viewport, ends[0].contours[i], flips[i]),
                                 _drawn(viewport, ends[1].contours[i], flips[i])]) for i in keep)
-        ease = _handles(segment.ease) or STRAIGHT
+        ease = _handles(segment.easing) or STRAIGHT
     else:
         keys = greedy_keyframes(np.concatenate(samples, axis=1), max_error) if samples else [0]
         path_frames = tuple(first + k for k in keys)

@@ -264,13 +264,13 @@ def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
         visible = segment.shown[0] if x == 0.0 else segment.shown[1] if x == 1.0 else True
         contours = tuple(f[k] for f in frames)  # type: ignore[index]
         clips: tuple[tuple[Points, ...], ...] = ()
-        if boxes is not None and 0.0 < x < 1.0:  # gradient and clips move with the element
+        if x in (0.0, 1.0):
+            clips = tuple(tuple(c.points for c in region) for region in (c0 if x == 0.0 else c1))
+        elif boxes is not None:  # gradient and clips move with the element (an overshoot too)
             box = box_of(list(contours))
             if p0.gradient is not None or p1.gradient is not None:
                 paint = replace(paint, gradient=blend_gradient(p0, p1, *boxes, box, x))
             clips = clips_at(c0, c1, *boxes, box, x)
-        elif x in (0.0, 1.0):
-            clips = tuple(tuple(c.points for c in region) for region in (c0 if x == 0.0 else c1))
         phase = 0 if x < segment.switch else 1
         flips = segment.flips[phase] or (False,) * len(pairs)
         drawn_as = segment.ends[phase] if segment.ends is not None else None

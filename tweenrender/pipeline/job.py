@@ -14,16 +14,16 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..core.stacking import Switch, layered, order_at, stacking_plan
-from ..core.timeline import ShapeAt, Track, build_track, frame_count
+from ..core.timeline import ShapeAt, Track, frame_count, tracks_of
 from ..errors import OptionError
 from ..model import Points, Scene
+from ..raster.view import Box
 
 if TYPE_CHECKING:
     from ..raster.panels import Composer
 
 __all__ = ["RenderJob", "Frames", "Progress", "total_frames", "pick_frames", "tracks_of", "scene_view", "stacking_of"]
 
-Box = tuple[float, float, float, float]
 _BLOCK = 32  # frames whose polygons are evaluated in one vectorised call
 Progress = Callable[[int, int], None]
 """Called with ``(frames done, frames in all)`` as a render goes."""
@@ -36,7 +36,8 @@ def total_frames(scene: Scene, fps: float | None = None) -> int:
 
 def pick_frames(spec: str | range | None, total: int) -> range:
     """The frames to render of a clip of ``total``: all (``None``), a ``range``, or ``"A:B"`` text
-    (B exclusive, either side optional, like a Python slice; ``"A"`` alone is one frame)."""
+    (B exclusive, either side optional, like a Python slice, negative numbers counting from the end;
+    ``"A"`` alone is one frame, ``"-1"`` the last)."""
     if spec is None:
         return range(total)
     if isinstance(spec, range):
@@ -49,18 +50,13 @@ def pick_frames(spec: str | range | None, total: int) -> range:
             start = int(start_text) if start_text.strip() else 0
             stop = int(stop_text) if stop_text.strip() else total
             if not colon:
-                stop = start + 1
+                stop = (start + 1) or total  # "-1": the last frame, not the empty slice [-1:0]
         except ValueError:
             raise OptionError(f"frames {text!r}: expected A:B with whole numbers") from None
         picked = range(total)[start:stop]
     if not picked:
         raise OptionError(f"frames {text}: no frames selected; the scene has frames 0 to {total - 1}")
     return picked
-
-
-def tracks_of(scene: Scene) -> tuple[Track, ...]:
-    return tuple(build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
-                 for shape in scene.shapes)
 
 
 def stacking_of(scene: Scene, tracks: Sequence[Track]) -> tuple[Switch, ...]:
@@ -102,7 +98,7 @@ class RenderJob:
     fps: float | None = None
     frames: range | None = None  # default every frame
     paths: bool = False  # every vertex's path and the keys, behind the shapes
-    onion: int = 0  # ghosted inbetweens before and after the frame (see render.overlays)
+    onion: int = 0  # ghosted inbetweens before and after the frame (see raster.overlays)
     strip: bool = False  # the perimeter-ratio strip along each panel's bottom
 
     @property

@@ -5,26 +5,29 @@ and every file it shows: one WebM per method, the storyboard sheet, the
 correspondence picture and the metric charts as PNG. Nothing is fetched from
 the network and no script library is used: a few lines of plain JavaScript keep
 the videos on one clock. The folder is built beside the target and moved into
-place whole; it replaces only an earlier report (a folder holding
-:data:`MARKER`), never anything else.
+place whole with a manifest of its files; it replaces only an earlier report whose
+manifest lists every entry, unchanged (:mod:`~tweenrender.encode.manifest`), never
+anything else.
 """
 
 from __future__ import annotations
 
 import html
+import re
 from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
+from ..core.methods import measured_methods
 from ..core.stacking import Switch, layered
-from ..errors import OptionError
-from ..model import METHODS, Scene
+from ..errors import OptionError, printable
+from ..model import Scene
 from .stats import crossing_runs
 
-__all__ = ["MARKER", "report_methods", "write_report", "page"]
+__all__ = ["REPORT_FILE", "report_methods", "write_report", "page"]
 
-MARKER = ".tweenrender-report"
-"""The file that marks a folder as a report this module wrote (and so may replace)."""
+REPORT_FILE = re.compile(r"(?:index\.html|sheet\.png|correspondence\.png|metrics\.png|[a-z]+\.webm)")
+"""The names of the files a report folder holds: the only names its manifest may list."""
 
 _WIDTH = 384  # pixels of each animation's width (three to a row); the height follows the view
 
@@ -32,16 +35,16 @@ _WIDTH = 384  # pixels of each animation's width (three to a row); the height fo
 def report_methods(scene: Scene) -> tuple[str, ...]:
     """Every method, ``jointed`` only when some shape has joints."""
     jointed = any(shape.joints for shape in scene.shapes)
-    return tuple(m for m in METHODS if m != "jointed" or jointed)
+    return measured_methods(jointed)
 
 
 def _check_target(target: Path) -> None:
+    from ..encode.manifest import frame_names
+    from ..encode.targets import check_own_folder
+
     if target.is_symlink() or (target.exists() and not target.is_dir()):
-        raise OptionError(f"{target}: is not a folder; refusing to replace it with a report")
-    if target.is_dir() and not (target / MARKER).is_file():
-        if any(target.iterdir()):
-            raise OptionError(f"{target}: is a folder that is not a tweenrender report; refusing to replace it "
-                              "(choose another folder)")
+        raise OptionError(f"{printable(str(target))}: is not a folder; refusing to replace it with a report")
+    check_own_folder(target, frame_names(REPORT_FILE), "a report")
 
 
 def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = None,
@@ -49,6 +52,7 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
     """Write the report folder ``target`` for ``methods`` (default :func:`report_methods`); returns
     the path of its ``index.html``. ``progress(name)`` may give a progress callback per video."""
     from ..encode.atomic import commit_folder, discard, prepare_folder, sibling
+    from ..encode.manifest import write_manifest
     from ..pipeline.job import scene_view, stacking_of, tracks_of
     from ..pipeline.library import write
     from ..pipeline.pictures import write_sheet
@@ -56,8 +60,10 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
     from .metric_report import write_metric_plot
     from .stats import stats_dict
 
+    from ..encode.targets import check_output_name
+
     methods = tuple(methods or report_methods(scene))
-    target = Path(target)
+    target = check_output_name(target, "expected a folder's name for the report")
     _check_target(target)
     prepare_folder(target)
     tracks = tracks_of(scene)
@@ -82,7 +88,7 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
         stats = stats_dict(scene, [0.25, 0.5, 0.75], methods)
         switches = stacking_of(scene, tracks)
         (folder / "index.html").write_text(page(scene, videos, stats, (width, height), switches), encoding="utf-8")
-        (folder / MARKER).write_text("a report written by tweenrender; the folder is replaced whole\n")
+        write_manifest(folder)
     except BaseException:
         discard(folder)
         raise
@@ -127,8 +133,12 @@ if (lead) {
 """
 
 
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
 def _esc(text: Any) -> str:
-    return html.escape(str(text), quote=True)
+    """``text`` for HTML: markup characters escaped, a lone surrogate (which UTF-8 cannot hold) as U+FFFD."""
+    return html.escape(_SURROGATE.sub("\ufffd", str(text)), quote=True)
 
 
 def _crossing_text(at: list[float]) -> str:

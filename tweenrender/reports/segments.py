@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Iterator
 
-from ..core.timeline import Pair, Segment, build_track
+from ..core.timeline import Pair, Segment, tracks_of
 from ..model import Matching, Scene, Shape
 
 __all__ = ["Entry", "entries", "nothing_measured"]
@@ -41,9 +41,7 @@ def entries(scene: Scene, matching: Matching | None = None, closed_only: bool = 
     appears or goes; with ``closed_only`` open strokes too, and contours of fewer than three
     vertices, which have no angles or area.
     """
-    matching = matching or scene.matching
-    for shape in scene.shapes:
-        track = build_track(shape, matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
+    for shape, track in zip(scene.shapes, tracks_of(scene, matching)):
         for index, segment in enumerate(track.segments):
             if not all(segment.shown):
                 continue

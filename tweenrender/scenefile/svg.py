@@ -20,7 +20,6 @@ average colour of their stops.
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 from dataclasses import dataclass
@@ -29,7 +28,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..errors import SceneError
+from ..errors import SceneError, did_you_mean
 from ..model import Color, Contour, Paint, frozen_points
 from .svg_document import SHAPES, Document, Drawn, Node, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
@@ -96,11 +95,15 @@ class Element:
 
 @dataclass(frozen=True, slots=True)
 class Drawing:
-    """A whole drawing: its view box in world units ``(xmin, ymin, xmax, ymax)``, y up, and its elements."""
+    """A whole drawing: its view box in world units ``(xmin, ymin, xmax, ymax)``, y up, and its elements.
+
+    ``to_world`` is the 3 × 3 map from the SVG's user units (y down) to world units (``None``: unknown).
+    """
 
     path: Path
     box: tuple[float, float, float, float]
     elements: tuple[Element, ...]
+    to_world: NDArray[np.float64] | None = None
 
 
 # -- one element by id ------------------------------------------------------------------------------
@@ -152,8 +155,7 @@ def _find(document: Document, element_id: str) -> Node:
     ids = document.ids
     if element_id not in ids:
         shapes = [i for i, nodes in ids.items() if nodes[0].tag in SHAPES and nodes[0].svg]
-        close = difflib.get_close_matches(element_id, list(ids), n=1, cutoff=0.6)
-        hint = f'; did you mean "{close[0]}"?' if close else ""
+        hint = did_you_mean(element_id, ids)
         listed = ", ".join(f'"{i}"' for i in shapes[:8])
         listed += f" and {len(shapes) - 8} more" if len(shapes) > 8 else ""
         have = f"shapes with ids: {listed}" if shapes else "no shape in the file has an id"
@@ -237,7 +239,7 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
             element = _element(d, to_world, scale, tol, budget)
             if element is not None:
                 elements.append(element)
-        return Drawing(Path(svg_path), world_box, tuple(elements))
+        return Drawing(Path(svg_path), world_box, tuple(elements), to_world)
     except Refusal as refusal:
         raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
 

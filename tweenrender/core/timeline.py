@@ -305,8 +305,8 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
     """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t (``frames``: the pairs'
     inbetweens already computed, e.g. staggered; the paint follows ``t``).
 
-    At a key only that key's contours are drawn (none that grows from or shrinks to a point there),
-    with the key's own fill rule and windings; in-betweens take the first key's until
+    At a key only that key's contours are drawn (one that grows from or shrinks to a point there is
+    kept, as that point with no stroke width), with the key's own fill rule and windings; in-betweens take the first key's until
     ``segment.switch``, the second's from it.
     """
     pairs = segment.pairs
@@ -337,13 +337,15 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
         phase = 0 if x < segment.switch else 1
         flips = segment.flips[phase] or (False,) * len(pairs)
         drawn_as = segment.ends[phase] if segment.ends is not None else None
-        if x in (0.0, 1.0):  # a key: only its own contours
+        if fading and x in (0.0, 1.0):  # a key of a cross-fade: only its own contours
             end = 0 if x == 0.0 else 1
             own = [i for i, p in enumerate(pairs) if p.source[end] is not None]
             out.append(ShapeAt(tuple(contours[i] for i in own), tuple(closed[i] for i in own), paint,
                                visible and paint.visible, reversed=tuple(flips[i] for i in own), key=drawn_as,
                                clips=clips))
             continue
+        # every pair is kept (a constant count, for players that interpolate vertices): at a key, one that
+        # grows from or shrinks to a point there is that point, stroked with no width, so nothing of it shows
         widths: tuple[float, ...] = ()
         if growing:
             share = [1.0] * len(pairs)

@@ -144,4 +144,5 @@ def test_the_readme_example_runs_as_written(tmp_path: Path) -> None:
     assert len(frames) == 49 and meta["size"] == (2560, 720)
     assert lines[-3] == "output/apple-pear.webm" and (tmp_path / "output" / "apple-pear.webm").stat().st_size > 0
     assert lines[-2] == "output/apple-pear.json"
-    assert json.loads((tmp_path / "output" / "apple-pear.json").read_text())["op"] == 25  # Lottie: 25 frames
+    # two drawings 1 s apart, each held 0.25 s: 1.5 s at 24 fps, 37 frames in the Lottie file as in the video
+    assert json.loads((tmp_path / "output" / "apple-pear.json").read_text())["op"] == 37

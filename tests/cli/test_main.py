@@ -134,9 +134,12 @@ def test_encoder_failure_exits_1_and_keeps_the_old_file(cli, tmp_path: Path, mon
     scene = write_scene(tmp_path, SQUARE)
     target = tmp_path / "movie.mp4"
     target.write_bytes(b"precious")
-    from tweenrender.encode import sinks
+    from dataclasses import replace
 
-    monkeypatch.setitem(sinks._CODECS, "mp4", ["-c:v", "no-such-codec", "-f", "mp4"])
+    from tweenrender.encode import formats
+
+    broken = replace(formats.TABLE["mp4"], ffmpeg=("-c:v", "no-such-codec", "-f", "mp4"))
+    monkeypatch.setitem(formats.TABLE, "mp4", broken)
     code, _, err = cli("render", scene, "-o", target, "--frames", "0:2", "-q")
     assert code == 1
     assert "ffmpeg" in err and "no-such-codec" in err

@@ -89,7 +89,7 @@ def test_too_many_frames_names_the_flag(cli, tmp_path: Path) -> None:
     scene = write_scene(tmp_path, SQUARE.replace("time = 2", "time = 1e7"))
     code, _, err = cli("render", scene, "--fps", "240", "-q", "-o", tmp_path / "x.mp4")
     # 10 million seconds at 240 frames per second, both ends included
-    assert code == 2 and f"{240 * 10**7 + 1} frames is more than --max-frames 100000" in err
+    assert code == 2 and f"--max-frames: {240 * 10**7 + 1} frames is more than 100000" in err
     assert _listing(tmp_path) == ["scene.toml"]
 
 

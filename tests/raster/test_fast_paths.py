@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 
 from tests.helpers import SCENES, SQUARE, decode, write_scene
 
-skia = pytest.importorskip("skia")
+import skia
 
 
 def _raster(background: tuple[int, int, int, int], width: int = 64, height: int = 48):

@@ -22,6 +22,7 @@ from typing import Any, Callable, Iterator, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from ..encode.formats import TABLE
 from ..errors import RenderError
 from .job import Frames, RenderJob
 
@@ -44,10 +45,6 @@ def draw_frame(frames: Frames, index: int) -> NDArray[np.uint8]:
         raise RenderError(f"frame {index}: {error}") from error
 
 
-# The encoder's CPU seconds per megapixel of frame: the bundled ffmpeg with this package's settings,
-# measured on a 2-core Xeon (benchmarks/bench_render.py). Drawing is timed on the machine at hand;
-# these put the encoder on the other side of the balance.
-_ENCODER_SECONDS_PER_MEGAPIXEL = {"mp4": 0.052, "webm": 0.114, "gif": 0.049}
 _CONTENTION = 1.25  # a lone drawing process, sharing the cores with the encoder's threads, draws this much slower
 _START_SECONDS = 0.5  # one more worker process: starting Python, importing skia, building the job's frames
 _TRANSFER_SECONDS_PER_BYTE = 4e-9  # a raw frame pickled back from a worker process
@@ -76,29 +73,30 @@ def measure_cost(job: RenderJob, fmt: str) -> Cost:
     start = time.perf_counter()
     picture = draw_frame(frames, middle)
     draw = time.perf_counter() - start
-    if fmt == "png":
+    per_megapixel = TABLE[fmt].encode_cost
+    if per_megapixel is None:  # compressed where it is drawn: timed
         start = time.perf_counter()
         png_bytes(picture)
         return Cost(draw, time.perf_counter() - start)
     width, height = job.frame_size
-    return Cost(draw, _ENCODER_SECONDS_PER_MEGAPIXEL.get(fmt, 0.05) * width * height / 1e6)
+    return Cost(draw, per_megapixel * width * height / 1e6)
 
 
 def predicted_seconds(cost: Cost, fmt: str, frames: int, frame_bytes: int, processes: int, cpus: int) -> float:
     """Predicted wall time of rendering ``frames`` frames with ``processes`` drawing processes on ``cpus`` cores.
 
-    PNG: each process draws and compresses, so the work divides among the
-    processes (up to the cores). Video: one process draws while the encoder
+    PNG frames: each process draws and compresses, so the work divides among
+    the processes (up to the cores). Video: one process draws while the encoder
     runs, so a frame takes the longer of drawing it (slowed by sharing the
     cores) and the cores' time for all the work; more processes divide the
-    drawing (MP4 and WebM as chunks with encoders of their own, a GIF as
-    frames sent back to its one encoder, which costs a copy each).
+    drawing (a chunked format as chunks with encoders of their own, any other
+    as frames sent back to its one encoder, which costs a copy each).
     """
     start = _START_SECONDS * processes if processes > 1 else 0.0
-    if fmt == "png":
+    if TABLE[fmt].folder:
         return frames * (cost.draw + cost.encode) / min(processes, cpus) + start
     shared = cost.draw + cost.encode
-    if processes > 1 and fmt == "gif":
+    if processes > 1 and not TABLE[fmt].chunked:
         shared += _TRANSFER_SECONDS_PER_BYTE * frame_bytes
     per_frame = max(cost.draw * _CONTENTION / processes, shared / cpus)
     return frames * per_frame + start

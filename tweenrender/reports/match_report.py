@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 
 from ..core.correspond import correspond, correspond_open, path_work
 from ..model import Matching, Scene
-from .segments import entries
+from .segments import entries, nothing_measured
 
 if TYPE_CHECKING:
     from ..raster.plots.match_picture import CPanel
@@ -85,8 +85,11 @@ def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str,
             "pairs": pairs.tolist(),
             **extra,
         })
-    return {"scene": str(scene.path) if scene.path else None, "cost": matching.cost,
-            "align": matching.align, "equal_counts": matching.equal_counts, "shapes": shapes}
+    out = {"scene": str(scene.path) if scene.path else None, "cost": matching.cost,
+           "align": matching.align, "equal_counts": matching.equal_counts, "shapes": shapes}
+    if not shapes:
+        out["note"] = nothing_measured(scene, closed_only=False)
+    return out
 
 
 def matching_words(cost: str, align: str) -> str:
@@ -125,7 +128,7 @@ def correspond_text(report: dict[str, Any]) -> str:
     lines = [f"{report['scene']}"]
     lines += [entry_line(entry) for entry in report["shapes"]]
     if not report["shapes"]:
-        lines.append("no shape has two keys: nothing to put in correspondence")
+        lines.append(report.get("note", "no shape has two keys: nothing to put in correspondence"))
     return "\n".join(lines)
 
 

@@ -181,7 +181,8 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
            unmatched: str) -> Shape:
     first_k, last_k = chain[0][0], chain[-1][0]
     elements = [drawings[k].elements[e] for k, e in chain]
-    out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint) for (k, _), e in zip(chain, elements)]
+    out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint, fill_rule=e.fill_rule, cap=e.cap, join=e.join,
+               miter_limit=e.miter_limit, layer=index, clips=e.clips) for (k, index), e in zip(chain, elements)]
     if first_k > 0:  # it appears: it comes from the key before
         out.insert(0, _hidden(elements[0], keys[first_k - 1], unmatched))
     if last_k < len(drawings) - 1:  # it goes: it leaves by the key after
@@ -194,8 +195,12 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
 def _hidden(element: Element, at: DrawingKey, unmatched: str) -> Key:
     """Where an element comes from or goes to: its centre (``grow``) or itself at opacity 0 (``fade``)."""
     if unmatched == "fade":
-        return Key(at.time, element.contours, at.ease, replace(element.paint, opacity=0.0), hidden=True)
+        return Key(at.time, element.contours, at.ease, replace(element.paint, opacity=0.0), hidden=True,
+                   fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
+                   clips=element.clips)
     centre = _centre(element)
     contours = tuple(Contour(frozen_points(np.broadcast_to(centre, c.points.shape)), c.closed)
                      for c in element.contours)
-    return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True)
+    return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True,
+               fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
+               clips=element.clips)

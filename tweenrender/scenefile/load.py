@@ -6,7 +6,6 @@ expected and what was found.
 
 from __future__ import annotations
 
-import difflib
 import json
 import math
 import os
@@ -17,9 +16,10 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from ..errors import SceneError
+from ..core.methods import METHODS, REGISTRY
+from ..errors import SceneError, did_you_mean
 from ..model import (ALIGNS, BALANCES, CAPS, COSTS, DEFAULT_BALANCE, DEFAULT_FILL, EASES, EQUAL_COUNTS, FILL_RULES,
-                     JOINS, METHODS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
+                     JOINS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
 from .locate import json_line_of, line_of
 
 __all__ = ["load_scene", "parse_scene", "LIMITS"]
@@ -111,7 +111,8 @@ def drawings_scene(paths: Sequence[Path], step: float = 1.0) -> Scene:
     shapes = tuple(drawing_shapes(drawings, keys, "grow"))
     if not shapes:
         raise SceneError(paths[0], None, "expected at least one visible shape in the drawings, found none")
-    scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0])
+    scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0],
+                  sources=tuple(dict.fromkeys(paths)))
     reader = _Reader(paths[0], "", "toml")
     reader.counts(len(shapes), sum(len(shape.keys) for shape in shapes))
     reader.matching_effort(shapes, scene.matching)
@@ -194,11 +195,6 @@ def _describe(value: Any) -> str:
     return f"{kind} {_short(value)}"
 
 
-def _suggest(word: str, choices: tuple[str, ...] | list[str]) -> str:
-    close = difflib.get_close_matches(word, choices, n=1, cutoff=0.6)
-    return f" (did you mean {close[0]!r}?)" if close else ""
-
-
 class _Reader:
     """Validates one parsed document; knows where it came from for messages."""
 
@@ -206,6 +202,7 @@ class _Reader:
         self.path = path
         self.text = text
         self.locate = json_line_of if fmt == "json" else line_of
+        self.sources: list[Path] = []  # files the scene refers to, in the order they are read
 
     def fail(self, where: str, message: str) -> SceneError:
         line = self.locate(self.text, where) if where else None
@@ -219,7 +216,7 @@ class _Reader:
         for key in value:
             if key not in allowed:
                 at = f"{where}.{key}" if where else str(key)
-                raise self.fail(at, f"unknown key {_short(key)}{_suggest(str(key), allowed)}; "
+                raise self.fail(at, f"unknown key {_short(key)}{did_you_mean(str(key), allowed)}; "
                                     f"expected one of {', '.join(allowed)}")
         return value
 
@@ -255,7 +252,7 @@ class _Reader:
     def choice(self, value: Any, where: str, choices: tuple[str, ...], what: str) -> str:
         word = self.string(value, where)
         if word not in choices:
-            raise self.fail(where, f"unknown {what} {_short(word)}{_suggest(word, choices)}; "
+            raise self.fail(where, f"unknown {what} {_short(word)}{did_you_mean(word, choices)}; "
                                    f"expected one of {', '.join(choices)}")
         return word
 
@@ -315,8 +312,9 @@ class _Reader:
                 raise self.fail("compare", "expected at least one method name, found an empty list")
             compare = tuple(self.choice(m, f"compare[{i}]", METHODS, "method") for i, m in enumerate(items))
         for i, shape in enumerate(shapes):
-            if (shape.method or method) == "jointed" and not shape.joints:
-                raise self.fail(f"shape[{i}].method", "method 'jointed' needs joints = [[a, b], ...], found none")
+            chosen = shape.method or method
+            if REGISTRY[chosen].needs_joints and not shape.joints:
+                raise self.fail(f"shape[{i}].method", f"method {chosen!r} needs joints = [[a, b], ...], found none")
         title = self.string(top["title"], "title") if "title" in top else None
         background = self.background(top.get("background", "#ffffff"), "background")
         matching = self.matching(top.get("correspondence", {}))
@@ -324,7 +322,7 @@ class _Reader:
         balance = self.choice(top.get("balance", DEFAULT_BALANCE), "balance", BALANCES, "balance")
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
                      method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched,
-                     balance=balance)
+                     balance=balance, sources=tuple(dict.fromkeys((self.path, *self.sources))))
 
     def counts(self, shapes: int, keys: int) -> None:
         """Refuse more shapes or keys than :data:`LIMITS` allows, before they are matched or drawn."""
@@ -355,6 +353,7 @@ class _Reader:
                 tolerance = self.number(table["tolerance"], f"{where}.tolerance", 1e-9, 1e6,
                                         "a tolerance in world units")
             keys.append(DrawingKey(file, time, ease, tolerance))
+            self.sources.append(file)
         try:
             drawings, box = read_drawings(keys)
         except SvgError as error:
@@ -553,6 +552,7 @@ class _Reader:
         element = self.string(table["id"], f"{where}.id")
         tolerance = self.number(table.get("tolerance", DEFAULT_TOLERANCE), f"{where}.tolerance",
                                 1e-9, 1e6, "a tolerance in world units")
+        self.sources.append(self.path.parent / file)
         try:
             contours = load_svg_contours(self.path.parent / file, element, tolerance)
         except SvgError as error:

@@ -51,7 +51,7 @@ _NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linear
 _UNSUPPORTED = ("text", "image", "foreignObject")
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
               "stroke-linejoin", "stroke-miterlimit", "visibility", "color")
-_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity")
+_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask")
 _ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
 _UNSAFE = ("expected plain SVG, found a DOCTYPE with entity declarations (refused: entities can "
            "expand without bound or read other files); save the drawing as plain SVG")
@@ -93,6 +93,8 @@ class Drawn:
     opacity: float  # the product of its own and every ancestor's opacity
     visible: bool  # display and visibility allow it to be seen
     document: Document
+    # the clip paths on it and its ancestors: (id of the <clipPath>, the user space it is in, 3x3)
+    clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()
 
 
 def read(path: Path) -> bytes:
@@ -343,7 +345,7 @@ class _Walk:
         self.using: list[str] = []
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
-              shown: bool) -> Iterator[Drawn]:
+              shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
         self.visited += 1
         if self.visited > MAX_EXPANDED:
             raise Refusal(f"expected at most {MAX_EXPANDED} elements once <use> copies are counted, found more")
@@ -364,22 +366,29 @@ class _Walk:
         if node is not self.document.root and "transform" in node.attrs:
             ctm = compose(ctm, matrix(node.attrs["transform"], node.line), node,
                           f"transform {node.attrs['transform'].strip()[:80]!r}")
+        if own.get("mask", "none").strip() not in ("none", "") and shown:
+            raise Refusal(f"expected no mask, found mask={own['mask'].strip()!r} on <{node.tag}> (line {node.line}): "
+                          "masks are not drawn yet; apply the mask in the editor, or use a clip-path")
+        reference = own.get("clip-path", "none").strip()
+        if reference.startswith("url(") and shown:
+            target = reference[4:].partition(")")[0].strip().strip("'\"")
+            clips = clips + ((target[1:] if target.startswith("#") else target, ctm),)
         if node.tag in SHAPES:
             visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
-            yield Drawn(node, style, ctm, opacity, visible, self.document)
+            yield Drawn(node, style, ctm, opacity, visible, self.document, clips)
         elif node.tag == "use":
-            yield from self.use(node, style, ctm, opacity, shown)
+            yield from self.use(node, style, ctm, opacity, shown, clips)
         elif node.tag in _CONTAINERS:
             if node.tag == "svg" and node is not self.document.root:
                 ctm = compose(ctm, _nested_viewport(node), node, "the nested <svg>'s viewport transform")
             for child in node.children:
-                yield from self.visit(child, style, ctm, opacity, shown)
+                yield from self.visit(child, style, ctm, opacity, shown, clips)
         elif node.tag in _UNSUPPORTED and shown:
             raise Refusal(f"expected shapes, found <{node.tag}> (line {node.line}); "
                           "convert it to paths in the editor (Inkscape: Path > Object to Path)")
 
     def use(self, node: Node, style: dict[str, str], ctm: NDArray[np.float64], opacity: float,
-            shown: bool) -> Iterator[Drawn]:
+            shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
         href = node.attrs.get("href", node.attrs.get("xlink:href", "")).strip()
         if not href.startswith("#"):
             return  # external references are not followed
@@ -396,9 +405,9 @@ class _Walk:
             referenced = target[0]
             if referenced.tag == "symbol":
                 for child in referenced.children:
-                    yield from self.visit(child, style, placed, opacity, shown)
+                    yield from self.visit(child, style, placed, opacity, shown, clips)
             else:
-                yield from self.visit(referenced, style, placed, opacity, shown)
+                yield from self.visit(referenced, style, placed, opacity, shown, clips)
         finally:
             self.using.pop()
 

@@ -259,7 +259,7 @@ def _scene_text(keys: list[list[tuple[float, float]]], method: str, view: str = 
 def _frames(folder: Path) -> list[np.ndarray]:
     import imageio.v3 as iio
 
-    return [iio.imread(path) for path in sorted(folder.iterdir())]
+    return [iio.imread(path) for path in sorted(folder.glob("frame_*.png"))]
 
 
 @pytest.mark.parametrize("method", METHODS)

@@ -180,6 +180,10 @@ class RenderOptions:
             raise OptionError(f"expected A:B (a text) or a range of frame indices, found {v['frames']!r}", "frames")
         if "cluster" in v and not isinstance(v["cluster"], str):
             raise OptionError(f"expected a scheduler address or local:N, found {v['cluster']!r}", "cluster")
+        if "cluster" in v:
+            from .cluster import parse_address
+
+            parse_address(v["cluster"])  # before any work: a bad address is a usage error, not a late failure
         if "progress" in v and not callable(v["progress"]):
             raise OptionError(f"expected a function of (done, total), found {v['progress']!r}", "progress")
         return cls(

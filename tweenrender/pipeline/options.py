@@ -53,6 +53,12 @@ def check_methods(names: object, option: str) -> tuple[str, ...]:
     return tuple(check_method(name, option) for name in names)
 
 
+def _shown(value: object) -> str:
+    """``repr(value)``, a very long one cut (``10**400`` has 401 digits)."""
+    text = repr(value)
+    return text if len(text) <= 40 else f"{text[:20]}…({len(text)} characters)"
+
+
 def _whole(value: object, option: str, what: str) -> int:
     if isinstance(value, bool) or not isinstance(value, (Integral, Real)):
         raise OptionError(f"expected {what}, found {value!r}", option)
@@ -79,8 +85,8 @@ def check_fps(fps: object, option: str = "fps") -> float:
     from ..scenefile import LIMITS
 
     low, high = LIMITS["fps"]
-    if isinstance(fps, bool) or not isinstance(fps, Real) or not low <= float(fps) <= high:
-        raise OptionError(f"expected {low:g} to {high:g} frames per second, found {fps!r}", option)
+    if isinstance(fps, bool) or not isinstance(fps, Real) or not low <= fps <= high:  # no float(): 10**400
+        raise OptionError(f"expected {low:g} to {high:g} frames per second, found {_shown(fps)}", option)
     return float(fps)
 
 

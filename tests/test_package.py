@@ -28,7 +28,7 @@ ALLOWED = {
     "cli": {"scenefile", "core", "raster", "encode", "pipeline", "reports"},
 }
 THIRD_PARTY_HOME = {"skia": {"raster"}, "imageio_ffmpeg": {"encode"}, "imageio": {"encode"},
-                    "svgelements": {"scenefile"}, "argparse": {"cli"}}
+                    "svgelements": {"scenefile"}, "argparse": {"cli"}, "watchfiles": {"pipeline"}}
 
 
 def modules() -> list[str]:

@@ -14,8 +14,8 @@ from numpy.typing import NDArray
 
 __all__ = [
     "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
-    "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching",
-    "Scene", "DrawnContour", "Gradient", "frozen_points",
+    "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint", "Shape",
+    "Matching", "Scene", "DrawnContour", "Gradient", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
@@ -28,6 +28,7 @@ BALANCES: tuple[str, ...] = ("copies", "spread")
 DEFAULT_BALANCE = "copies"
 """The balance rule of scenes that name none (benchmarks/balance_rules.py measured the two)."""
 EASES: tuple[str, ...] = ("linear", "in", "out", "in-out")
+"""The older easing names; ``core.easing`` reads these and CSS's curves, ``steps`` and ``hold``."""
 COSTS: tuple[str, ...] = ("distance", "sg")
 ALIGNS: tuple[str, ...] = ("none", "centroid")
 EQUAL_COUNTS: tuple[str, ...] = ("drawn", "match")
@@ -100,6 +101,16 @@ class Paint:
 
 
 @dataclass(frozen=True, slots=True)
+class Hint:
+    """A shape hint: ``letter`` (a–z) sits on vertex ``vertex`` of contour ``contour`` of its key
+    (snapped onto the outline when the scene was read); the same letter of the next key is its partner."""
+
+    letter: str
+    contour: int
+    vertex: int
+
+
+@dataclass(frozen=True, slots=True)
 class Key:
     """A keyframe: its time in seconds, its contours, the easing of the segment it starts, its paint.
 
@@ -109,6 +120,10 @@ class Key:
     (a drawing's keys carry their own). ``layer`` is a drawing's key's place in that drawing's
     paint order (0 first; ``None`` for shapes of a scene file, painted in file order); ``clips``
     its SVG clip paths in world units.
+    ``ease`` is the easing as written; ``easing`` the parsed one (a ``core.easing`` object;
+    ``None``: parsed from ``ease``), a spacing chart included. ``hints`` are this key's shape
+    hints; ``delay`` the seconds after ``time`` at which the segment starting here starts to
+    move (a stagger or a hold; it still ends on time).
     """
 
     time: float
@@ -123,6 +138,9 @@ class Key:
     layer: int | None = None
     # clip regions (closed contours, nonzero), every one intersected with what the key draws
     clips: tuple[tuple[Contour, ...], ...] = ()
+    easing: object | None = None
+    hints: tuple[Hint, ...] = ()
+    delay: float = 0.0
 
     @property
     def points(self) -> Points:
@@ -161,6 +179,7 @@ class Shape:
     # keys of equal vertex counts: None follows the scene's [correspondence]; drawings say "match",
     # since the order an SVG editor wrote a contour in is no animator's correspondence
     equal_counts: str | None = None
+    stagger: float = 0.0  # seconds between the starts of the shape's contours in each segment
 
     @property
     def paint(self) -> Paint:
@@ -208,12 +227,13 @@ class Scene:
     path: Path | None = None
     unmatched: str = "grow"
     balance: str = DEFAULT_BALANCE  # how balancing places copies of a vertex (maths §5.6)
+    end_hold: float = 0.0  # seconds the last keys stay after the last key's time (drawings' --hold)
     sources: tuple[Path, ...] = ()  # every file the scene was read from: the scene file, SVG keys, drawings
 
     @property
     def duration(self) -> float:
-        """Seconds from time 0 to the last key of any shape."""
-        return max(shape.keys[-1].time for shape in self.shapes)
+        """Seconds from time 0 to the last key of any shape, and its hold."""
+        return max(shape.keys[-1].time for shape in self.shapes) + self.end_hold
 
     def method_of(self, shape: Shape) -> str:
         return shape.method or self.method

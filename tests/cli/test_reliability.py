@@ -72,7 +72,7 @@ def test_verbose_shows_the_traceback_and_keeps_the_exit_code(tmp_path: Path) -> 
 def test_an_unexpected_failure_is_one_line_and_exit_1(cli, tmp_path: Path, monkeypatch) -> None:
     import tweenrender.scenefile
 
-    def broken(path: object, step: float = 1.0) -> None:
+    def broken(path: object, step: float = 1.0, *timing: object) -> None:
         raise ZeroDivisionError("a bug\nover two lines")
 
     monkeypatch.setattr(tweenrender.scenefile, "load_scene", broken)

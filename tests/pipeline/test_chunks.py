@@ -96,9 +96,14 @@ def test_workers_come_from_the_cost() -> None:
     draw_bound = Cost(draw=0.100, encode=0.108)  # 100 stroked shapes of 500 vertices
     for cpus in (2, 4, 8):
         assert choose_workers(encoder_bound, "mp4", 121, frame, cpus) == 1
-    assert choose_workers(draw_bound, "mp4", 121, frame, 2) == 2
-    assert choose_workers(draw_bound, "mp4", 121, frame, 1) == 1
-    assert choose_workers(Cost(0.005, 0.12), "png", 121, frame, 4) == 4
+    small = 640 * 360 * 4
+    assert choose_workers(draw_bound, "mp4", 121, small, 2) == 2
+    assert choose_workers(draw_bound, "mp4", 121, small, 1) == 1
+    # at 1080p two chunks, each with its encoder, would hold more than the 400 MiB allowed
+    assert choose_workers(draw_bound, "mp4", 121, frame, 2) == 1
+    assert choose_workers(Cost(0.005, 0.12), "png", 121, frame, 2) == 2
+    # four drawing processes would hold more than the 400 MiB allowed at 1080p
+    assert choose_workers(Cost(0.005, 0.12), "png", 121, frame, 4) == 2
     assert choose_workers(Cost(0.005, 0.12), "png", 3, frame, 4) == 1  # too short to repay the start
     assert choose_workers(Cost(0.02, 0.1), "gif", 121, frame, 2) == 1
 
@@ -110,10 +115,13 @@ def test_default_workers_measures_only_what_can_pay(tmp_path: Path, monkeypatch:
 
     measured: list[str] = []
     monkeypatch.setattr(workers, "measure_cost", lambda job, fmt: measured.append(fmt) or workers.Cost(0.1, 0.108))
-    job = RenderJob(parse_scene(SQUARE.replace("time = 2\n", "time = 20\n"), "long.toml"), size=(1920, 1080))
+    job = RenderJob(parse_scene(SQUARE.replace("time = 2\n", "time = 20\n"), "long.toml"), size=(640, 360))
     assert workers.default_workers(job, "mp4", cpus=2) == 2 and measured == ["mp4"]
-    assert workers.default_workers(RenderJob(job.scene, size=(320, 240)), "mp4", cpus=2) == 1
+    assert workers.default_workers(RenderJob(job.scene, size=(160, 120)), "mp4", cpus=2) == 1
     assert workers.default_workers(job, "mp4", cpus=1) == 1 and measured == ["mp4"]
+    # at 1080p no second process with its encoder fits 400 MiB: one, and nothing measured
+    assert workers.default_workers(RenderJob(job.scene, size=(1920, 1080)), "mp4", cpus=8) == 1
+    assert measured == ["mp4"]
 
 
 def test_ctrl_c_stops_chunk_workers_at_once_and_leaves_nothing(tmp_path: Path) -> None:
@@ -139,3 +147,53 @@ def test_ctrl_c_stops_chunk_workers_at_once_and_leaves_nothing(tmp_path: Path) -
     assert not target.exists() and list(target.parent.iterdir()) == []
     leftover = subprocess.run(["pgrep", "-f", str(tmp_path)], capture_output=True, text=True).stdout.split()
     assert leftover == []  # no ffmpeg nor worker still running on this render's files
+
+
+@pytest.mark.parametrize("size", [(1920, 1080), (3840, 2160), (1280, 720), (640, 360)])
+@pytest.mark.parametrize("fmt", ["mp4", "webm", "gif", "png"])
+def test_whatever_auto_chooses_stays_within_the_memory_budget(size: tuple[int, int], fmt: str) -> None:
+    from tweenrender.pipeline.workers import Cost, choose_workers, memory_budget_mib, tree_mib
+
+    pixels = size[0] * size[1]
+    for draw in (0.001, 0.02, 0.1, 1.0):
+        for encode in (0.0, 0.01, 0.1):
+            for cpus in (2, 4, 8, 16):
+                chosen = choose_workers(Cost(draw, encode), fmt, 1000, pixels * 4, cpus)
+                assert chosen == 1 or tree_mib(fmt, pixels, chosen) <= memory_budget_mib(pixels)
+    assert memory_budget_mib(1920 * 1080) == 400.0
+    assert 1000 <= memory_budget_mib(3840 * 2160) <= 1024
+
+
+def test_the_encoder_cost_is_measured_on_the_jobs_own_frames(monkeypatch: pytest.MonkeyPatch) -> None:
+    import numpy as np
+
+    from tweenrender.encode import encoder_cost
+    from tweenrender.pipeline import workers
+    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.scenefile import parse_scene
+
+    seen: list[list[np.ndarray]] = []
+    monkeypatch.setattr(encoder_cost, "encoder_seconds",
+                        lambda fmt, pictures, fps, alpha=False: seen.append(list(pictures)) or 0.0125)
+    job = RenderJob(parse_scene(SQUARE, "square.toml"), size=(64, 48))
+    cost = workers.measure_cost(job, "mp4")
+    assert cost.encode == 0.0125 and len(seen) == 1 and len(seen[0]) == 3
+    middle = len(job.frame_range) // 2
+    drawn = Frames(job)
+    for offset, picture in enumerate(seen[0]):
+        assert np.array_equal(picture, drawn(middle + offset))
+
+
+def test_the_encoder_probe_counts_ffmpegs_cpu_time() -> None:
+    import math
+
+    import numpy as np
+
+    from tweenrender.encode.encoder_cost import encoder_seconds
+
+    rng = np.random.default_rng(0)
+    pictures = [rng.integers(0, 256, (240, 320, 4), dtype=np.uint8) for _ in range(3)]
+    for picture in pictures:
+        picture[..., 3] = 255
+    seconds = encoder_seconds("mp4", pictures, 24.0)
+    assert math.isfinite(seconds) and seconds > 0.0

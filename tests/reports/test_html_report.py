@@ -98,3 +98,12 @@ def test_an_earlier_report_is_replaced_whole(tmp_path: Path) -> None:
     assert sorted(p.name for p in folder.glob("*.webm")) == ["arap.webm"]
     assert read_png(folder / "metrics.png").shape[1] == 960
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+
+
+def test_a_report_of_every_method_can_be_written_again(tmp_path: Path) -> None:
+    # every method's video is a file the report wrote, whatever characters its name has
+    folder = tmp_path / "square-report"
+    for _ in range(2):
+        done = run_module("report", SCENES / "square.toml", "--compare", "intrinsic-length", "-o", folder, "-q")
+        assert done.returncode == 0, done.stderr
+    assert sorted(p.name for p in folder.glob("*.webm")) == ["intrinsic-length.webm"]

@@ -64,6 +64,11 @@ def seconds(text: str) -> float:
     return value
 
 
+def pause(flag: str) -> Callable[[str], float]:
+    """Seconds from 0 (``--hold``, ``--stagger``)."""
+    return _ranged(float, "seconds as a number", 0.0, 1e6, flag)
+
+
 def times(text: str) -> list[float]:
     try:
         values = [float(v) for v in text.split(",") if v.strip()]

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 from ..errors import UsageError, printable
 from .args import print_json
-from .inputs import add_scene_argument, is_morph
+from .inputs import add_scene_argument, is_morph, timing
 
 if TYPE_CHECKING:
     from ..model import Scene
@@ -35,7 +35,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json and len(args.scene) != 1 and not morph:
         raise UsageError("check --json takes exactly one scene (or SVG drawings, one morph)")
     if morph or len(args.scene) == 1:
-        scene = load_scene(args.scene if morph else args.scene[0], args.step)  # one bad scene: the CLI's line
+        scene = load_scene(args.scene if morph else args.scene[0], args.step, **timing(args))  # the CLI's line
         if args.json:
             print_json(describe(scene))
         else:
@@ -44,7 +44,7 @@ def run(args: argparse.Namespace) -> int:
     failed = 0
     for path in args.scene:
         try:
-            _report(path, load_scene(path))
+            _report(path, load_scene(path, args.step, **timing(args)))
         except SceneError as error:
             print(f"tweenrender: error: {printable(str(error))}", file=sys.stderr)
             failed += 1

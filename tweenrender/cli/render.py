@@ -21,11 +21,16 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("render", help="render a scene, or SVG drawings morphing into each other, to video or PNG")
     add_scene_argument(p)
     p.add_argument("-o", "--output", metavar="OUT",
-                   help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png)")
+                   help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png, "
+                        "output/<stem>.json for lottie, output/<stem>.svg for svg)")
     p.add_argument("--method", type=method, metavar="M", help=f"one method for every shape: {', '.join(METHODS)}")
     p.add_argument("--compare", nargs="?", const="", metavar="M,M..",
                    help="one labelled panel per method, side by side (default: the scene's compare list)")
-    p.add_argument("--format", choices=FORMATS, help="the output format (default: from -o's extension)")
+    p.add_argument("--format", choices=FORMATS, help="the output format (default: from -o's extension); lottie "
+                                                     "(.json) and svg (animated SVG) hold the paths, keyframed")
+    p.add_argument("--max-error", type=float, metavar="PX",
+                   help="lottie and svg: how far (output pixels) the keyframed paths may stray from the exact "
+                        "inbetween at a frame (default 0.25)")
     p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (of each panel)")
     p.add_argument("--fps", type=fps, metavar="N")
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")

@@ -23,6 +23,7 @@ from numpy.typing import NDArray
 
 from .angles import shorter_change, turning_angles, wrap
 from .crossings import self_crossings
+from .tangles import SWEEP as _SWEEP
 from .geometry import edge_lengths, perimeter, signed_area
 from .methods import interpolate
 
@@ -31,8 +32,8 @@ __all__ = ["SWEEP", "MethodReport", "Curves", "report", "curves", "edge_error", 
 
 Array = NDArray[np.float64]
 
-SWEEP = np.linspace(0.0, 1.0, 101)
-"""The t values over which minima and maxima are taken."""
+SWEEP = _SWEEP
+"""The t values over which minima and maxima are taken: 101 evenly spaced."""
 
 
 def edge_error(frames: Array, k0: Array, k1: Array, t: Array) -> Array:

@@ -77,6 +77,12 @@ def _intrinsic_length(k0: Array, k1: Array, t: Array, joints: Joints) -> Array:
     return intrinsic(k0, k1, t, closure="length")
 
 
+def _injective(k0: Array, k1: Array, t: Array, joints: Joints) -> Array:
+    from .injective import injective
+
+    return injective(k0, k1, t, joints)  # never crosses itself (maths §5.9)
+
+
 def _auto(k0: Array, k1: Array, t: Array, joints: Joints) -> Array:
     from .qcurves import auto
 
@@ -102,8 +108,12 @@ REGISTRY: dict[str, Method] = {m.name: m for m in (
     Method("intrinsic-length", _intrinsic_length,
            "the same as `intrinsic`, the closing change weighted by edge length", per_outline=True,
            closure="length"),
+    Method("injective", _injective,
+           "never crosses itself (Gotsman & Surazhsky 2001): a compatible triangulation of both keys, "
+           "convex-combination weights blended over t"),
     Method("auto", _auto,
-           "reads the Q-curves: nonlinear where a shape (or body) turns rigidly, linear otherwise"),
+           "reads the Q-curves: nonlinear where a shape (or body) turns rigidly; else linear where its "
+           "in-betweens never cross, injective where they would"),
 )}
 
 METHODS: tuple[str, ...] = tuple(REGISTRY)

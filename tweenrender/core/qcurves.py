@@ -21,11 +21,14 @@ from ..errors import GeometryError
 from . import joints as _joints
 from . import paths
 from .geometry import best_fit_rotation, cross, edge_lengths
+from .balance import spread_copies
+from .injective import injective
+from .tangles import linear_tangles
 
 __all__ = [
     "control_points", "evaluate", "angle_at", "passes_through_zero", "non_monotonic",
     "sweeps_over_180", "Motion", "vertex_kinds", "classify", "AutoChoice", "auto_choice",
-    "auto_choice_contours", "auto",
+    "auto_choice_contours", "auto", "straight",
 ]
 
 Array = NDArray[np.float64]
@@ -253,7 +256,7 @@ def classify(k0: ArrayLike, k1: ArrayLike, rel_tol: float = 1e-3) -> Motion:
 class AutoChoice:
     """What ``auto`` does with a shape and why."""
 
-    method: str  # "nonlinear" | "linear", or "jointed" when joints cut the shape into bodies
+    method: str  # "nonlinear" | "linear" | "injective", or "jointed" when joints cut the shape into bodies
     why: str  # one line in words
     bodies: tuple[str, ...]  # "nonlinear" | "linear" per local body (joints.bodies order)
 
@@ -270,51 +273,90 @@ def _short(motion: Motion) -> str:
     return "pure translation" if motion.kind == "translation" else "non-rigid change"
 
 
-def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = ()) -> AutoChoice:
-    """Choose nonlinear paths where the Q-curves show a rigid rotation, linear otherwise.
+def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array],
+               closed: Sequence[bool] | None = None) -> AutoChoice:
+    """``choice``, or ``injective`` where it is ``linear`` and the straight inbetweens of contours
+    ``k0s``, ``k1s`` (closed where ``closed`` says; default: those of three vertices or more)
+    tangle while the keys do not (maths §5.9)."""
+    if choice.method != "linear" or not k0s:
+        return choice
+    closed = [len(k) >= 3 for k in k0s] if closed is None else [bool(c) and len(k) >= 3 for c, k in zip(closed, k0s)]
+    spread_keys = [spread_copies(a, b) if shut else (a, b) for a, b, shut in zip(k0s, k1s, closed)]
+    crossed = linear_tangles([a for a, _ in spread_keys], [b for _, b in spread_keys], closed)
+    if not crossed or crossed[0] == 0.0 or crossed[-1] == 1.0:
+        return choice  # straight paths never tangle, or a key does already: nothing to keep clean
+    return AutoChoice("injective", f"{choice.why}; straight paths would cross at t = {crossed[0]:g}",
+                      tuple("injective" for _ in choice.bodies))
+
+
+def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool = True) -> AutoChoice:
+    """Choose nonlinear paths where the Q-curves show a rigid rotation; otherwise linear paths where
+    they never cross themselves, else injective paths (maths §5.9).
 
     With ``joints`` the choice is made per local body (each with its own size
     for the tolerance); the method is then ``"jointed"`` if any body turns, and
-    ``"linear"`` if none does (averaged linear paths are the linear paths).
+    ``"linear"`` (or ``"injective"``) if none does (averaged linear paths are the linear paths).
+    ``closed=False`` reads the keys as an open stroke when it looks for crossings.
     Raises :class:`joints.JointError` for bad joints.
     """
     k0, k1 = _keys(k0, k1)
     if len(joints) == 0:
         motion = classify(k0, k1)
-        return AutoChoice(_method(motion), motion.why, (_method(motion),))
+        return _untangled(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed])
     motions = [classify(k0[b], k1[b]) for b in _joints.bodies(k0.shape[0], joints)]
     methods = tuple(_method(m) for m in motions)
     method = "jointed" if "nonlinear" in methods else "linear"
-    return AutoChoice(method, "bodies: " + " / ".join(_short(m) for m in motions), methods)
+    return _untangled(AutoChoice(method, "bodies: " + " / ".join(_short(m) for m in motions), methods), [k0], [k1],
+                      [closed])
 
 
-def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike]) -> AutoChoice:
-    """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys:
-    nonlinear when every contour turns rigidly by the same angle (within 1°), else linear."""
+def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
+                         strokes0: Sequence[ArrayLike] = (), strokes1: Sequence[ArrayLike] = ()) -> AutoChoice:
+    """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys (and
+    the open strokes ``strokes0``, ``strokes1`` that move with them): nonlinear when every closed
+    contour turns rigidly by the same angle (within 1°), else linear where the shape's inbetweens
+    never tangle (a contour crossing itself, a hole leaving its outline), else injective."""
     motions = [classify(a, b) for a, b in zip(k0s, k1s)]
+    every0 = [np.asarray(k, dtype=np.float64) for k in [*k0s, *strokes0]]
+    every1 = [np.asarray(k, dtype=np.float64) for k in [*k1s, *strokes1]]
+    closed = [True] * len(k0s) + [False] * len(strokes0)
     if not motions:
-        return AutoChoice("linear", "no closed contour moves", ("linear",))
+        return _untangled(AutoChoice("linear", "no closed contour moves", ("linear",)), every0, every1, closed)
     turns = [m.rotation_deg for m in motions if m.kind == "rotation"]
     if len(turns) == len(motions) and max(turns) - min(turns) <= 1.0:
         why = f"rigid rotation of {turns[0]:.1f} degrees ({len(motions)} contours)"
         return AutoChoice("nonlinear", why, ("nonlinear",))
     if all(m.kind == "translation" for m in motions):
         return AutoChoice("linear", f"pure translation ({len(motions)} contours)", ("linear",))
-    return AutoChoice("linear", "contours change or move differently: " + " / ".join(_short(m) for m in motions),
-                      ("linear",))
+    return _untangled(AutoChoice("linear", "contours change or move differently: " +
+                                 " / ".join(_short(m) for m in motions), ("linear",)), every0, every1, closed)
 
 
-_PATHS = {"nonlinear": paths.nonlinear, "linear": paths.linear}
+def straight(k0: Array, k1: Array, t: ArrayLike) -> Array:
+    """``auto``'s straight paths: linear paths between the keys with copies of a vertex spread along
+    its edges (maths §5.6), so a vertex that many of the other key's meet opens out along its
+    edges instead of leaving a sawtooth: ``(T, N, 2)``."""
+    if len(k0) < 3:
+        return paths.linear(k0, k1, t)
+    return paths.linear(*spread_copies(k0, k1), t)
+
+
+_PATHS = {"nonlinear": paths.nonlinear, "linear": paths.linear, "injective": injective}
 
 
 def auto(k0: ArrayLike, k1: ArrayLike, t: ArrayLike, joints: Joints = ()) -> Array:
     """The ``auto`` method's inbetweens: ``(T, N, 2)``.
 
     Per body, the nonlinear paths where its Q-curves show a rotation and linear
-    paths otherwise; joint vertices follow the mean of their bodies' paths.
+    paths otherwise; joint vertices follow the mean of their bodies' paths; the
+    whole shape's injective paths where linear ones would cross (maths §5.9).
     """
     k0, k1 = _keys(k0, k1)
     choice = auto_choice(k0, k1, joints)
+    if choice.method == "injective":
+        return injective(k0, k1, t)
+    if len(joints) == 0 and choice.method == "linear":
+        return straight(k0, k1, t)
     functions = [_PATHS[m] for m in choice.bodies]
     if len(joints) == 0:
         return functions[0](k0, k1, t)

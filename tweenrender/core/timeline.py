@@ -10,7 +10,10 @@ anchor along straight paths. Paint blends in OKLab (:mod:`.paint`).
 
 Frame ``f`` is drawn at ``time = f / fps``; before the first key a shape holds
 its first key, after its last key the last one. A *hidden* key (where an element
-grows from or shrinks to) is reached, never shown.
+grows from or shrinks to) is reached, never shown. A segment's easing (:mod:`.easing`)
+maps its time to how far along the way it is, and may overshoot; a key's ``delay``
+(a stagger, a hold) starts its segment's motion later, still ending on time. Shape
+hints (:mod:`.hints`) pair contours and fix the correspondence at their vertices.
 """
 
 from __future__ import annotations
@@ -26,32 +29,33 @@ from ..model import Contour, Key, Matching, Paint, Points, Scene, Shape
 from .contours import anchor, pair_contours
 from .correspond import Correspondence, correspond, correspond_open
 from .balance import spread
+from .easing import LINEAR, Easing, parse_easing
 from .geometry import signed_area
 from .clip_motion import clips_at
 from .gradient_blend import blend_gradient, box_of
+from .hint_search import correspond_hinted, correspond_hinted_open
+from .hints import Link, forced_contour_pairs, segment_links, vertex_links
 from .methods import interpolate, per_outline
 from .paint import blend_paints
 
-__all__ = ["ease", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
+__all__ = ["easing_of", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
            "evaluate_segment", "pair_paths", "key_windings", "tracks_of"]
 
 Array = NDArray[np.float64]
 
 
-def ease(t: Array, kind: str) -> Array:
-    """Reparametrise ``t (T,)`` in [0, 1]: ``linear``, ``in`` (t²), ``out``, ``in-out`` (smoothstep).
+def easing_of(key: Key) -> Easing:
+    """The easing of the segment ``key`` starts: its parsed ``easing``, else its ``ease`` parsed."""
+    if key.easing is not None:
+        return key.easing  # type: ignore[return-value]
+    try:
+        return parse_easing(key.ease)
+    except ValueError as error:
+        raise GeometryError(str(error)) from None
 
-    Every easing maps 0 → 0 and 1 → 1 exactly, so keys are hit exactly.
-    """
-    if kind == "linear":
-        return t
-    if kind == "in":
-        return t * t
-    if kind == "out":
-        return 1.0 - (1.0 - t) ** 2
-    if kind == "in-out":
-        return t * t * (3.0 - 2.0 * t)
-    raise GeometryError(f"unknown easing {kind!r}")
+
+_CLAMPED = ("injective",)
+"""Methods whose weights cannot leave [0, 1]: an overshooting easing is clamped for them."""
 
 
 def frame_count(duration: float, fps: float) -> int:
@@ -88,7 +92,12 @@ class Pair:
 
 @dataclass(frozen=True, slots=True)
 class Segment:
-    """Two consecutive keys in correspondence: their contour pairs, paints and easing."""
+    """Two consecutive keys in correspondence: their contour pairs, paints and easing.
+
+    The motion runs from ``start + delay`` to ``end`` seconds; ``ease`` is the easing as written,
+    ``easing`` the curve; ``links`` the shape hints both keys carry. With a ``stagger``, the pair of
+    rank r in :meth:`stagger_order` starts ``r × stagger`` seconds later, still ending on time.
+    """
 
     start: float
     end: float
@@ -102,12 +111,28 @@ class Segment:
     # that drawing it reversed gives the key's winding (see :func:`key_windings`)
     flips: tuple[tuple[bool, ...], tuple[bool, ...]] = ((), ())
     switch: float = 0.5  # the eased t from which in-betweens take the second key's fill rule and windings
+    easing: Easing = LINEAR
+    delay: float = 0.0
+    links: tuple[Link, ...] = ()
+    stagger: float = 0.0
+
+    def time_fraction(self, times: Array, rank: int = 0) -> Array:
+        """How much of the motion's time has passed at ``times (T,)`` seconds for the pair of stagger rank
+        ``rank``: ``(T,)`` in [0, 1]."""
+        begin = self.start + self.delay + rank * self.stagger
+        span = self.end - begin
+        return np.clip((times - begin) / span, 0.0, 1.0)
+
+    def stagger_order(self) -> list[int]:
+        """Pair indices in stagger order: the first key's contours in order, then those that appear."""
+        present = sorted((p.source[0], k) for k, p in enumerate(self.pairs) if p.source[0] is not None)
+        arriving = sorted((p.source[1], k) for k, p in enumerate(self.pairs) if p.source[0] is None)
+        return [k for _, k in present] + [k for _, k in arriving]  # type: ignore[misc]
 
     def local_t(self, times: Array) -> Array:
-        """Eased parameter in [0, 1] of ``times (T,)`` seconds within this segment."""
-        span = self.end - self.start
-        t = np.clip((times - self.start) / span, 0.0, 1.0)
-        return ease(t, self.ease)
+        """Eased parameter of ``times (T,)`` seconds within this segment: 0 and 1 at the keys, and
+        outside [0, 1] between them where the easing overshoots."""
+        return self.easing(self.time_fraction(times))
 
     @property
     def k0(self) -> Points:
@@ -182,7 +207,8 @@ class Track:
         for s in np.unique(index):
             segment = self.segments[s]
             picked = np.flatnonzero(index == s)
-            for slot, shape in zip(picked, evaluate_segment(segment, segment.local_t(times[picked]), method)):
+            frames = staggered_paths(segment, times[picked], method) if segment.stagger > 0 else None
+            for slot, shape in zip(picked, evaluate_segment(segment, segment.local_t(times[picked]), method, frames)):
                 out[slot] = shape
         return out
 
@@ -192,14 +218,20 @@ class Track:
 
 
 def segment_method(segment: Segment, method: str) -> str:
-    """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its closed
-    contours when it has several (a one-contour segment keeps ``auto``, which decides per body)."""
+    """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its contours
+    when it has several (a one-outline segment keeps ``auto``, which decides per body; one open
+    stroke takes ``linear`` or ``injective`` where auto would, else keeps ``auto``)."""
     moving = [p for p in segment.pairs if p.moving]
-    if method != "auto" or len(moving) <= 1:
+    if method != "auto" or not moving or (len(moving) == 1 and moving[0].closed):
         return method
-    from .qcurves import auto_choice_contours
+    from .qcurves import auto_choice, auto_choice_contours
 
-    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed]).method
+    if len(moving) == 1:  # one open stroke: auto's own choice, its crossings read as a stroke's
+        chosen = auto_choice(moving[0].k0, moving[0].k1, segment.joints, closed=False).method
+        return chosen if chosen in ("linear", "injective") else method
+
+    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
+                                [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed]).method
 
 
 def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
@@ -213,11 +245,14 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
     moving = [i for i, p in enumerate(pairs) if p.moving]
+    if method in _CLAMPED:
+        t = np.clip(t, 0.0, 1.0)
     if moving:
         k0 = np.concatenate([pairs[i].k0 for i in moving])
         k1 = np.concatenate([pairs[i].k1 for i in moving])
         cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
         single = len(moving) == 1 and pairs[moving[0]].closed
+        chosen = segment_method(segment, method)
         if per_outline(method) and not single:
             # these methods need one closed outline: each contour takes them on its own (open ones the
             # rigid paths), and its centre follows the rigid paths of the whole shape
@@ -226,26 +261,58 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
                 pair = pairs[i]
                 own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
                 frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
+        elif chosen == "injective" and not single:
+            # one mesh for every moving contour, so holes stay inside their outlines
+            from .injective import injective_contours
+
+            found = injective_contours([pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving],
+                                       [pairs[i].closed for i in moving], t)
+            for i, part in zip(moving, found):
+                frames[i] = part
+        elif method == "auto" and chosen == "linear" and not single:
+            # auto's straight paths: each closed contour's copies spread along its edges first
+            from .qcurves import straight
+
+            for i in moving:
+                pair = pairs[i]
+                path = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
+                path[t == 0.0], path[t == 1.0] = pair.k0, pair.k1
+                frames[i] = path
         else:
-            together = interpolate(k0, k1, t, segment_method(segment, method), segment.joints)
+            together = interpolate(k0, k1, t, chosen, segment.joints)
             for i, part in zip(moving, np.split(together, cuts, axis=1)):
                 frames[i] = part
     for i, pair in enumerate(pairs):
         if frames[i] is None:
-            frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
+            # growing (shrinking) contours never turn inside out: their scale stops at 0
+            grows, shrinks = pair.source[0] is None, pair.source[1] is None
+            own = np.clip(t, 0.0 if grows else -np.inf, 1.0 if shrinks else np.inf) if not pair.fades else t
+            frames[i] = interpolate(pair.k0, pair.k1, own, "linear")
     return frames  # type: ignore[return-value]
 
 
-def evaluate_segment(segment: Segment, t: Array, method: str) -> list[ShapeAt]:
-    """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t.
+def staggered_paths(segment: Segment, times: Array, method: str) -> list[Array]:
+    """Every pair's inbetweens at ``times (T,)`` seconds, each on its own staggered timing: one
+    ``(T, L_i, 2)`` array per pair. A pair's positions come from the whole shape's paths (one
+    centre, one turn) at its own eased parameter."""
+    out: list[Array] = [np.empty(0)] * len(segment.pairs)
+    for rank, k in enumerate(segment.stagger_order()):
+        out[k] = pair_paths(segment, segment.easing(segment.time_fraction(times, rank)), method)[k]
+    return out
+
+
+def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array] | None = None) -> list[ShapeAt]:
+    """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t (``frames``: the pairs'
+    inbetweens already computed, e.g. staggered; the paint follows ``t``).
 
     At a key only that key's contours are drawn (none that grows from or shrinks to a point there),
     with the key's own fill rule and windings; in-betweens take the first key's until
     ``segment.switch``, the second's from it.
     """
     pairs = segment.pairs
-    frames = pair_paths(segment, t, method)
+    frames = pair_paths(segment, t, method) if frames is None else frames
     closed = tuple(p.closed for p in pairs)
+    t = np.clip(t, 0.0, 1.0)  # paint, fades and visibility do not overshoot
     paints = blend_paints(*segment.paints, t)
     fading = any(p.fades for p in pairs)
     sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
@@ -345,7 +412,8 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
     joints = tuple(shape.joints)  # indices into the current key's vertices
     segments = []
     for before, after in zip(keys, keys[1:]):
-        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched, balance)
+        links = tuple(segment_links(before.hints, after.hints))
+        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched, balance, links)
         balanced_joints: tuple[tuple[int, int], ...] = ()
         if joints and len(pairs) == 1:
             found = pairs[0].correspondence
@@ -359,22 +427,24 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
         segments.append(Segment(before.time, after.time, before.ease, pairs, balanced_joints,
                                 (before.paint, after.paint), (not before.hidden, not after.hidden),
                                 (before, after),
-                                key_windings(pairs, before.contours, after.contours)))
+                                key_windings(pairs, before.contours, after.contours),
+                                easing=easing_of(before), delay=before.delay, links=links, stagger=shape.stagger))
     return Track(shape.name, tuple(segments), _still(keys[0]))
 
 
 def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str,
-           balance: str = "copies") -> tuple[Pair, ...]:
+           balance: str = "copies", links: tuple[Link, ...] = ()) -> tuple[Pair, ...]:
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
         # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order
         return tuple(Pair(x.points, y.points, x.closed, (len(x.points), len(y.points)), None, (i, i))
                      for i, (x, y) in enumerate(zip(a, b)))
-    links = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b], [c.closed for c in b])
+    partners = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b],
+                             [c.closed for c in b], forced=forced_contour_pairs(links))
     pairs = []
-    for i, j in links:
+    for i, j in partners:
         if i is not None and j is not None:
-            pairs.append(_balanced(a[i], b[j], (i, j), matching, balance))
+            pairs.append(_balanced(a[i], b[j], (i, j), matching, balance, vertex_links(links, (i, j))))
             continue
         # a contour without a partner: it fades, or shrinks to (i) or grows from (j) a point of the other key
         alone, others = (a[i], b) if i is not None else (b[j], a)  # type: ignore[index]
@@ -391,9 +461,17 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
 
 
 def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matching,
-              balance: str = "copies") -> Pair:
+              balance: str = "copies", hinted: list[tuple[int, int]] | None = None) -> Pair:
     closed = a.closed and b.closed
     m, n = len(a.points), len(b.points)
+    if hinted and m >= 2 and n >= 2:
+        search = correspond_hinted if closed else correspond_hinted_open
+        found = search(a.points, b.points, hinted, matching)
+        k0, k1 = found.apply(a.points, b.points)
+        if balance == "spread" and closed:
+            pinned = [p for p, (i, j) in enumerate(found.pairs.tolist()) if (i, j) in set(hinted)]
+            k0, k1 = spread(k0, k1, fixed=pinned)
+        return Pair(_frozen(k0), _frozen(k1), closed, (m, n), found, source)
     if m == n and matching.equal_counts == "drawn":
         return Pair(a.points, b.points, closed, (m, n), None, source)
     if m < 2 or n < 2:  # a single point: every vertex of the other pairs with it

@@ -1,6 +1,6 @@
 """Every output format, in one table: what a format is called, what its files are named, how ffmpeg
 encodes it, whether it keeps transparency, the largest frames its encoder takes, how a clip rendered
-in chunks is joined, and what encoding a frame costs.
+in chunks is joined.
 
 Adding a format is one :class:`Format` entry in :data:`TABLE` (and, for a new kind of file, one sink
 in :mod:`.sinks`). The sizes were measured with the bundled ffmpeg (``scripts/probe_encoder_limits.py``
@@ -34,12 +34,14 @@ class Format:
 
     ``suffix`` is the file name's extension (``""``: a folder of frames); ``ffmpeg`` the encoder's output
     options; ``alpha`` the replacements in them that keep a transparent background (``None``: it cannot
-    keep one); ``max_side`` the encoder's largest width or height in pixels (``None``: any the canvas takes); ``even`` whether both sides
-    must be even; ``join`` how chunks are joined; ``chunked`` whether several processes render it as
-    chunks, each with an encoder of its own; ``container`` the container's options that a join by stream
-    copy repeats; ``yuv420`` whether opaque frames go to ffmpeg as yuv420p
-    planes made here; ``encode_cost`` the encoder's CPU seconds per megapixel of frame (``None``: measured
-    when needed, as PNG compression is).
+    keep one); ``max_side`` the encoder's largest width or height in pixels (``None``: any the canvas
+    takes); ``even`` whether both sides must be even; ``join`` how chunks are joined; ``chunked`` whether
+    several processes render it as chunks, each with an encoder of its own; ``container`` the
+    container's options that a join by stream copy repeats; ``yuv420`` whether opaque frames go to
+    ffmpeg as yuv420p planes made here; ``vector`` whether the file holds the animated paths rather than
+    pictures (written by :mod:`.lottie` or :mod:`.animated_svg`, a player draws them: any size, any
+    background). What encoding a frame costs is measured in the run (:mod:`.encoder_cost`; PNG frames,
+    compressed where they are drawn, by timing that).
     """
 
     name: str
@@ -53,8 +55,8 @@ class Format:
     chunked: bool = False
     container: tuple[str, ...] = ()
     yuv420: bool = False
-    encode_cost: float | None = None
     listed: bool = True  # False: an internal format (a GIF's lossless parts), never asked for by name
+    vector: bool = False  # the paths themselves, keyframed (Lottie, animated SVG): no frames are drawn
 
     @property
     def keeps_alpha(self) -> bool:
@@ -89,22 +91,23 @@ TABLE: dict[str, Format] = {f.name: f for f in (
            ("-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p",
             "-movflags", "+faststart", "-f", "mp4"),
            max_side=16384, even=True, join="copy", chunked=True, container=("-movflags", "+faststart"),
-           yuv420=True, encode_cost=0.052),
+           yuv420=True),
     Format("webm", "VP9", ".webm",
            ("-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-pix_fmt", "yuv420p",
             "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"),
-           alpha=(("yuv420p", "yuva420p"),), max_side=65536, join="copy", chunked=True, yuv420=True,
-           encode_cost=0.114),
+           alpha=(("yuv420p", "yuva420p"),), max_side=65536, join="copy", chunked=True, yuv420=True),
     Format("mov", "ProRes 4444", ".mov",
            ("-c:v", "prores_ks", "-profile:v", "4444", "-vendor", "apl0", "-pix_fmt", "yuv444p10le", "-f", "mov"),
-           alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536, encode_cost=0.05),
+           alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536),
     Format("gif", "GIF", ".gif",
            ("-filter_complex", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=sierra2_4a",
             "-loop", "0", "-f", "gif"),
            alpha=(("palettegen=stats_mode=diff", "palettegen=stats_mode=diff:reserve_transparent=1"),
                   ("paletteuse=dither=sierra2_4a", "paletteuse=dither=sierra2_4a:alpha_threshold=128")),
-           max_side=65535, join="lossless", encode_cost=0.049),
+           max_side=65535, join="lossless"),
     Format("png", "PNG", "", alpha=(), join="frames"),  # any size the canvas takes
+    Format("lottie", "Lottie", ".json", alpha=(), vector=True),
+    Format("svg", "animated SVG", ".svg", alpha=(), vector=True),
     # a GIF's chunk: FFV1 in NUT, BGRA, exact frame times; encoded into the GIF when the parts are joined
     Format("nut", "FFV1", ".nut", ("-c:v", "ffv1", "-pix_fmt", "bgra", "-f", "nut"), alpha=(), max_side=65536,
            listed=False),
@@ -136,8 +139,9 @@ def by_suffix(suffix: str) -> Format | None:
 
 
 def formats_for(width: int, height: int) -> list[str]:
-    """The formats whose encoders take ``width × height`` frames."""
-    return [name for name in FORMATS if TABLE[name].size_problem(width, height) is None]
+    """The formats of pictures whose encoders take ``width × height`` frames (the vector formats, which
+    take any size, are not among them)."""
+    return [name for name in FORMATS if not TABLE[name].vector and TABLE[name].size_problem(width, height) is None]
 
 
 def check_frame_size(fmt: str, width: int, height: int) -> None:

@@ -40,20 +40,43 @@ _recent: OrderedDict[tuple[int, str | None, tuple[int, int] | None, Color | None
     OrderedDict()
 
 
-def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0) -> Scene:
+def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0,
+               ease: str = "linear", hold: float = 0.0, stagger: float = 0.0) -> Scene:
     """The scene at ``path`` (TOML; JSON by its ``.json`` suffix; one SVG drawing by ``.svg``), validated;
-    or, for a list of SVG files, their drawings morphing one into the next every ``step`` seconds
-    (what ``tweenrender render a.svg b.svg`` renders)."""
+    or, for a list of SVG files, their drawings morphing one into the next (what ``tweenrender render
+    a.svg b.svg`` renders): each shown ``hold`` seconds, then moving for ``step`` seconds under ``ease``,
+    element i of a drawing starting ``i × stagger`` seconds later and arriving on time."""
     from ..scenefile import load_scene as load
 
     if isinstance(path, (str, os.PathLike)):
-        return load(Path(path), step)
+        given = [n for n, v, d in (("ease", ease, "linear"), ("hold", hold, 0.0), ("stagger", stagger, 0.0)) if v != d]
+        if given and Path(path).suffix.lower() != ".svg":
+            raise OptionError("applies to SVG drawings morphing into each other; a scene file sets ease and "
+                              "stagger itself", given[0])
+        _check_timing(ease, hold, stagger)
+        return load(Path(path), step, ease, float(hold), float(stagger))
     if isinstance(path, (bytes, bytearray)) or not isinstance(path, Sequence) or \
             not all(isinstance(p, (str, os.PathLike)) for p in path):
         raise OptionError(f"path: expected a scene file's name or a list of SVG files, found {path!r}")
     if isinstance(step, bool) or not isinstance(step, Real):
         raise OptionError(f"expected seconds between drawings as a number, found {step!r}", "step")
-    return load([Path(p) for p in path], float(step))
+    _check_timing(ease, hold, stagger)
+    return load([Path(p) for p in path], float(step), ease, float(hold), float(stagger))
+
+
+def _check_timing(ease: object, hold: object, stagger: object) -> None:
+    """Refuse a timing of drawings that is not one: an unknown curve, a negative or non-numeric hold."""
+    from ..core.easing import parse_easing
+
+    if not isinstance(ease, str):
+        raise OptionError(f"expected an easing name or curve, found {ease!r}", "ease")
+    try:
+        parse_easing(ease)
+    except ValueError as error:
+        raise OptionError(str(error), "ease") from None
+    for name, value in (("hold", hold), ("stagger", stagger)):
+        if isinstance(value, bool) or not isinstance(value, Real) or not 0 <= float(value) <= 1e6:
+            raise OptionError(f"expected seconds from 0 to 1000000, found {value!r}", name)
 
 
 def frame(scene: Scene, time: float, *, method: str | None = None, size: tuple[int, int] | None = None,
@@ -132,7 +155,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
     Options come by their long names (``method, compare, format, size, fps, frames, background, balance,
-    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress``; see
+    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress, max_error``; see
     :class:`~.options.RenderOptions`) or as one ``options`` object. The format is ``format`` or
     ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name without one is a folder of PNG
     frames). ``background`` overrides the scene's (``"none"``: transparent, kept by every format but MP4).
@@ -144,6 +167,10 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     renders on a dask.distributed cluster instead: a scheduler's address, or ``"local:N"`` (needs the
     ``cluster`` extra). ``progress`` is called with ``(done, total)`` frames. The target changes only
     when the whole output was written and checked.
+
+    ``.json`` (format ``lottie``) writes Lottie, ``.svg`` (``svg``) an animated SVG: the paths themselves,
+    keyframed within ``max_error`` output pixels (default 0.25) of every frame; they take no ``compare``,
+    ``paths``, ``onion``, ``strip``, ``workers`` or ``cluster``.
     """
     from ..encode.formats import TABLE, check_alpha, check_frame_size
     from ..encode.targets import check_frames_folder, check_output_name
@@ -161,10 +188,20 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     not_an_input(target, [scene], folder=TABLE[fmt].folder)
     if TABLE[fmt].folder:
         check_frames_folder(target)
+    if TABLE[fmt].vector:
+        from .vector_export import refuse_raster_options
+
+        refuse_raster_options(fmt, opts)
+    elif opts.max_error is not None:
+        raise OptionError(f"applies to the vector formats (lottie, svg) only, not {fmt}", "max_error")
     job = render_job(scene, opts)
     if len(job.frame_range) > opts.max_frames:
         raise OptionError(f"{len(job.frame_range)} frames is more than {opts.max_frames}; "
                           "raise it to render them anyway", "max_frames")
+    if TABLE[fmt].vector:
+        from .vector_export import write_vector
+
+        return write_vector(job, fmt, target, opts.max_error)
     check_alpha(fmt, job.scene.background[3] < 255)
     check_frame_size(fmt, *job.frame_size)  # before drawing a frame or starting ffmpeg
     if opts.cluster is not None:

@@ -127,6 +127,17 @@ def _flag(value: object, option: str) -> bool:
     return value
 
 
+MAX_ERROR_RANGE = (0.001, 100.0)
+"""Output pixels the keyframed paths of a vector file may stray from the exact inbetween (``max_error``)."""
+
+
+def _max_error(value: object) -> float:
+    low, high = MAX_ERROR_RANGE
+    if isinstance(value, bool) or not isinstance(value, Real) or not low <= float(value) <= high:
+        raise OptionError(f"expected {low:g} to {high:g} output pixels, found {value!r}", "max_error")
+    return float(value)
+
+
 @dataclass(frozen=True, slots=True)
 class RenderOptions:
     """Everything ``render`` takes besides the scene and the target, validated (see :meth:`create`).
@@ -134,7 +145,8 @@ class RenderOptions:
     ``compare`` is ``None`` (one picture), ``True`` (the scene's compare list) or methods; ``frames`` a
     ``"A:B"`` text or a ``range`` (checked against the scene when the clip is known); ``size`` each
     panel's; ``background`` a colour; ``cost``, ``align``, ``equal_counts`` put over the scene's
-    ``[correspondence]``, ``balance`` over every shape's.
+    ``[correspondence]``, ``balance`` over every shape's; ``max_error`` (vector formats only) how far, in
+    output pixels, the keyframed paths may stray from the exact inbetween at a frame (default 0.25).
     """
 
     method: str | None = None
@@ -155,6 +167,7 @@ class RenderOptions:
     cluster: str | None = None
     max_frames: int = DEFAULT_MAX_FRAMES
     progress: Progress | None = None
+    max_error: float | None = None  # vector formats: output pixels the keyframed paths may stray
 
     @classmethod
     def names(cls) -> tuple[str, ...]:
@@ -212,4 +225,5 @@ class RenderOptions:
             cluster=v.get("cluster"),
             max_frames=_count(v.get("max_frames", DEFAULT_MAX_FRAMES), 1, 10**12, "max_frames"),
             progress=v.get("progress"),
+            max_error=_max_error(v["max_error"]) if "max_error" in v else None,
         )

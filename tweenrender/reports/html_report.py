@@ -18,15 +18,16 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
+from ..core.methods import METHODS, measured_methods
 from ..core.stacking import Switch, layered
 from ..errors import OptionError, printable
-from ..core.methods import measured_methods
 from ..model import Scene
 from .stats import crossing_runs
 
 __all__ = ["REPORT_FILE", "report_methods", "write_report", "page"]
 
-REPORT_FILE = re.compile(r"(?:index\.html|sheet\.png|correspondence\.png|metrics\.png|[a-z]+\.webm)")
+REPORT_FILE = re.compile(r"(?:index\.html|sheet\.png|correspondence\.png|metrics\.png|(?:"
+                         + "|".join(re.escape(name) for name in METHODS) + r")\.webm)")
 """The names of the files a report folder holds: the only names its manifest may list."""
 
 _WIDTH = 384  # pixels of each animation's width (three to a row); the height follows the view

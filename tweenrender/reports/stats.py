@@ -7,6 +7,7 @@ from typing import Any, Callable, Sequence
 from ..core.intrinsic import closure_tweak
 from ..core.measures import SWEEP, report
 from ..core.qcurves import auto_choice
+from ..core.tangles import tangled_times
 from ..core.timeline import pair_paths
 from ..core.methods import REGISTRY, measured_methods
 from ..model import Scene
@@ -23,6 +24,7 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
     """The thesis's ch. 6 report and the quality measures for every shape and segment (the documented
     ``stats --json``): for ``methods``, default every method (``jointed`` where a shape has joints)."""
     shapes = []
+    tangled: dict[tuple[int, int, str], list[float]] = {}
     for entry in entries(scene, closed_only=True):
         pair, joints = entry.pair, entry.segment.joints
         names = tuple(methods) if methods is not None else measured_methods(jointed=bool(joints))
@@ -30,6 +32,7 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
         measured = {m: report(pair.k0, pair.k1, m, t, joints, _as_drawn(entry, m)).as_dict()
                     for m in names}
         for method in measured:
+            measured[method]["crossings"] = _crossings(entry, method, tangled)
             closure = REGISTRY[method].closure
             if closure is not None:  # how much the closing tweak changed the lengths, at worst
                 measured[method]["closure_tweak_max"] = float(closure_tweak(pair.k0, pair.k1, SWEEP, closure).max())
@@ -44,6 +47,18 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
     if not shapes:
         out["note"] = nothing_measured(scene)
     return out
+
+
+def _crossings(entry: Entry, method: str, done: dict[tuple[int, int, str], list[float]]) -> list[float]:
+    """The swept t at which the entry's shape tangles in its segment under ``method``: a contour
+    crossing itself properly, or a hole leaving its outline (all the segment's moving contours)."""
+    key = (id(entry.shape), entry.index, method)
+    if key not in done:
+        segment = entry.segment
+        frames = pair_paths(segment, SWEEP, method)
+        moving = [k for k, p in enumerate(segment.pairs) if p.moving]
+        done[key] = tangled_times([frames[k] for k in moving], [segment.pairs[k].closed for k in moving], SWEEP)
+    return done[key]
 
 
 def _as_drawn(entry: Entry, method: str) -> Callable[[Any], Any] | None:

@@ -95,11 +95,15 @@ class Element:
 
 @dataclass(frozen=True, slots=True)
 class Drawing:
-    """A whole drawing: its view box in world units ``(xmin, ymin, xmax, ymax)``, y up, and its elements."""
+    """A whole drawing: its view box in world units ``(xmin, ymin, xmax, ymax)``, y up, and its elements.
+
+    ``to_world`` is the 3 × 3 map from the SVG's user units (y down) to world units (``None``: unknown).
+    """
 
     path: Path
     box: tuple[float, float, float, float]
     elements: tuple[Element, ...]
+    to_world: NDArray[np.float64] | None = None
 
 
 # -- one element by id ------------------------------------------------------------------------------
@@ -235,7 +239,7 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
             element = _element(d, to_world, scale, tol, budget)
             if element is not None:
                 elements.append(element)
-        return Drawing(Path(svg_path), world_box, tuple(elements))
+        return Drawing(Path(svg_path), world_box, tuple(elements), to_world)
     except Refusal as refusal:
         raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
 

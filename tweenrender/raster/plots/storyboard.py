@@ -3,7 +3,9 @@
 One row per method on a shared world view, so sizes compare across rows: the
 keys outlined strongly over a light fill, the inbetweens as thin outlines over
 a fainter fill, each row labelled with its method and the scene's perimeter
-ratio at the middle of each segment (:mod:`tweenrender.core.ratios`).
+ratio at the middle of each segment (:mod:`tweenrender.core.ratios`). Each segment's
+timing is drawn as an animator's chart between its keys (:mod:`.timing_chart`), and
+shape hints as lettered dots on the keys, with the paths they force.
 
 A scene of whole drawings is shown as a filmstrip instead: each row the keys and
 inbetweens side by side, each drawn as the frame is (paint, stroke widths, paint
@@ -22,6 +24,7 @@ from ...core.ratios import scene_perimeter_ratio, segment_midpoints
 from ...core.timeline import Track
 from ...model import Color, Paint, Scene
 from ..overlays import path_polylines, skia_path, stroke_paint
+from ..painter import Painter
 from ..surface import Raster, contours_path
 from ..view import Box, Viewport
 
@@ -88,7 +91,8 @@ def draw_sheet(scene: Scene, tracks: Sequence[Track], methods: Sequence[str], vi
     raster.text(title, layout.pad, layout.title * 0.56, title_size, _INK, bold=True)
     spacing = f", every {times[1] - times[0]:g} s" if len(times) > 1 else ""
     legend = (f"bold: keys at {', '.join(f'{k:g}' for k in _key_times(scene))} s  ·  "
-              f"thin: {len(times)} inbetweens{spacing}" + ("  ·  lines: vertex paths" if paths else ""))
+              f"thin: {len(times)} inbetweens{spacing}" + ("  ·  lines: vertex paths" if paths else "")
+              + f"  ·  red ticks: where each frame falls ({scene.fps:g} fps)")
     if is_drawing(scene):
         legend = (f"keys at {', '.join(f'{k:g}' for k in _key_times(scene))} s and {len(times)} inbetweens{spacing}, "
                   "as drawn; thin lines: the outlines" + ("; vertex paths" if paths else ""))
@@ -129,6 +133,11 @@ def draw_sheet(scene: Scene, tracks: Sequence[Track], methods: Sequence[str], vi
                 if not key.hidden:
                     _outline(raster, port, shape.fill_rule, [c.points for c in key.contours],
                              [c.closed for c in key.contours], key.paint, 0.2, 2.6, 1.0, key.paint.stroke or _INK)
+        from .timing_chart import draw_hint_marks, draw_timing_charts
+
+        marks = Painter(raster, 1.0)
+        draw_timing_charts(marks, port, (0.0, 0.0), scene, tracks, scene.fps)
+        draw_hint_marks(marks, port, (0.0, 0.0), scene.shapes, tracks, method)
         canvas.restore()
     return raster.rgba().copy()
 

@@ -1,0 +1,264 @@
+"""Injective paths (maths §5.9): in-betweens of simple keys never tangle, checked by an exact brute force.
+
+Every check here is independent of the code under test: the crossing test is :mod:`tests.core.exact_tangles`
+(all pairs of edges, rational arithmetic), triangle orientations are decided in exact rationals, a rigid
+turn is compared with its closed form, and mean-value weights with the identity they must satisfy.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import tweenrender as tr
+from tests.core.exact_tangles import parents_of, tangled
+from tests.helpers import DATA
+from tweenrender.core.geometry import rotate
+from tweenrender.core.injective import injective, injective_contours, injective_mesh, mean_value_weights
+from tweenrender.core.methods import interpolate
+from tweenrender.core.qcurves import auto_choice
+from tweenrender.core.timeline import build_track, pair_paths
+
+T = np.round(np.arange(1, 20) * 0.05, 2)  # t = .05 … .95
+
+ICONS = DATA / "icons"
+# unrelated real icons: single outlines, and outlines with holes (alpha-b, check-circle-outline, weather-*)
+ICON_PAIRS = [
+    ("feather/moon", "octicons/heart-24"),
+    ("simple-icons/apple", "lucide/star"),
+    ("twemoji/1f319", "heroicons/check-circle"),
+    ("heroicons/moon", "feather/heart"),
+    ("lucide/star", "simple-icons/python"),
+    ("tabler/sun", "bootstrap/apple"),
+    ("mdi/alpha-b", "mdi/alpha-o"),
+    ("mdi/check-circle-outline", "octicons/check-circle-24"),
+    ("mdi/weather-sunny", "bootstrap/apple"),
+    ("mdi/weather-night", "heroicons/face-smile"),
+]
+
+
+def _moving_segments(a: str, b: str):
+    scene = tr.load_scene([ICONS / f"{a}.svg", ICONS / f"{b}.svg"])
+    for shape in scene.shapes:
+        track = build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
+        for segment in track.segments:
+            moving = [k for k, p in enumerate(segment.pairs) if p.moving]
+            if all(segment.shown) and moving:
+                yield segment, moving
+
+
+def _exact_orientations(points: np.ndarray, triangles: np.ndarray) -> list[int]:
+    signs = []
+    for a, b, c in triangles.tolist():
+        (ax, ay), (bx, by), (cx, cy) = ((Fraction(float(x)), Fraction(float(y))) for x, y in points[[a, b, c]])
+        value = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+        signs.append((value > 0) - (value < 0))
+    return signs
+
+
+def _check_never_tangles(k0s: list[np.ndarray], k1s: list[np.ndarray], closed: list[bool],
+                         frames: list[np.ndarray]) -> None:
+    parent = parents_of(k0s, closed)
+    assert not tangled(k0s, closed, parent) and not tangled(k1s, closed, parent), "the keys must be simple"
+    for k, t in enumerate(T):
+        assert not tangled([f[k] for f in frames], closed, parent), f"tangled at t = {t}"
+
+
+@pytest.mark.parametrize("a, b", ICON_PAIRS, ids=[f"{a}->{b}" for a, b in ICON_PAIRS])
+def test_real_icon_pairs_never_tangle_and_their_mesh_is_positive_in_both_keys(a: str, b: str) -> None:
+    checked = 0
+    for segment, moving in _moving_segments(a, b):
+        pairs = [segment.pairs[k] for k in moving]
+        k0s, k1s, closed = [p.k0 for p in pairs], [p.k1 for p in pairs], [p.closed for p in pairs]
+        mesh = injective_mesh(k0s, k1s, closed)
+        assert mesh is not None, "the keys are simple: they must be meshed, not left to the rigid paths"
+        assert _exact_orientations(mesh.p0, mesh.triangles) == [1] * len(mesh.triangles)
+        assert _exact_orientations(mesh.p1, mesh.triangles) == [1] * len(mesh.triangles)
+        frames = pair_paths(segment, T, "injective")
+        _check_never_tangles(k0s, k1s, closed, [frames[k] for k in moving])
+        checked += 1
+    assert checked
+
+
+def _band(centre: np.ndarray, width: float) -> np.ndarray:
+    """A closed outline around an open centre line ``(M, 2)``: one side out, the other back."""
+    tangent = np.gradient(centre, axis=0)
+    normal = np.column_stack([-tangent[:, 1], tangent[:, 0]])
+    normal /= np.linalg.norm(normal, axis=1, keepdims=True)
+    return np.vstack([centre + width * normal, (centre - width * normal)[::-1]])
+
+
+def _spiral_and_star() -> tuple[np.ndarray, np.ndarray]:
+    s = np.linspace(0.0, 3.0 * np.pi, 40)
+    spiral = _band(np.column_stack([(1 + s) * np.cos(s), (1 + s) * np.sin(s)]), 0.25)
+    n = len(spiral)
+    angle = np.pi * np.arange(n) / (n // 2)
+    radius = np.where(np.arange(n) % 2 == 0, 5.0, 2.0)
+    star = np.column_stack([radius * np.cos(angle), radius * np.sin(angle)])
+    return star, _counter_clockwise(spiral)
+
+
+def _counter_clockwise(points: np.ndarray) -> np.ndarray:
+    x, y = points[:, 0], points[:, 1]
+    return points if np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y) > 0 else points[::-1].copy()
+
+
+def _c_and_s() -> tuple[np.ndarray, np.ndarray]:
+    u = np.linspace(0.0, 1.0, 41)
+    c = _band(np.column_stack([np.cos(np.pi * (0.25 + 1.5 * u)), np.sin(np.pi * (0.25 + 1.5 * u))]), 0.15)
+    upper = np.column_stack([np.cos(3 * np.pi * u[:21]), 1 + np.sin(3 * np.pi * u[:21])])
+    lower = np.column_stack([np.cos(np.pi * (0.5 - 3 * u[1:21])), -1 + np.sin(np.pi * (0.5 - 3 * u[1:21]))])
+    s = _band(np.vstack([upper, lower]) * 0.6, 0.1)
+    return _counter_clockwise(c), _counter_clockwise(s)
+
+
+def _hook_and_mirror() -> tuple[np.ndarray, np.ndarray]:
+    hook = np.array([[0, 0], [4, 0], [4, 1], [1, 1], [1, 3], [3, 3], [3, 2], [2, 2], [2, 2.5], [1.5, 2.5],
+                     [1.5, 1.5], [3.5, 1.5], [3.5, 3.5], [0, 3.5]], dtype=float)
+    mirror = hook * [-1.0, 1.0]
+    # a correspondence keeps the winding: the mirror is walked the other way round
+    return hook, np.roll(mirror[::-1], 1, axis=0)
+
+
+HARD = {"spiral-to-star": _spiral_and_star, "c-to-s": _c_and_s, "hook-to-mirror": _hook_and_mirror}
+
+
+@pytest.mark.parametrize("name", sorted(HARD))
+def test_hand_made_hard_pairs_never_tangle(name: str) -> None:
+    k0, k1 = HARD[name]()
+    assert len(k0) == len(k1)
+    frames = interpolate(k0, k1, T, "injective")
+    _check_never_tangles([k0], [k1], [True], [frames])
+    mesh = injective_mesh([k0], [k1], [True])
+    assert mesh is not None
+    assert set(_exact_orientations(mesh.p0, mesh.triangles)) == {1}
+    assert set(_exact_orientations(mesh.p1, mesh.triangles)) == {1}
+
+
+@pytest.mark.parametrize("name", sorted(HARD))
+def test_straight_paths_do_tangle_on_the_hard_pairs(name: str) -> None:
+    """The hard pairs are hard: the linear in-betweens cross (so the test above means something)."""
+    k0, k1 = HARD[name]()
+    frames = interpolate(k0, k1, T, "linear")
+    parent = parents_of([k0], [True])
+    assert any(tangled([frame], [True], parent) for frame in frames)
+
+
+def test_keys_come_back_bit_for_bit() -> None:
+    k0, k1 = _c_and_s()
+    frames = interpolate(k0, k1, [0.0, 0.5, 1.0], "injective")
+    assert np.array_equal(frames[0], k0) and np.array_equal(frames[2], k1)
+    contours = injective_contours([k0[:10], k0], [k1[:10] * 0.1, k1], [False, True], [0.0, 1.0])
+    assert np.array_equal(contours[1][0], k0) and np.array_equal(contours[1][1], k1)
+
+
+def test_a_rigid_turn_stays_rigid() -> None:
+    k0, _ = _hook_and_mirror()
+    turn = 1.1
+    k1 = rotate(k0 - k0.mean(axis=0), turn) + [7.0, -3.0]
+    frames = injective(k0, k1, T)
+    centre0, centre1 = k0.mean(axis=0), k1.mean(axis=0)
+    for frame, t in zip(frames, T):
+        exact = rotate(k0 - centre0, t * turn) + (1 - t) * centre0 + t * centre1
+        assert np.abs(frame - exact).max() < 1e-9 * np.ptp(k0)
+
+
+def test_weights_beyond_the_segment_are_clamped() -> None:
+    k0, k1 = _spiral_and_star()
+    frames = injective(k0, k1, [1.0, 1.5])
+    # the rigid part overshoots, the shape itself stays key 1's: the overshoot is a rigid motion of key 1
+    rigid = frames[1] - frames[1].mean(axis=0)
+    key = k1 - k1.mean(axis=0)
+    assert np.allclose(np.linalg.norm(rigid, axis=1), np.linalg.norm(key, axis=1), atol=1e-9 * np.ptp(k1))
+
+
+def test_mean_value_weights_reproduce_each_inner_vertex() -> None:
+    rng = np.random.default_rng(3)
+    ring = np.column_stack([np.cos(np.linspace(0, 2 * np.pi, 9)[:-1]), np.sin(np.linspace(0, 2 * np.pi, 9)[:-1])])
+    inner = rng.uniform(-0.3, 0.3, (1, 2))
+    points = np.vstack([ring, inner])
+    triangles = np.array([[k, (k + 1) % 8, 8] for k in range(8)])
+    rows, cols, w = mean_value_weights(points, triangles)
+    mine = rows == 8
+    assert np.all(w[mine] > 0) and np.isclose(w[mine].sum(), 1.0)
+    assert np.allclose((w[mine, None] * points[cols[mine]]).sum(axis=0), inner[0], atol=1e-12)
+
+
+def test_auto_takes_injective_paths_only_where_straight_ones_cross() -> None:
+    star, spiral = _spiral_and_star()
+    choice = auto_choice(star, spiral)
+    assert choice.method == "injective", choice
+    frames = interpolate(star, spiral, T, "auto")
+    _check_never_tangles([star], [spiral], [True], [frames])
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    assert auto_choice(square, square * [2.0, 1.0]).method == "linear"
+    assert auto_choice(square, rotate(square, 1.0)).method == "nonlinear"
+
+
+def test_keys_that_cross_take_the_rigid_paths_without_error() -> None:
+    bow = np.array([[0, 0], [2, 2], [2, 0], [0, 2]], dtype=float)
+    square = np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float)
+    frames = interpolate(bow, square, T, "injective")
+    assert np.all(np.isfinite(frames))
+    assert injective_mesh([bow], [square], [True]) is None
+
+
+def test_a_hole_that_changes_sides_is_refused_cleanly(tmp_path: Path) -> None:
+    outer = np.array([[0, 0], [10, 0], [10, 10], [0, 10]], dtype=float)
+    hole = np.array([[4, 4], [4, 6], [6, 6], [6, 4]], dtype=float)
+    assert injective_mesh([outer, hole], [outer, hole + [20.0, 0.0]], [True, True]) is None
+    mesh = injective_mesh([outer, hole], [outer * 1.5, hole + [1.0, 2.0]], [True, True])
+    assert mesh is not None
+
+
+def test_an_open_stroke_with_repeated_vertices_stays_inside_its_outline() -> None:
+    outline0 = np.array([[0, 0], [10, 0], [10, 10], [0, 10]], dtype=float)
+    outline1 = np.array([[0, 0], [12, -2], [8, 9], [-1, 7]], dtype=float)
+    smile0 = np.array([[2, 6], [4, 3], [4, 3], [4, 3], [6, 3], [8, 6]], dtype=float)
+    smile1 = np.array([[7, 2], [6, 2], [3, 4], [2, 6], [2, 6], [5, 7]], dtype=float)
+    k0s, k1s, closed = [outline0, smile0], [outline1, smile1], [True, False]
+    assert injective_mesh(k0s, k1s, closed) is not None
+    frames = injective_contours(k0s, k1s, closed, T)
+    _check_never_tangles(k0s, k1s, closed, frames)
+
+
+def test_past_the_steiner_cap_the_rigid_paths_take_over(monkeypatch: pytest.MonkeyPatch) -> None:
+    from tweenrender.core import compatible
+
+    k0, k1 = _spiral_and_star()
+    assert injective_mesh([k0], [k1], [True]).steiner > 0  # type: ignore[union-attr]
+    monkeypatch.setattr(compatible, "STEINER_CAP", 0)
+    assert injective_mesh([k0], [k1], [True]) is None
+    frames = injective_contours([k0], [k1 + 0.25], [True], [0.5])  # fresh keys: not from the cache
+    assert np.all(np.isfinite(frames[0]))
+
+
+@pytest.mark.parametrize("size", [1e-300, 1e300])
+def test_keys_near_the_ends_of_the_float_range_make_no_warning(size: float) -> None:
+    import warnings
+
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float) * size
+    kite = np.array([[0, 0], [1, 0], [0.5, 1], [0, 1]], dtype=float) * size
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        frames = interpolate(square, kite, T, "injective")
+        assert injective_mesh([square], [kite], [True]) is not None
+    assert np.all(np.isfinite(frames))
+    _check_never_tangles([square], [kite], [True], [frames])
+
+
+def test_auto_keeps_an_open_stroke_from_crossing_itself() -> None:
+    from tweenrender.model import Contour, Key, Matching, Shape
+
+    k0 = np.array([[0, 0], [4, 0], [4, 4], [1, 4], [1, 1]], dtype=float)
+    k1 = np.array([[6, -3], [2, 4], [1, 7], [7, 6], [2, 6]], dtype=float)
+    straight = interpolate(k0, k1, T, "linear")
+    assert any(tangled([f], [False], [None]) for f in straight)  # straight paths do cross here
+    shape = Shape(name="stroke", keys=(Key(time=0.0, contours=(Contour(k0, closed=False),)),
+                                       Key(time=1.0, contours=(Contour(k1, closed=False),))))
+    segment = build_track(shape, Matching()).segments[0]
+    frames = pair_paths(segment, T, "auto")[0]
+    _check_never_tangles([k0], [k1], [False], [frames])

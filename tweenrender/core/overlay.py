@@ -37,7 +37,7 @@ def fat(a: Sequence[float], b: Sequence[float], c: Sequence[float]) -> bool:
     return area > _THIN * math.hypot(b[0] - a[0], b[1] - a[1]) * math.hypot(c[0] - a[0], c[1] - a[1])
 
 
-_RELAX_ROUNDS = 20
+_RELAX_ROUNDS = 40
 _STEPS = np.array([1.0, 0.5, 0.25])
 
 

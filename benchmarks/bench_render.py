@@ -10,9 +10,11 @@ Prints, in one run, each result with the load average at the time:
    ``--workers 1``, against the same bundled ffmpeg encoding the very same
    frames, pre-rendered to a raw RGB file, with the same settings
    ("encode-only"; ffmpeg then converts to yuv420p itself), and from the
-   yuv420p planes a render now sends it (the stricter floor: no conversion
-   left to ffmpeg, while the render makes them); medians of ``--rounds``
-   interleaved runs;
+   yuv420p planes a render now sends it; ``--rounds`` interleaved runs, every
+   ratio paired within a round and given as min / median; the floor is work
+   over cores in CPU seconds alone ((encoder CPU + drawing CPU) / cores), so
+   other load on the machine stretches the walls compared with it, never the
+   floor itself: the load average is printed after each round;
 2. where a stroked frame's drawing time goes, idea by idea;
 3. peak memory of the whole process tree (tweenrender + ffmpeg, RSS of every
    descendant sampled from /proc every 20 ms) at 1080p and 4K, opaque frames
@@ -24,7 +26,14 @@ Prints, in one run, each result with the load average at the time:
    options and each option tried for memory (queues, sliced threads, glibc's
    mmap threshold, no encoder at all);
 4. ``--cluster local:2`` against a local render;
-5. the machine: ``nproc``, the CPU model, Python, the load average.
+5. a two-icon morph, 1 s of 720p MP4 (wall, CPU, the heavy modules it loads;
+   manim's wall on it when manim is installed, else said so);
+6. the preview's save-to-frame latency on three shipped scenes
+   (``benchmarks/bench_preview.py`` measures every scene);
+7. the machine: ``nproc``, the CPU model, Python, the load average.
+
+The correspondence search's growth in time and memory is measured apart:
+``benchmarks/bench_correspond_memory.py``.
 """
 
 from __future__ import annotations
@@ -117,7 +126,7 @@ def write_scene(folder: Path, seconds: float, name: str) -> Path:
 
 def prerender_raw(scene: Path, planes_file: Path, raw: Path | None = None) -> tuple[int, float]:
     """Every frame of ``scene`` as the very yuv420p planes a render sends ffmpeg (encode.yuv420) in
-    ``planes_file`` and, if ``raw`` is given, as raw RGB there: (frames, seconds spent drawing)."""
+    ``planes_file`` and, if ``raw`` is given, as raw RGB there: (frames, CPU seconds spent drawing)."""
     import numpy as np
 
     from tweenrender.encode.yuv420 import Yuv420
@@ -131,9 +140,9 @@ def prerender_raw(scene: Path, planes_file: Path, raw: Path | None = None) -> tu
     with open(planes_file, "wb") as yuv, open(raw or os.devnull, "wb") as rgb:
         stream = frame_stream(job)
         while True:
-            start = time.perf_counter()
+            start = time.process_time()  # CPU seconds: other load on the machine does not stretch them
             frame = next(stream, None)
-            drawing += time.perf_counter() - start
+            drawing += time.process_time() - start
             if frame is None:
                 break
             if raw is not None:
@@ -153,8 +162,18 @@ def median(values: list[float]) -> float:
     return ordered[middle] if len(ordered) % 2 else 0.5 * (ordered[middle - 1] + ordered[middle])
 
 
+def _min_median(values: list[float], digits: int = 3) -> str:
+    return f"{min(values):.{digits}f} / {median(values):.{digits}f}"
+
+
 def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
-    """Encode-only, render (auto workers) and render --workers 1 of one scene, interleaved."""
+    """Encode-only, render (auto workers) and render --workers 1 of one scene, interleaved.
+
+    The floor is work over cores, in CPU seconds only: (the encoder's CPU on these frames + the
+    drawing's CPU) / cores, no render that draws and encodes them here can take less wall time.
+    Every ratio pairs runs of the same round (so a burst of other load stretches both sides), and
+    is given as min / median over the rounds, with the load average after each round.
+    """
     from tweenrender.encode.sinks import ffmpeg_command
 
     scene = folder / f"{name}.toml"
@@ -183,28 +202,29 @@ def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
     job = RenderJob(load_scene(scene))
     cost = measure_cost(job, "mp4")
     chosen = default_workers(job, "mp4", cost=cost)
-    wall = {key: median([r[0] for r in value]) for key, value in runs.items()}
-    cpu = {key: median([r[1] for r in value]) for key, value in runs.items()}
-    print(f"## {name}: {frames} frames of 1080p24, H.264 CRF 18 medium; medians of {rounds} interleaved rounds")
-    print(f"drawing alone, in-process: {1000 * drawing / frames:.1f} ms/frame; cost measured here: draw "
-          f"{1000 * cost.draw:.1f} ms, encoder estimate {1000 * cost.encode:.1f} ms -> {chosen} worker(s) "
-          f"(each render measures for itself, so near the balance it may choose otherwise: see its peak memory)")
-    print("| run | wall s (median) | all rounds | CPU s | peak tree MiB | ratio to encode-only (RGB) | "
-          "ratio to encode-only (yuv420p) |")
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    encoder_cpu = median([r[1] for r in runs["planes"]])
+    floor = (encoder_cpu + drawing) / cores
+    print(f"## {name}: {frames} frames of 1080p24, H.264 CRF 18 medium; {rounds} interleaved rounds")
+    print(f"drawing, in-process: {1000 * drawing / frames:.1f} CPU ms/frame; the encoder on the yuv420p frames: "
+          f"{1000 * encoder_cpu / frames:.1f} CPU ms/frame; measured here as a render measures it: draw "
+          f"{1000 * cost.draw:.1f} ms, encoder {1000 * cost.encode:.1f} CPU ms -> {chosen} worker(s) "
+          f"(each render measures for itself, so near the balance it may choose otherwise)")
+    print(f"floor on {cores} cores: (encoder {encoder_cpu:.2f} CPU s + drawing {drawing:.2f} CPU s) / {cores} "
+          f"= {floor:.2f} s")
+    print("| run | wall s (min / median) | all rounds | CPU s (median) | peak tree MiB (max) | "
+          "/ encode-only RGB, same round (min / median) | / floor (min / median) |")
     print("|---|---|---|---|---|---|---|")
     for key, label in (("alone", "encode-only: ffmpeg from raw RGB (it converts)"),
                        ("planes", "encode-only: ffmpeg from the raw yuv420p a render sends"),
                        ("auto", "render, auto workers"), ("one", "render --workers 1")):
-        rounds_text = ", ".join(f"{r[0]:.2f}" for r in runs[key])
-        peak = max(r[2] for r in runs[key])
-        print(f"| {label} | {wall[key]:.2f} | {rounds_text} | {cpu[key]:.2f} | {peak} | "
-              f"{wall[key] / wall['alone']:.3f} | {wall[key] / wall['planes']:.3f} |")
-    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
-    floor = (cpu["planes"] + drawing) / cores
-    print(f"floor on {cores} cores: (encoder CPU {cpu['planes']:.2f} s + drawing {drawing:.2f} s) / {cores} = "
-          f"{floor:.2f} s, {floor / wall['alone']:.2f}x encode-only (RGB): no render that draws and encodes "
-          f"these frames here can be faster")
-    print(f"auto / --workers 1: {wall['auto'] / wall['one']:.3f}; file size render / encode-only: "
+        walls = [r[0] for r in runs[key]]
+        paired = [r[0] / a[0] for r, a in zip(runs[key], runs["alone"])]
+        print(f"| {label} | {_min_median(walls, 2)} | {', '.join(f'{w:.2f}' for w in walls)} | "
+              f"{median([r[1] for r in runs[key]]):.2f} | {max(r[2] for r in runs[key])} | "
+              f"{_min_median(paired)} | {_min_median([w / floor for w in walls])} |")
+    auto_one = [a[0] / o[0] for a, o in zip(runs["auto"], runs["one"])]
+    print(f"auto / --workers 1, same round: {_min_median(auto_one)}; file size render / encode-only: "
           f"{outputs['auto'].stat().st_size / outputs['alone'].stat().st_size:.4f}; "
           f"load averages after each round: {', '.join(f'{x:.2f}' for x in loads)}")
     print()
@@ -513,6 +533,43 @@ def cluster(folder: Path, rounds: int) -> None:
     print()
 
 
+def icon_morph(folder: Path, rounds: int) -> None:
+    """A two-icon morph, 1 s of 720p MP4: wall and CPU of the whole command, what it imported, and
+    manim's wall on the same motion when manim is installed."""
+    icons = ROOT / "tests" / "data" / "icons" / "feather"
+    target = folder / "icons.mp4"
+    command = [*TWEENRENDER, "render", str(icons / "heart.svg"), str(icons / "star.svg"), "--size", "1280x720",
+               "-o", str(target), "-q"]
+    runs = [run_measured(command) for _ in range(rounds)]
+    print(f"## A two-icon morph (feather heart -> star), 1 s of 1280x720 MP4, {rounds} runs ({load()})")
+    print(f"wall {_min_median([r[0] for r in runs], 2)} s (min / median), CPU {median([r[1] for r in runs]):.2f} s, "
+          f"peak tree {max(r[2] for r in runs)} MiB")
+    check = ("import sys, tweenrender as tr\n"
+             f"scene = tr.load_scene([{str(icons / 'heart.svg')!r}, {str(icons / 'star.svg')!r}])\n"
+             "tr.frame(scene, 0.5, size=(1280, 720))\n"
+             "print(', '.join(m for m in ('scipy.optimize', 'numba', 'skia') if m in sys.modules) or 'none')\n")
+    loaded = subprocess.run([sys.executable, "-c", check], capture_output=True, text=True, cwd=ROOT,
+                            env={**os.environ, "PYTHONPATH": str(ROOT)}).stdout.strip()
+    print(f"heavy modules loaded by loading and drawing it: {loaded}")
+    try:
+        import manim  # noqa: F401
+    except ImportError:
+        print("manim is not installed: no comparison")
+    print()
+
+
+def preview_latency(rounds: int) -> None:
+    """The preview's save-to-frame latency on three shipped scenes (benchmarks/bench_preview.py does all)."""
+    from bench_preview import measure
+
+    print(f"## Preview: a save to the first frame of the new drawing served, {rounds} saves each ({load()})")
+    for name in ("square.toml", "foot-svg.toml", "walk.toml"):
+        outside, inside, total = measure(ROOT / "scenes" / name, rounds)
+        print(f"{name:16s} {total:4d} frames: {_min_median(outside)} s (min / median) from the rename to the "
+              f"frame served; the server's own count {_min_median(inside)} s")
+    print()
+
+
 def machine() -> None:
     model = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
                   if line.startswith("model name")), platform.processor())
@@ -536,7 +593,8 @@ def installed_bytecode() -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3, help="interleaved runs of each comparison")
-    parser.add_argument("--only", choices=("stroked", "busy", "drawing", "memory", "ffmpeg", "cluster"))
+    parser.add_argument("--only", choices=("stroked", "busy", "drawing", "memory", "ffmpeg", "cluster", "icons",
+                                           "preview"))
     args = parser.parse_args()
     machine()
     installed_bytecode()
@@ -554,6 +612,10 @@ def main() -> None:
             ffmpeg_options(folder, args.rounds)
         if args.only in (None, "cluster"):
             cluster(folder, args.rounds)
+        if args.only in (None, "icons"):
+            icon_morph(folder, max(args.rounds, 3))
+        if args.only in (None, "preview"):
+            preview_latency(args.rounds)
     machine()
 
 

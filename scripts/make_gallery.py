@@ -19,6 +19,8 @@ MORPHS = {  # name: drawings, one key a second (and a view, where the drawing's 
     "sun-moon": ["feather/sun.svg", "feather/moon.svg"],
     "letters-a-o-b": ["mdi/alpha-a.svg", "mdi/alpha-o.svg", "mdi/alpha-b.svg", (7.0, -19.0, 17.0, -5.0)],
     "heart-star": ["heroicons/heart.svg", "octicons/star-24.svg"],
+    "potato-olive": ["fluent-emoji/potato.svg", "fluent-emoji/olive.svg"],
+    "page-truck": ["twemoji/1f4c4.svg", "twemoji/1f69a.svg"],
 }
 WIDTH = 960
 ROW = 250  # pixels per method row of a sheet
@@ -43,7 +45,7 @@ def main() -> None:
     icon_morphs()
 
 
-def icon_morphs() -> None:
+def icon_morphs(names: list[str] | None = None) -> None:
     """Each morph as a GIF (by the command line) and a strip of six frames (by the library)."""
     import imageio.v3 as iio
     import numpy as np
@@ -53,6 +55,8 @@ def icon_morphs() -> None:
     from dataclasses import replace
 
     for name, files in MORPHS.items():
+        if names is not None and name not in names:
+            continue
         view = files[-1] if isinstance(files[-1], tuple) else None
         paths = [str(ICONS / f) for f in files if isinstance(f, str)]
         if view is None:
@@ -69,4 +73,8 @@ def icon_morphs() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:]:  # only these morphs, e.g. ``python scripts/make_gallery.py potato-olive``
+        sys.path.insert(0, str(ROOT))
+        icon_morphs(sys.argv[1:])
+    else:
+        main()

@@ -2,6 +2,7 @@
 
     python scripts/mutation_check.py            # every mutant, one after another (about 15 minutes)
     python scripts/mutation_check.py -k ease    # only mutants whose name contains "ease"
+    python scripts/mutation_check.py -k "svg manifest"   # ... "svg" or "manifest"
     python scripts/mutation_check.py --list     # the mutants, without running anything
 
 The tree (package, tests, scenes) is copied once to a temporary folder. Each mutant
@@ -45,7 +46,16 @@ STATS = ("tests/cli/test_main.py", "tests/core/test_measures.py")
 TIMELINE = ("tests/core/test_timeline.py", "tests/pipeline/test_library.py", "tests/raster/test_frames.py")
 ENCODE = ("tests/encode", "tests/cli/test_main.py")
 STROKE = ("tests/raster/test_round_stroke.py",)
+CONTROLS = ("tests/core/test_easing.py", "tests/core/test_hints.py", "tests/scenefile/test_controls.py",
+            "tests/cli/test_timing_flags.py")
 ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
+VECTOR = ("tests/core/test_keyframes.py", "tests/pipeline/test_vector_output.py")
+OWNED = ("tests/encode/test_manifest.py", "tests/cli/test_targets.py")
+_CLUSTER_TESTS = "tests/pipeline/test_cluster_failures.py::"
+CLUSTER = tuple(_CLUSTER_TESTS + name for name in ("test_a_bad_address_is_refused_before_connecting",
+                                                   "test_a_port_where_nothing_listens_is_one_line",
+                                                   "test_an_http_server_is_not_taken_for_a_scheduler"))
+DRAWING = ("tests/scenefile/test_drawing_rules.py", "tests/scenefile/test_hostile_inputs.py")
 
 MUTANTS = [
     # -- core: paths ---------------------------------------------------------------------------------
@@ -107,24 +117,42 @@ MUTANTS = [
            "return a - centroid(a), b - centroid(b)", "return a - centroid(a), b - centroid(a)",
            ("tests/core/test_correspond.py", "tests/cli/test_correspond.py")),
     # -- timeline ------------------------------------------------------------------------------------
-    Mutant("ease: in-out made linear", "tweenrender/core/timeline.py",
-           "return t * t * (3.0 - 2.0 * t)", "return t", TIMELINE),
-    Mutant("ease: in and out swapped", "tweenrender/core/timeline.py",
-           'if kind == "in":\n        return t * t\n    if kind == "out":\n        return 1.0 - (1.0 - t) ** 2',
-           'if kind == "in":\n        return 1.0 - (1.0 - t) ** 2\n    if kind == "out":\n        return t * t',
+    Mutant("ease: in-out made linear", "tweenrender/core/easing.py",
+           "(1 / 3, 0.0, 2 / 3, 1.0): lambda u: u * u * (3.0 - 2.0 * u),", "(1 / 3, 0.0, 2 / 3, 1.0): lambda u: u,",
            TIMELINE),
-    Mutant("ease: out is cubic", "tweenrender/core/timeline.py",
-           "return 1.0 - (1.0 - t) ** 2", "return 1.0 - (1.0 - t) ** 3", TIMELINE),
+    Mutant("ease: in and out swapped", "tweenrender/core/easing.py",
+           "(1 / 3, 0.0, 2 / 3, 1 / 3): lambda u: u * u,\n    (1 / 3, 2 / 3, 2 / 3, 1.0): lambda u: 1.0 - (1.0 - u) ** 2,",
+           "(1 / 3, 0.0, 2 / 3, 1 / 3): lambda u: 1.0 - (1.0 - u) ** 2,\n    (1 / 3, 2 / 3, 2 / 3, 1.0): lambda u: u * u,",
+           TIMELINE),
+    Mutant("ease: out is cubic", "tweenrender/core/easing.py",
+           "lambda u: 1.0 - (1.0 - u) ** 2", "lambda u: 1.0 - (1.0 - u) ** 3", TIMELINE),
     Mutant("ease: the segment takes the ease of the key that ends it", "tweenrender/core/timeline.py",
-           "segments.append(Segment(before.time, after.time, before.ease,",
-           "segments.append(Segment(before.time, after.time, after.ease,", TIMELINE),
+           "easing=easing_of(before), delay=before.delay", "easing=easing_of(after), delay=before.delay",
+           TIMELINE),
+    Mutant("cubic-bezier: no bisection where Newton stalls", "tweenrender/core/easing.py",
+           "if left.any():  # bisection", "if False:  # bisection", CONTROLS),
+    Mutant("cubic-bezier: y read with the x handles", "tweenrender/core/easing.py",
+           "out = _bezier(s, self.y1, self.y2)", "out = _bezier(s, self.x1, self.y2)", CONTROLS),
+    Mutant("steps: jump-start does not jump at the start", "tweenrender/core/easing.py",
+           'if self.jump in ("jump-start", "jump-both"):', 'if self.jump in ("jump-both",):', CONTROLS),
+    Mutant("spacing: no Fritsch–Carlson limit", "tweenrender/core/spacing.py",
+           "if radius > 9.0:", "if radius > 900.0:", CONTROLS),
+    Mutant("hints: pieces solved with sg stretch of the wrong step", "tweenrender/core/_hint_kernel.py",
+           "energy[r, c, step] = best + stretch[ni, nj, step]", "energy[r, c, step] = best + stretch[ni, nj, 1]",
+           CONTROLS),
+    Mutant("hints: a piece's end costs counted twice", "tweenrender/core/hint_search.py",
+           "path = np.concatenate([piece[:-1] for piece in nodes])", "path = np.concatenate([piece for piece in nodes])",
+           CONTROLS),
+    Mutant("stagger: every element starts together", "tweenrender/scenefile/drawings.py",
+           "out[c][k] = key.hold + i * key.stagger", "out[c][k] = key.hold", CONTROLS),
     Mutant("frame count: the last key's frame dropped", "tweenrender/core/timeline.py",
            "return round(duration * fps) + 1", "return round(duration * fps)",
            TIMELINE + ("tests/cli/test_main.py",)),
     Mutant("local t: measured from time 0", "tweenrender/core/timeline.py",
-           "t = np.clip((times - self.start) / span, 0.0, 1.0)", "t = np.clip(times / span, 0.0, 1.0)", TIMELINE),
+           "begin = self.start + self.delay + rank * self.stagger", "begin = self.delay + rank * self.stagger",
+           TIMELINE),
     Mutant("local t: not clamped outside the segment", "tweenrender/core/timeline.py",
-           "t = np.clip((times - self.start) / span, 0.0, 1.0)", "t = (times - self.start) / span", TIMELINE),
+           "return np.clip((times - begin) / span, 0.0, 1.0)", "return (times - begin) / span", TIMELINE),
     Mutant("timeline: a time on a key picks the segment before", "tweenrender/core/timeline.py",
            'np.searchsorted(starts, times, side="right")', 'np.searchsorted(starts, times, side="left")', TIMELINE),
     # -- encode --------------------------------------------------------------------------------------
@@ -164,11 +192,11 @@ MUTANTS = [
            'tags = YUV420_TAGS if pixel_format == "yuv420p" else []', "tags = []",
            ENCODE + ("tests/pipeline/test_chunks.py",)),
     Mutant("sink: a transparent WebM sent as yuv420p", "tweenrender/encode/sinks.py",
-           'return fmt in ("mp4", "webm") and not alpha and width', 'return fmt in ("mp4", "webm") and width', ENCODE),
-    Mutant("limits: odd sizes allowed for H.264", "tweenrender/encode/limits.py",
-           '_EVEN = ("mp4",)', "_EVEN = ()", ENCODE),
-    Mutant("limits: ffmpeg's picture check ignored", "tweenrender/encode/limits.py",
-           "if 8 * (width + 128) * (height + 128) >= _PICTURE_LIMIT:", "if False:", ENCODE),
+           "return TABLE[fmt].yuv420 and not alpha and width", "return TABLE[fmt].yuv420 and width", ENCODE),
+    Mutant("formats: odd sizes allowed for H.264", "tweenrender/encode/formats.py",
+           "if self.even and (width % 2 or height % 2):", "if False:", ENCODE),
+    Mutant("formats: ffmpeg's picture check ignored", "tweenrender/encode/formats.py",
+           "if self.ffmpeg and 8 * (width + 128) * (height + 128) >= PICTURE_LIMIT:", "if False:", ENCODE),
     Mutant("ffmpeg: no death signal", "tweenrender/encode/lifeline.py",
            "        _set_death_signal()\n        if os.getppid() != parent:",
            "        if os.getppid() != parent:", ("tests/encode/test_lifeline.py", "tests/cli/test_signals.py")),
@@ -204,8 +232,46 @@ MUTANTS = [
            'if match.group(2) == ".old" and not target.exists():', "if False:", ATOMIC),
     Mutant("prepare: an unwritable folder not reported", "tweenrender/encode/atomic.py",
            "if not os.access(parent, os.W_OK):", "if False:", ATOMIC),
-    Mutant("frames folder: any .png counts as a frame", "tweenrender/encode/targets.py",
-           "FRAME_NAME.fullmatch(entry.name)", 'entry.name.endswith(".png")', ATOMIC),
+    Mutant("frame names: any suffix accepted", "tweenrender/encode/targets.py",
+           'FRAME_NAME = re.compile(r"frame_\\d{4,}\\.png")', 'FRAME_NAME = re.compile(r"frame_\\d{4,}\\.png.*")',
+           OWNED),
+    Mutant("manifest: one that is a folder taken for an empty list", "tweenrender/encode/manifest.py",
+           'return f"its {MANIFEST} is not a file"', "return {}", OWNED),
+    Mutant("manifest: another tool's list taken for ours", "tweenrender/encode/manifest.py",
+           "if data.get(\"written_by\") != _STAMP or not isinstance(files, dict):", "if not isinstance(files, dict):",
+           OWNED),
+    Mutant("manifest: a file changed since not noticed", "tweenrender/encode/manifest.py",
+           'if (info.st_size, info.st_mtime_ns) != (entry["bytes"], entry["mtime_ns"]):', "if False:", OWNED),
+    Mutant("manifest: an unlisted entry accepted", "tweenrender/encode/manifest.py",
+           "if entry is None or not ours(name):", "if entry is not None and not ours(name):", OWNED),
+    Mutant("report: a shape name left unescaped in the table", "tweenrender/reports/html_report.py",
+           "<h3>{_esc(entry['name'])}", "<h3>{entry['name']}", ("tests/cli/test_names.py",)),
+    Mutant("svg: nested viewport scaled by max (slice) not min (meet)", "tweenrender/scenefile/svg_document.py",
+           "s = min(width / bw, height / bh)", "s = max(width / bw, height / bh)", DRAWING),
+    Mutant("svg: display none drawn", "tweenrender/scenefile/svg_document.py",
+           'if own.get("display", "").strip() == "none":', 'if own.get("display", "").strip() == "None":', DRAWING),
+    Mutant("contours: size term of pairing zeroed", "tweenrender/core/contours.py",
+           "+ _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))", "+ 0.0 * np.abs(sa[:, None] - sb[None]))",
+           ("tests/core/test_contours.py",)),
+    Mutant("css: a rule after a stray closing brace lost", "tweenrender/scenefile/css.py",
+           "            segment = pending + 1\n            pending = following",
+           "            segment = pending + 1\n            pending = next(braces, None)", DRAWING),
+    Mutant("svg: a pipe not named as one", "tweenrender/scenefile/svg_document.py",
+           '(stat.S_ISFIFO, "a pipe (FIFO)"),', "",
+           ("tests/scenefile/test_hostile_inputs.py",)),
+    Mutant("svg: an infinite transform number accepted", "tweenrender/scenefile/svg_document.py",
+           "        if not math.isfinite(float(number)):", "        if False:", ("tests/scenefile/test_hostile_inputs.py",)),
+    Mutant("scene: key count not limited", "tweenrender/scenefile/load.py",
+           "            if count > LIMITS[what]:", "            if count > 10 * LIMITS[what]:",
+           ("tests/scenefile/test_hostile_inputs.py",)),
+    Mutant("output name: no room left for the temporary", "tweenrender/encode/targets.py",
+           "    allowed = most - _TEMPORARY_EXTRA", "    allowed = most", ("tests/cli/test_names.py",)),
+    Mutant("cluster: any scheme accepted", "tweenrender/pipeline/cluster.py",
+           '    if scheme != "tcp":', '    if scheme == "ucx":', CLUSTER),
+    Mutant("cluster: an out-of-range port accepted", "tweenrender/pipeline/cluster.py",
+           "        if not 1 <= port <= 65535:", "        if not 1 <= port:", CLUSTER),
+    Mutant("cluster: a silent listener taken for a scheduler", "tweenrender/pipeline/cluster.py",
+           "                probe(where)\n", "                pass\n", CLUSTER),
     Mutant("frames folder: not checked again before the swap", "tweenrender/encode/sinks.py",
            "            check_frames_folder(self.target)  # again", "            pass  # again", ATOMIC),
     Mutant("output name: a parent folder accepted", "tweenrender/encode/targets.py",
@@ -214,6 +280,38 @@ MUTANTS = [
            "        discard(old)  # a folder", "        pass  # a folder", ATOMIC),
     Mutant("signals: a hang-up not handled", "tweenrender/cli/main.py",
            '("SIGTERM", "SIGHUP")', '("SIGTERM",)', ("tests/cli/test_signals.py",)),
+    Mutant("keyframes: the tolerance taken as its square", "tweenrender/core/keyframes.py",
+           "limit = tolerance * tolerance", "limit = tolerance", VECTOR),
+    Mutant("keyframes: the full check skipped after the screen", "tweenrender/core/keyframes.py",
+           "        if _within(values, a, int(b), limit):", "        if True:", VECTOR),
+    Mutant("lottie: fill rules swapped", "tweenrender/encode/lottie.py",
+           '_FILL_RULES = {"nonzero": 1, "evenodd": 2}', '_FILL_RULES = {"nonzero": 2, "evenodd": 1}', VECTOR),
+    Mutant("lottie: layers hand over at the key frame (rlottie draws both)", "tweenrender/encode/lottie.py",
+           "_EARLY_IN, _EARLY_OUT = 0.499, 0.501", "_EARLY_IN, _EARLY_OUT = 0.0, 0.0", VECTOR),
+    Mutant("lottie: easing handles' x and y swapped", "tweenrender/encode/lottie.py",
+           'key["o"] = {"x": [x1], "y": [y1]}', 'key["o"] = {"x": [y1], "y": [x1]}', VECTOR),
+    Mutant("svg: keyTimes over F - 1 frames", "tweenrender/encode/animated_svg.py",
+           "times = [f / total for f in frames]", "times = [f / (total - 1) for f in frames]", VECTOR),
+    Mutant("vector: a linear segment's easing dropped", "tweenrender/pipeline/vector_export.py",
+           "ease = _handles(segment.ease) or STRAIGHT", "ease = STRAIGHT", VECTOR),
+    # -- start-up, memory and the preview ------------------------------------------------------------
+    Mutant("assignment: column potentials raised instead of lowered", "tweenrender/core/assignment.py",
+           "v[used] -= delta", "v[used] += delta", ("tests/core/test_assignment.py",)),
+    Mutant("small search: ties go to the diagonal step", "tweenrender/core/_small_dtw.py",
+           "better = diagonal < left", "better = diagonal <= left", ("tests/core/test_small_dtw.py",)),
+    Mutant("small search: the last start met among equals", "tweenrender/core/_small_dtw.py",
+           "start = next(s for s in _start_order(n) if costs[s] == best)",
+           "start = [s for s in _start_order(n) if costs[s] == best][-1]", ("tests/core/test_small_dtw.py",)),
+    Mutant("checkpointed search: a stretch recomputed from the checkpoint before", "tweenrender/core/_lean_dtw.py",
+           "prev[:] = checkpoints[stretch, :]", "prev[:] = checkpoints[max(stretch - 1, 0), :]",
+           ("tests/core/test_lean_dtw.py",)),
+    Mutant("workers: the memory budget ignored", "tweenrender/pipeline/workers.py",
+           "        if tree_mib(fmt, pixels, processes) > memory_budget_mib(pixels):\n            break",
+           "        if False:\n            break", ("tests/pipeline/test_chunks.py",)),
+    Mutant("preview: a bad save replaces the shown take", "tweenrender/pipeline/preview/takes.py",
+           "            elif error is not None:\n                self.error = error",
+           "            elif error is not None:\n                self.error, self.take = error, None",
+           ("tests/pipeline/test_preview.py",)),
 ]
 
 
@@ -240,12 +338,14 @@ def run_tests(tree: Path, tests: tuple[str, ...], timeout: float) -> tuple[str, 
 
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-k", default="", help="only mutants whose name contains this")
+    parser.add_argument("-k", default="", help="only mutants whose name contains one of these words "
+                                               "(separated by spaces or commas)")
     parser.add_argument("--list", action="store_true", help="list the mutants and stop")
     parser.add_argument("--timeout", type=float, default=300.0, help="seconds per test run (default 300)")
     parser.add_argument("--required", type=float, default=90.0, help="percent to kill (default 90)")
     args = parser.parse_args(argv)
-    mutants = [m for m in MUTANTS if args.k.lower() in m.name.lower()]
+    words = [w for w in args.k.lower().replace(",", " ").split()] or [""]
+    mutants = [m for m in MUTANTS if any(w in m.name.lower() for w in words)]
     if not mutants:
         print(f"no mutant's name contains {args.k!r}")
         return 2

@@ -1,4 +1,4 @@
-"""Measure the frame sizes the bundled ffmpeg takes, to check ``tweenrender/encode/limits.py``.
+"""Measure the frame sizes the bundled ffmpeg takes, to check ``tweenrender/encode/formats.py``.
 
     python scripts/probe_encoder_limits.py           # the cheap probes (thin frames), seconds
     python scripts/probe_encoder_limits.py --large   # also ffmpeg's picture check, 1 GiB a frame

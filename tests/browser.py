@@ -10,6 +10,7 @@ element's state, and a screenshot.
 from __future__ import annotations
 
 import base64
+import contextlib
 import json
 import os
 import shutil
@@ -18,7 +19,7 @@ import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
          "--disable-component-update", "--disable-sync", "--no-first-run", "--mute-audio",
@@ -159,3 +160,70 @@ def open_page(url: str, settle: float = 3.0, size: tuple[int, int] = (1280, 2400
 
 def page_url(path: Path) -> str:
     return path.resolve().as_uri()
+
+
+class LivePage:
+    """A page kept open in headless chromium, for tests that change things while it runs."""
+
+    def __init__(self, browser: _Browser, session: str) -> None:
+        self._browser = browser
+        self._session = session
+
+    def evaluate(self, expression: str) -> Any:
+        """The value of a JavaScript expression on the page (JSON-like values)."""
+        reply = self._browser.send("Runtime.evaluate", {"expression": expression, "returnByValue": True},
+                                   session=self._session)
+        if "exceptionDetails" in reply:
+            raise RuntimeError(f"{expression}: {reply['exceptionDetails']}")
+        return reply["result"].get("value")
+
+    def wait_for(self, expression: str, timeout: float = 20.0, every: float = 0.05) -> Any:
+        """Poll ``expression`` until it is truthy (its value), or raise TimeoutError after ``timeout`` seconds.
+        An exception counts as not yet (the page may still be loading), and is reported at the timeout."""
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                value = self.evaluate(expression)
+            except RuntimeError as error:
+                value = error
+            if value and not isinstance(value, RuntimeError):
+                return value
+            if time.monotonic() > deadline:
+                raise TimeoutError(f"{expression} still {value!r} after {timeout} s")
+            time.sleep(every)
+
+    def exceptions(self) -> list[str]:
+        """Uncaught exceptions and console errors the page has had so far."""
+        found = []
+        for event in self._browser.events:
+            method, params = event.get("method"), event.get("params", {})
+            if method == "Runtime.exceptionThrown":
+                found.append(json.dumps(params.get("exceptionDetails", {}))[:300])
+            elif method == "Runtime.consoleAPICalled" and params.get("type") in ("error", "assert"):
+                found.append(json.dumps(params.get("args", []))[:300])
+        return found
+
+    def screenshot(self) -> bytes:
+        shot = self._browser.send("Page.captureScreenshot", {"format": "png"}, session=self._session)
+        return base64.b64decode(shot["data"])
+
+
+@contextlib.contextmanager
+def live_page(url: str, size: tuple[int, int] = (1400, 900)) -> Iterator[LivePage]:
+    """Open ``url`` in a fresh headless chromium and keep it open for the ``with`` block."""
+    executable = chromium()
+    if executable is None:
+        raise FileNotFoundError("chromium")
+    with tempfile.TemporaryDirectory(prefix="tweenrender-chromium-") as profile:
+        browser = _Browser(executable, profile)
+        try:
+            target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+            browser.send("Runtime.enable", session=session)
+            browser.send("Emulation.setDeviceMetricsOverride",
+                         {"width": size[0], "height": size[1], "deviceScaleFactor": 1, "mobile": False},
+                         session=session)
+            browser.send("Page.navigate", {"url": url}, session=session)
+            yield LivePage(browser, session)
+        finally:
+            browser.close()

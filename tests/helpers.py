@@ -235,3 +235,19 @@ def ring_scene(shapes: int, vertices: int, size: tuple[int, int] = (480, 270), s
             points = np.stack([cx + radius * np.cos(angle), cy + radius * np.sin(angle)], 1).round(4)
             lines += ["[[shape.key]]", f"time = {time}", f"points = {points.tolist()}", ""]
     return "\n".join(lines)
+
+
+MANIFEST = ".tweenrender-manifest.json"
+
+
+def earlier_frames(folder: Path, data: bytes = b"old frame") -> None:
+    """A frame set as tweenrender leaves one: ``frame_0000.png`` holding ``data`` and the manifest listing it
+    (written here by hand, as the documented format says)."""
+    import json
+
+    folder.mkdir()
+    frame = folder / "frame_0000.png"
+    frame.write_bytes(data)
+    info = frame.stat()
+    listing = {"frame_0000.png": {"bytes": info.st_size, "mtime_ns": info.st_mtime_ns}}
+    (folder / MANIFEST).write_text(json.dumps({"written_by": "tweenrender", "files": listing}))

@@ -20,15 +20,20 @@ from importlib import import_module
 from typing import Any
 
 __all__ = [
-    "load_scene", "frame", "frames", "outlines", "write",
-    "parse_scene", "interpolate", "Scene", "Shape", "Key", "Matching",
+    "load_scene", "frame", "frames", "outlines", "contours", "write",
+    "stats", "correspondence", "qcurves", "describe", "sheet", "report", "reel",
+    "RenderOptions",
+    "parse_scene", "interpolate", "Scene", "Shape", "Key", "Matching", "DrawnContour",
     "TweenrenderError", "SceneError", "OptionError", "GeometryError", "RenderError", "EncodeError",
 ]
 __version__ = "0.2.0"
 
 _HOME = {
     "load_scene": "pipeline.library", "frame": "pipeline.library", "frames": "pipeline.library",
-    "outlines": "pipeline.library", "write": "pipeline.library",
+    "outlines": "pipeline.library", "contours": "pipeline.library", "write": "pipeline.library",
+    "stats": "reports.analyses", "correspondence": "reports.analyses", "qcurves": "reports.analyses",
+    "describe": "reports.analyses", "sheet": "reports.documents", "report": "reports.documents",
+    "reel": "reports.documents", "RenderOptions": "pipeline.options", "DrawnContour": "model",
     "parse_scene": "scenefile", "interpolate": "core.methods",
     "Scene": "model", "Shape": "model", "Key": "model", "Matching": "model",
     "TweenrenderError": "errors", "SceneError": "errors", "OptionError": "errors", "GeometryError": "errors",

@@ -15,9 +15,10 @@ from __future__ import annotations
 
 import unicodedata
 from pathlib import Path
+from typing import Iterable
 
 __all__ = ["TweenrenderError", "SceneError", "OptionError", "UsageError", "GeometryError", "RenderError",
-           "EncodeError", "printable"]
+           "EncodeError", "printable", "did_you_mean"]
 
 # control characters (newlines, carriage returns, ESC, C1), lone surrogates, line and paragraph separators
 _UNPRINTABLE = frozenset(("Cc", "Cs", "Zl", "Zp"))
@@ -61,10 +62,38 @@ class SceneError(TweenrenderError):
         return type(self), (self.path, self.where, self.message)
 
 
+def did_you_mean(word: str, choices: Iterable[str]) -> str:
+    """`` (did you mean 'x'?)`` for the choice closest to a misspelt ``word``, or ``""`` when none is close."""
+    import difflib
+
+    close = difflib.get_close_matches(str(word), list(choices), n=1, cutoff=0.6)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
 class OptionError(TweenrenderError):
-    """An option a library call cannot honour (an unknown format, an odd size for H.264, no frames)."""
+    """An option a library call cannot honour (an unknown format, an odd size for H.264, no frames).
+
+    ``option`` is the option's long name (``"fps"``) when one option is at fault: the library's
+    message names it as the keyword argument (``fps=: …``), the command line as the flag
+    (``--fps: …``); see :meth:`for_flag`.
+    """
 
     exit_code = 2
+
+    def __init__(self, message: str, option: str | None = None) -> None:
+        self.message = message
+        self.option = option
+        super().__init__(str(self))
+
+    def __str__(self) -> str:
+        return f"{self.option}=: {self.message}" if self.option else self.message
+
+    def for_flag(self) -> str:
+        """The message as the command line says it: the option named as its flag."""
+        return f"--{self.option.replace('_', '-')}: {self.message}" if self.option else self.message
+
+    def __reduce__(self) -> tuple[type[OptionError], tuple[str, str | None]]:
+        return type(self), (self.message, self.option)
 
 
 class UsageError(OptionError):

@@ -9,15 +9,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
-
 import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "Points", "Color", "METHODS", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
-    "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Key", "Joint", "Shape", "Matching",
-    "Scene", "frozen_points",
+    "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
+    "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint", "Shape",
+    "Matching", "Scene", "DrawnContour", "Gradient", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
@@ -26,13 +24,11 @@ Points = NDArray[np.float64]
 Color = tuple[int, int, int, int]
 """Straight (unpremultiplied) RGBA, each 0..255."""
 
-Method = Literal["linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length", "auto"]
-METHODS: tuple[str, ...] = ("linear", "nonlinear", "rigid", "jointed", "arap", "intrinsic", "intrinsic-length",
-                            "injective", "auto")
 BALANCES: tuple[str, ...] = ("copies", "spread")
 DEFAULT_BALANCE = "copies"
 """The balance rule of scenes that name none (benchmarks/balance_rules.py measured the two)."""
 EASES: tuple[str, ...] = ("linear", "in", "out", "in-out")
+"""The older easing names; ``core.easing`` reads these and CSS's curves, ``steps`` and ``hold``."""
 COSTS: tuple[str, ...] = ("distance", "sg")
 ALIGNS: tuple[str, ...] = ("none", "centroid")
 EQUAL_COUNTS: tuple[str, ...] = ("drawn", "match")
@@ -64,17 +60,37 @@ class Contour:
 
 
 @dataclass(frozen=True, slots=True)
+class Gradient:
+    """A linear or radial gradient fill, as SVG defines it, in world units.
+
+    ``geometry`` is ``(x1, y1, x2, y2)`` (linear) or ``(cx, cy, r, fx, fy)`` (radial) in the gradient's
+    own space; ``matrix`` ``(a, b, c, d, e, f)`` maps that space to the world (``x' = a·x + c·y + e``,
+    ``y' = b·x + d·y + f``: the element's transforms, its bounding box for ``objectBoundingBox``
+    units, and ``gradientTransform``). ``stops`` are ``(offset in [0, 1], straight RGBA)`` in order;
+    ``spread`` is ``pad``, ``reflect`` or ``repeat``.
+    """
+
+    kind: str
+    geometry: tuple[float, ...]
+    matrix: tuple[float, float, float, float, float, float]
+    stops: tuple[tuple[float, Color], ...]
+    spread: str = "pad"
+
+
+@dataclass(frozen=True, slots=True)
 class Paint:
     """How a key is drawn: fill and stroke colours (``None``: not drawn), stroke width, opacity.
 
     ``stroke_width`` is in pixels, or in world units for shapes whose ``stroke_scales``
     (drawings: widths scale with the view, as in the SVG). ``opacity`` multiplies both.
+    ``gradient``, when set, fills instead of ``fill`` (which then holds its stops' mean colour).
     """
 
     fill: Color | None = DEFAULT_FILL
     stroke: Color | None = None
     stroke_width: float = 2.0
     opacity: float = 1.0
+    gradient: Gradient | None = None
 
     @property
     def visible(self) -> bool:
@@ -85,12 +101,29 @@ class Paint:
 
 
 @dataclass(frozen=True, slots=True)
+class Hint:
+    """A shape hint: ``letter`` (a–z) sits on vertex ``vertex`` of contour ``contour`` of its key
+    (snapped onto the outline when the scene was read); the same letter of the next key is its partner."""
+
+    letter: str
+    contour: int
+    vertex: int
+
+
+@dataclass(frozen=True, slots=True)
 class Key:
     """A keyframe: its time in seconds, its contours, the easing of the segment it starts, its paint.
 
     ``hidden`` marks where an element appearing in the next key grows from (or one
     leaving after the previous key shrinks to): it is interpolated towards, never
-    drawn on its own.
+    drawn on its own. ``fill_rule``, ``cap``, ``join`` and ``miter_limit`` ``None`` are the shape's
+    (a drawing's keys carry their own). ``layer`` is a drawing's key's place in that drawing's
+    paint order (0 first; ``None`` for shapes of a scene file, painted in file order); ``clips``
+    its SVG clip paths in world units.
+    ``ease`` is the easing as written; ``easing`` the parsed one (a ``core.easing`` object;
+    ``None``: parsed from ``ease``), a spacing chart included. ``hints`` are this key's shape
+    hints; ``delay`` the seconds after ``time`` at which the segment starting here starts to
+    move (a stagger or a hold; it still ends on time).
     """
 
     time: float
@@ -98,6 +131,16 @@ class Key:
     ease: str = "linear"
     paint: Paint = field(default_factory=Paint)
     hidden: bool = False
+    fill_rule: str | None = None
+    cap: str | None = None
+    join: str | None = None
+    miter_limit: float | None = None
+    layer: int | None = None
+    # clip regions (closed contours, nonzero), every one intersected with what the key draws
+    clips: tuple[tuple[Contour, ...], ...] = ()
+    easing: object | None = None
+    hints: tuple[Hint, ...] = ()
+    delay: float = 0.0
 
     @property
     def points(self) -> Points:
@@ -136,6 +179,7 @@ class Shape:
     # keys of equal vertex counts: None follows the scene's [correspondence]; drawings say "match",
     # since the order an SVG editor wrote a contour in is no animator's correspondence
     equal_counts: str | None = None
+    stagger: float = 0.0  # seconds between the starts of the shape's contours in each segment
 
     @property
     def paint(self) -> Paint:
@@ -183,11 +227,13 @@ class Scene:
     path: Path | None = None
     unmatched: str = "grow"
     balance: str = DEFAULT_BALANCE  # how balancing places copies of a vertex (maths §5.6)
+    end_hold: float = 0.0  # seconds the last keys stay after the last key's time (drawings' --hold)
+    sources: tuple[Path, ...] = ()  # every file the scene was read from: the scene file, SVG keys, drawings
 
     @property
     def duration(self) -> float:
-        """Seconds from time 0 to the last key of any shape."""
-        return max(shape.keys[-1].time for shape in self.shapes)
+        """Seconds from time 0 to the last key of any shape, and its hold."""
+        return max(shape.keys[-1].time for shape in self.shapes) + self.end_hold
 
     def method_of(self, shape: Shape) -> str:
         return shape.method or self.method
@@ -197,3 +243,25 @@ class Scene:
 
     def balance_of(self, shape: Shape) -> str:
         return shape.balance or self.balance
+
+
+@dataclass(frozen=True, slots=True)
+class DrawnContour:
+    """One contour as drawn at a time: ``points (N, 2)`` in scene units, y up, as ``outlines`` gives
+    them (``reversed``: drawn in the other direction, so that it winds as in its key); ``closed`` (False: an open stroke, never filled); ``hole`` (inside an odd
+    number of its element's closed contours); ``element`` (the SVG id, else the loader's name, e.g.
+    ``path1``; a scene file's shape name); its element's ``fill_rule``; ``fill`` and ``stroke`` as
+    straight RGBA floats in [0, 1] (``None``: not drawn); ``stroke_width`` in scene units; ``opacity``.
+    """
+
+    points: Points
+    closed: bool
+    hole: bool
+    element: str
+    fill_rule: str
+    fill: tuple[float, float, float, float] | None
+    stroke: tuple[float, float, float, float] | None
+    stroke_width: float
+    opacity: float
+    reversed: bool = False
+    gradient: Gradient | None = None  # a gradient fill (``fill`` then holds its stops' mean colour)

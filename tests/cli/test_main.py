@@ -74,7 +74,7 @@ def test_render_png_frames(cli, tmp_path: Path) -> None:
     out = tmp_path / "frames"
     code, printed, err = cli("render", scene, "--format", "png", "-o", out, "-q")
     assert code == 0, err
-    names = sorted(p.name for p in out.iterdir())
+    names = sorted(p.name for p in out.glob("*.png"))
     assert names == [f"frame_{i:04d}.png" for i in range(49)]  # 2 s at 24 fps, both keys included
     assert printed.strip() == str(out)
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]  # no temporaries left
@@ -88,7 +88,7 @@ def test_render_default_output_names(tmp_path: Path) -> None:
     assert (tmp_path / "output" / "sq-compare.mp4").stat().st_size > 0
     result = run_module("render", scene, "--format", "png", "--frames", "5", "-q", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
-    assert sorted(p.name for p in (tmp_path / "output" / "sq").iterdir()) == ["frame_0000.png"]
+    assert sorted(p.name for p in (tmp_path / "output" / "sq").glob("*.png")) == ["frame_0000.png"]
 
 
 BAD_USAGE = [
@@ -134,9 +134,12 @@ def test_encoder_failure_exits_1_and_keeps_the_old_file(cli, tmp_path: Path, mon
     scene = write_scene(tmp_path, SQUARE)
     target = tmp_path / "movie.mp4"
     target.write_bytes(b"precious")
-    from tweenrender.encode import sinks
+    from dataclasses import replace
 
-    monkeypatch.setitem(sinks._CODECS, "mp4", ["-c:v", "no-such-codec", "-f", "mp4"])
+    from tweenrender.encode import formats
+
+    broken = replace(formats.TABLE["mp4"], ffmpeg=("-c:v", "no-such-codec", "-f", "mp4"))
+    monkeypatch.setitem(formats.TABLE, "mp4", broken)
     code, _, err = cli("render", scene, "-o", target, "--frames", "0:2", "-q")
     assert code == 1
     assert "ffmpeg" in err and "no-such-codec" in err

@@ -116,7 +116,7 @@ BAD_FLAGS = [
     (("frobnicate",), "argument COMMAND: invalid choice: 'frobnicate'"),
     ((), "the following arguments are required: COMMAND"),
     (("stats", "{scene}", "--json", "--t"), "argument --t: expected one argument"),
-    (("correspond", "{scene}", "--cost", "cheap"), "argument --cost: invalid choice: 'cheap'"),
+    (("correspond", "{scene}", "--cost", "cheap"), "--cost: expected one of distance, sg, found 'cheap'"),
 ]
 
 
@@ -126,7 +126,8 @@ def test_a_bad_flag_is_one_line(tmp_path: Path, args: tuple[str, ...], words: st
     done = _run(*[a.format(scene=scene) for a in args], cwd=tmp_path)
     assert done.returncode == 2 and done.stdout == ""
     assert done.stderr.startswith(f"tweenrender: error: {words}") and done.stderr.count("\n") == 1, done.stderr
-    assert "usage:" not in done.stderr and "(see tweenrender" in done.stderr
+    # argparse's own refusals point to --help; a value the library refuses names the flag instead
+    assert "usage:" not in done.stderr and ("(see tweenrender" in done.stderr or words.startswith("--"))
 
 
 def test_help_and_version_still_print_and_exit_0(tmp_path: Path) -> None:

@@ -23,7 +23,8 @@ from hypothesis import strategies as st
 
 from tweenrender.core.methods import interpolate
 
-from tests.helpers import LONG, SQUARE, run_module, start_render, unprivileged, write_scene
+from tests.helpers import (LONG, MANIFEST, SQUARE, earlier_frames, run_module, start_render, unprivileged,
+                           write_scene)
 from tests.scenefile.test_load_more import MORE_BAD
 
 METHODS = ("linear", "nonlinear", "rigid", "auto", "jointed")
@@ -71,7 +72,7 @@ def test_verbose_shows_the_traceback_and_keeps_the_exit_code(tmp_path: Path) -> 
 def test_an_unexpected_failure_is_one_line_and_exit_1(cli, tmp_path: Path, monkeypatch) -> None:
     import tweenrender.scenefile
 
-    def broken(path: object, step: float = 1.0) -> None:
+    def broken(path: object, step: float = 1.0, *timing: object) -> None:
         raise ZeroDivisionError("a bug\nover two lines")
 
     monkeypatch.setattr(tweenrender.scenefile, "load_scene", broken)
@@ -88,7 +89,7 @@ def test_too_many_frames_names_the_flag(cli, tmp_path: Path) -> None:
     scene = write_scene(tmp_path, SQUARE.replace("time = 2", "time = 1e7"))
     code, _, err = cli("render", scene, "--fps", "240", "-q", "-o", tmp_path / "x.mp4")
     # 10 million seconds at 240 frames per second, both ends included
-    assert code == 2 and f"{240 * 10**7 + 1} frames is more than --max-frames 100000" in err
+    assert code == 2 and f"--max-frames: {240 * 10**7 + 1} frames is more than 100000" in err
     assert _listing(tmp_path) == ["scene.toml"]
 
 
@@ -139,8 +140,7 @@ def test_a_file_size_limit_is_reported_and_the_old_output_kept(tmp_path: Path, o
     disk.mkdir()
     target = disk / output
     if output == "frames":
-        target.mkdir()
-        (target / "frame_0000.png").write_bytes(b"old frame")
+        earlier_frames(target)
     else:
         target.write_bytes(b"old movie")
 
@@ -155,7 +155,7 @@ def test_a_file_size_limit_is_reported_and_the_old_output_kept(tmp_path: Path, o
     words = "File too large" if output == "frames" else "stopped by SIGXFSZ (File size limit exceeded)"
     assert err.startswith(f"tweenrender: error: {target}: ") and words in err and "Traceback" not in err
     if output == "frames":
-        assert _listing(target) == ["frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
+        assert _listing(target) == [MANIFEST, "frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
     else:
         assert target.read_bytes() == b"old movie"
     assert _listing(disk) == [output]  # the temporary is gone
@@ -213,8 +213,7 @@ def test_ctrl_c_midway_exits_130_and_keeps_the_old_output(tmp_path: Path, output
     scene = write_scene(tmp_path, LONG)
     target = tmp_path / output
     if output == "frames":
-        target.mkdir()
-        (target / "frame_0000.png").write_bytes(b"old frame")
+        earlier_frames(target)
     else:
         target.write_bytes(b"old movie")
     process = _start_and_wait_for_temporary(tmp_path, scene, target)
@@ -223,7 +222,7 @@ def test_ctrl_c_midway_exits_130_and_keeps_the_old_output(tmp_path: Path, output
     assert process.returncode == 130
     assert out == "" and err == "tweenrender: interrupted; no output was changed\n"
     if output == "frames":
-        assert _listing(target) == ["frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
+        assert _listing(target) == [MANIFEST, "frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
     else:
         assert target.read_bytes() == b"old movie"
     assert _listing(tmp_path) == sorted(["scene.toml", output])
@@ -260,7 +259,7 @@ def _scene_text(keys: list[list[tuple[float, float]]], method: str, view: str = 
 def _frames(folder: Path) -> list[np.ndarray]:
     import imageio.v3 as iio
 
-    return [iio.imread(path) for path in sorted(folder.iterdir())]
+    return [iio.imread(path) for path in sorted(folder.glob("frame_*.png"))]
 
 
 @pytest.mark.parametrize("method", METHODS)

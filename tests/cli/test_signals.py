@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import LONG, LONG_HD, start_render, write_scene
+from tests.helpers import LONG, LONG_HD, MANIFEST, earlier_frames, start_render, write_scene
 
 pytestmark = pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="lists processes through /proc")
 
@@ -156,8 +156,7 @@ def test_a_hang_up_terminate_or_interrupt_exits_cleanly(tmp_path: Path, output: 
     scene = write_scene(tmp_path, LONG)
     target = tmp_path / output
     if output == "frames":
-        target.mkdir()
-        (target / "frame_0000.png").write_bytes(b"an earlier frame")
+        earlier_frames(target, b"an earlier frame")
     else:
         target.write_bytes(b"an earlier movie")
     process = _start(tmp_path, scene, target, *flags, children=children)
@@ -170,6 +169,6 @@ def test_a_hang_up_terminate_or_interrupt_exits_cleanly(tmp_path: Path, output: 
     assert not _gone_within(kids, 2.0)
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(["scene.toml", output])  # no temporary left
     if output == "frames":
-        assert [p.name for p in target.iterdir()] == ["frame_0000.png"]
+        assert sorted(p.name for p in target.iterdir()) == [MANIFEST, "frame_0000.png"]
     else:
         assert target.read_bytes() == b"an earlier movie"

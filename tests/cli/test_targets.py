@@ -37,7 +37,7 @@ def test_a_folder_with_anything_but_frames_is_refused(cli, tmp_path: Path, extra
     code, out, err = cli("render", scene, "-o", docs, "--format", "png", "-q")
     assert code == 2 and out == ""
     assert err.startswith(f"tweenrender: error: {docs}: ") and err.count("\n") == 1, err
-    assert "frame_NNNN.png" in err
+    assert ".tweenrender-manifest.json" in err
     assert _tree(tmp_path) == before
 
 
@@ -80,18 +80,19 @@ def test_no_name_is_a_usage_error(tmp_path: Path, name: str, words: str, fmt: st
 def test_an_earlier_frame_set_or_an_empty_folder_is_replaced(cli, tmp_path: Path) -> None:
     scene = write_scene(tmp_path, SQUARE)
     frames = tmp_path / "frames"
-    frames.mkdir()
-    for index in range(60):  # more frames than the new render has: none of them may survive
-        (frames / f"frame_{index:04d}.png").write_bytes(b"an earlier frame")
-    code, out, err = cli("render", scene, "-o", frames, "-q")
+    code, out, err = cli("render", scene, "-o", frames, "--size", "64x48", "-q")
     assert code == 0, err
-    assert sorted(p.name for p in frames.iterdir()) == [f"frame_{i:04d}.png" for i in range(49)]
+    code, out, err = cli("render", scene, "-o", frames, "--frames", "0:3", "-q")  # fewer: none of the 49 survive
+    assert code == 0, err
+    assert sorted(p.name for p in frames.iterdir()) == [".tweenrender-manifest.json"] + [
+        f"frame_{i:04d}.png" for i in range(3)]
     assert read_png(frames / "frame_0000.png").shape == (240, 320, 4)
     empty = tmp_path / "empty"
     empty.mkdir()
     code, _, err = cli("render", scene, "-o", empty, "--frames", "0:2", "-q")
     assert code == 0, err
-    assert sorted(p.name for p in empty.iterdir()) == ["frame_0000.png", "frame_0001.png"]
+    assert sorted(p.name for p in empty.iterdir()) == [".tweenrender-manifest.json", "frame_0000.png",
+                                                        "frame_0001.png"]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["empty", "frames", "scene.toml"]
 
 
@@ -106,15 +107,16 @@ def test_a_file_where_the_frames_folder_would_go_is_refused(cli, tmp_path: Path)
 def test_a_symlinked_frames_target_leaves_nothing_behind(cli, tmp_path: Path) -> None:
     scene = write_scene(tmp_path, SQUARE)
     real = tmp_path / "real"
-    real.mkdir()
-    (real / "frame_0000.png").write_bytes(b"an earlier frame")
+    assert cli("render", scene, "-o", real, "--frames", "0:1", "-q")[0] == 0  # an earlier frame set
+    earlier = _tree(real)
     (tmp_path / "frames").symlink_to(real, target_is_directory=True)
     code, _, err = cli("render", scene, "-o", tmp_path / "frames", "--frames", "0:3", "-q")
     assert code == 0, err
     # the link is replaced, like a linked video would be; what it pointed to is left alone
     assert not (tmp_path / "frames").is_symlink()
-    assert sorted(p.name for p in (tmp_path / "frames").iterdir()) == [f"frame_{i:04d}.png" for i in range(3)]
-    assert _tree(real) == {"frame_0000.png": b"an earlier frame"}
+    assert sorted(p.name for p in (tmp_path / "frames").iterdir()) == [".tweenrender-manifest.json"] + [
+        f"frame_{i:04d}.png" for i in range(3)]
+    assert _tree(real) == earlier
     assert sorted(p.name for p in tmp_path.iterdir()) == ["frames", "real", "scene.toml"]
 
 
@@ -148,7 +150,7 @@ def test_a_folder_filled_while_rendering_is_not_replaced(tmp_path: Path, monkeyp
         return real_close(self)
 
     monkeypatch.setattr(sinks.PngSequence, "close", close_after_a_save)
-    with pytest.raises(OptionError, match="frame_NNNN.png"):
+    with pytest.raises(OptionError, match="notes.txt"):
         tr.write(scene, frames, frames="0:2", workers=1)
     assert _tree(tmp_path / "frames") == {"notes.txt": b"saved here during the render"}
     assert sorted(p.name for p in tmp_path.iterdir()) == ["frames", "scene.toml"]
@@ -161,8 +163,8 @@ def test_the_roll_back_puts_the_old_frames_back(tmp_path: Path, monkeypatch) -> 
 
     scene = tr.load_scene(write_scene(tmp_path, SQUARE))
     frames = tmp_path / "frames"
-    frames.mkdir()
-    (frames / "frame_0000.png").write_bytes(b"an earlier frame")
+    tr.write(scene, frames, frames="0:1", workers=1)  # an earlier frame set
+    earlier = _tree(frames)
     real_replace = os.replace
     calls: list[tuple[str, str]] = []
 
@@ -176,5 +178,5 @@ def test_the_roll_back_puts_the_old_frames_back(tmp_path: Path, monkeypatch) -> 
     with pytest.raises(EncodeError, match="No space left on device"):
         tr.write(scene, frames, frames="0:2", workers=1)
     assert len(calls) == 3 and calls[2][1] == "frames"  # aside, (failed) in, back
-    assert _tree(tmp_path / "frames") == {"frame_0000.png": b"an earlier frame"}
+    assert _tree(tmp_path / "frames") == earlier
     assert sorted(p.name for p in tmp_path.iterdir()) == ["frames", "scene.toml"]

@@ -111,3 +111,12 @@ def test_a_missing_fill_fades_in_its_own_colour() -> None:
     paints = blend_paints(Paint(None, (0, 0, 0, 255), 4.0), Paint(blue, None, 1.0, 0.5), [0.0, 0.5, 1.0])
     assert paints[0] == Paint(None, (0, 0, 0, 255), 4.0) and paints[2] == Paint(blue, None, 1.0, 0.5)
     assert paints[1].stroke == (0, 0, 0, 128) and paints[1].stroke_width == 4.0 and paints[1].opacity == 0.75
+
+
+def test_a_contour_keeps_its_partner_of_its_own_size_when_the_two_swap_places() -> None:
+    """A small and a big square trade places: by position alone each would pair with the other's
+    shape (centres 1.5 apart against 7.5, relative to each key's centre); the size term of the
+    documented cost (0.7 · |ln 4| ≈ 0.97 a pair, against 6 / 9.4 ≈ 0.64 of position) keeps small with small."""
+    a = [square(-3.5, -0.5, 1), square(1, -2, 4)]  # small at (-3, 0), big at (3, 0)
+    b = [square(-5, -2, 4), square(2.5, -0.5, 1)]  # big at (-3, 0), small at (3, 0)
+    assert pair_contours(a, [True, True], b, [True, True]) == [(0, 1), (1, 0)]

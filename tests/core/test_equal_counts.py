@@ -65,4 +65,4 @@ def test_render_flag(cli, tmp_path: Path) -> None:
     code, _, err = cli("render", SCENES / "braces.toml", "--equal-counts", "match", "--frames", "24",
                        "--format", "png", "-o", target, "-q", "--size", "160x90")
     assert code == 0, err
-    assert [p.name for p in target.iterdir()] == ["frame_0000.png"]
+    assert [p.name for p in target.glob("frame_*.png")] == ["frame_0000.png"]

@@ -108,7 +108,7 @@ def test_without_joints_jointed_is_nonlinear():
     k0 = octagon()
     k1 = turn(k0, 1.1) + [4.0, 1.0]
     t = np.linspace(0, 1, 9)
-    np.testing.assert_array_equal(joints.jointed(k0, k1, t, []), paths.nonlinear(k0, k1, t))
+    np.testing.assert_array_equal(joints.jointed_paths(k0, k1, t, []), paths.nonlinear(k0, k1, t))
 
 
 def test_keys_are_hit_exactly_even_at_vertices_of_three_bodies():
@@ -120,7 +120,7 @@ def test_keys_are_hit_exactly_even_at_vertices_of_three_bodies():
     k0[0], k0[4], k1[0], k1[4] = [3.1, 0.1], [-3.1, 0.1], [0.1, 0.7], [0.7, 0.1]
     chords = [(0, 2), (0, 4), (4, 6)]
     assert [len(b) for b in joints.bodies(8, chords)] == [3, 4, 4, 3]
-    got = joints.jointed(k0, k1, [0.0, 1.0], chords)
+    got = joints.jointed_paths(k0, k1, [0.0, 1.0], chords)
     assert np.array_equal(got[0], k0)
     assert np.array_equal(got[1], k1)
 
@@ -131,7 +131,7 @@ def test_joint_vertex_is_the_mean_of_its_bodies_paths():
     k1[[5, 6, 7]] = turn(octagon()[[5, 6, 7]] - k0[4], -0.8) + k0[4]
     chords = [(0, 4), (4, 6)]
     t = np.linspace(0, 1, 11)
-    got = joints.jointed(k0, k1, t, chords, rule="mean")
+    got = joints.jointed_paths(k0, k1, t, chords, rule="mean")
     assert np.isfinite(got).all()
     parts = {0: [0, 1, 2, 3, 4], 1: [0, 4, 6, 7], 2: [4, 5, 6]}  # worked out by hand
     own = {b: paths.nonlinear(k0[v], k1[v], t) for b, v in parts.items()}
@@ -144,16 +144,16 @@ def test_body_paths_one_per_body_or_one_for_all():
     k0 = octagon()
     k1 = turn(k0, 0.5)
     t = np.linspace(0, 1, 5)
-    linear_all = joints.jointed(k0, k1, t, [(0, 4)], body_paths=paths.linear)
+    linear_all = joints.jointed_paths(k0, k1, t, [(0, 4)], body_paths=paths.linear)
     np.testing.assert_allclose(linear_all, paths.linear(k0, k1, t), atol=1e-12)
-    mixed = joints.jointed(k0, k1, t, [(0, 4)], body_paths=[paths.linear, paths.nonlinear], rule="mean")
+    mixed = joints.jointed_paths(k0, k1, t, [(0, 4)], body_paths=[paths.linear, paths.nonlinear], rule="mean")
     np.testing.assert_allclose(mixed[:, 1:4], paths.linear(k0, k1, t)[:, 1:4], atol=1e-12)
     second = [0, 4, 5, 6, 7]
     np.testing.assert_allclose(
         mixed[:, 5:], paths.nonlinear(k0[second], k1[second], t)[:, 2:], atol=1e-12
     )
     with pytest.raises(ValueError, match="2 bodies need 2 path functions, found 1"):
-        joints.jointed(k0, k1, t, [(0, 4)], body_paths=[paths.linear])
+        joints.jointed_paths(k0, k1, t, [(0, 4)], body_paths=[paths.linear])
 
 
 def _worst_edge_error(frames: np.ndarray, k0: np.ndarray, k1: np.ndarray, t: np.ndarray) -> float:
@@ -178,7 +178,7 @@ def test_a_swinging_limb_keeps_its_length_best_when_jointed(deg):
     def error(frames: np.ndarray) -> float:
         return _worst_edge_error(frames[:, limb], k0[limb], k1[limb], t)
 
-    hinged = error(joints.jointed(k0, k1, t, [(2, 5)]))
+    hinged = error(joints.jointed_paths(k0, k1, t, [(2, 5)]))
     whole = error(paths.nonlinear(k0, k1, t))
     straight = error(paths.linear(k0, k1, t))
     assert hinged < whole
@@ -204,7 +204,7 @@ _REPEATS = np.array([[0, 0], [1, 0], [1, 0], [1, 1], [1, 1], [0, 1]], dtype=floa
 )
 def test_degenerate_input_gives_finite_paths(k0, k1):
     t = np.linspace(0, 1, 21)
-    got = joints.jointed(k0, k1, t, [(0, 3), (3, 5)])
+    got = joints.jointed_paths(k0, k1, t, [(0, 3), (3, 5)])
     assert np.isfinite(got).all()
     assert np.array_equal(got[0], k0) and np.array_equal(got[-1], k1)
 
@@ -266,7 +266,7 @@ def test_a_rigid_limb_keeps_its_shape_as_a_spoke_of_the_bezier(deg):
     k1 = k0.copy()
     k1[limb] = k0[2] + turn(k0[limb] - k0[2], np.radians(deg))
     t = np.linspace(0, 1, 101)
-    got = joints.jointed(k0, k1, t, [(2, 5)])
+    got = joints.jointed_paths(k0, k1, t, [(2, 5)])
 
     def lengths(p: np.ndarray) -> np.ndarray:
         return np.linalg.norm(np.roll(p, -1, axis=-2) - p, axis=-1)
@@ -275,7 +275,7 @@ def test_a_rigid_limb_keeps_its_shape_as_a_spoke_of_the_bezier(deg):
     np.testing.assert_allclose(ratio, np.repeat(_spoke_scale(np.radians(deg), t)[:, None], 4, 1),
                                atol=1e-12)
     # The old rule (every body about its own center, joints on the mean) bends it more.
-    old = joints.jointed(k0, k1, t, [(2, 5)], rule="mean")
+    old = joints.jointed_paths(k0, k1, t, [(2, 5)], rule="mean")
     assert np.abs(lengths(old[:, limb]) / lengths(k0[limb]) - 1).max() > 2 * np.abs(ratio - 1).max()
 
 
@@ -289,7 +289,7 @@ def test_a_chain_of_three_bodies_bends_less_than_under_any_other_rule():
     k1[2:6] = k1[2] + turn(k1[2:6] - k1[2], -1.1)
     k1 = turn(k1, 0.3) + [2.0, 1.0]
     t = np.linspace(0, 1, 101)
-    got = joints.jointed(k0, k1, t, chords)
+    got = joints.jointed_paths(k0, k1, t, chords)
     assert np.array_equal(got[0], k0) and np.array_equal(got[-1], k1)
     thigh, shin, foot = ([0, 1, 6, 7], [1, 2, 5, 6], [2, 3, 4, 5])
 
@@ -300,11 +300,11 @@ def test_a_chain_of_three_bodies_bends_less_than_under_any_other_rule():
     # The foot is rigid in the keys and turns least (-0.1 rad): it leads, and keeps its
     # shape as well as the Bézier's spoke does for that turn.
     assert chain[2] <= 1 - _spoke_scale(-0.1, t).min() + 1e-12
-    for other in (joints.jointed(k0, k1, t, chords, rule="mean"), paths.linear(k0, k1, t),
+    for other in (joints.jointed_paths(k0, k1, t, chords, rule="mean"), paths.linear(k0, k1, t),
                   paths.nonlinear(k0, k1, t)):
         assert max(chain) < max(outline_errors(other)) / 5
 
 
 def test_unknown_rule_is_refused():
     with pytest.raises(ValueError, match="unknown joint rule 'crack'"):
-        joints.jointed(octagon(), octagon(), [0.5], [(0, 4)], rule="crack")
+        joints.jointed_paths(octagon(), octagon(), [0.5], [(0, 4)], rule="crack")

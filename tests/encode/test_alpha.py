@@ -79,3 +79,19 @@ def test_mov_is_prores_4444_even_when_opaque(cli, tmp_path: Path) -> None:
     frames, info = decode_rgba(tmp_path / "clip.mov", [])
     assert "prores" in info.lower() and "4444" in info and len(frames) == 49
     assert (frames[..., 3] == 255).all()
+
+
+def test_the_docs_name_the_pixel_format_a_decoder_reports_for_a_transparent_mov(cli, tmp_path: Path) -> None:
+    import re
+
+    from tests.helpers import ROOT
+
+    scene = write_scene(tmp_path, SQUARE)
+    code, _, err = cli("render", scene, "--background", "none", "--frames", "0:2", "-o", tmp_path / "clip.mov", "-q")
+    assert code == 0, err
+    _, info = decode_rgba(tmp_path / "clip.mov", [])
+    stream = next(line for line in info.splitlines() if "Video:" in line)
+    reported = re.search(r"prores \([^)]*\)[^,]*, (\w+)", stream)
+    assert reported is not None, stream
+    documented = re.search(r"MOV is ProRes 4444[^`]*`(\w+)`", (ROOT / "docs" / "commands.md").read_text())
+    assert documented is not None and documented.group(1) == reported.group(1), (documented, stream)

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 import tweenrender as tr
-from tweenrender.encode.limits import check_frame_size, formats_for
+from tweenrender.encode.formats import check_frame_size, formats_for
 from tweenrender.errors import OptionError
 
 from tests.helpers import SQUARE, write_scene

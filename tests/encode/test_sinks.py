@@ -31,8 +31,10 @@ def _listing(folder: Path) -> list[str]:
 def test_a_sink_given_the_wrong_number_of_frames_refuses(tmp_path: Path, fmt: str, written: int) -> None:
     target = tmp_path / ("frames" if fmt == "png" else f"movie.{fmt}")
     if fmt == "png":
-        target.mkdir()
-        (target / "frame_0000.png").write_bytes(b"old frame")
+        earlier = open_sink(fmt, target, WIDTH, HEIGHT, 24.0, 1)
+        earlier.write(_frame(0))
+        earlier.close()
+        old_frame = (target / "frame_0000.png").read_bytes()
     else:
         target.write_bytes(b"old movie")
     sink = open_sink(fmt, target, WIDTH, HEIGHT, 24.0, 5)
@@ -41,7 +43,8 @@ def test_a_sink_given_the_wrong_number_of_frames_refuses(tmp_path: Path, fmt: st
     with pytest.raises(EncodeError, match=f"{written} frames"):
         sink.close()
     if fmt == "png":
-        assert _listing(target) == ["frame_0000.png"] and (target / "frame_0000.png").read_bytes() == b"old frame"
+        assert _listing(target) == [".tweenrender-manifest.json", "frame_0000.png"]
+        assert (target / "frame_0000.png").read_bytes() == old_frame
     else:
         assert target.read_bytes() == b"old movie"
     assert _listing(tmp_path) == [target.name]  # no temporary left

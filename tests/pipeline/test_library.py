@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 import os
 import subprocess
@@ -96,7 +97,7 @@ def test_write_gives_what_the_cli_gives(scene: tr.Scene, tmp_path: Path, cli) ->
 
 def test_write_png_frames_and_a_range(scene: tr.Scene, tmp_path: Path) -> None:
     folder = tr.write(scene, tmp_path / "frames", frames="10:13", size=(32, 24))
-    assert sorted(p.name for p in folder.iterdir()) == ["frame_0000.png", "frame_0001.png", "frame_0002.png"]
+    assert sorted(p.name for p in folder.glob("*.png")) == ["frame_0000.png", "frame_0001.png", "frame_0002.png"]
 
 
 @pytest.mark.parametrize("call, words", [
@@ -141,4 +142,7 @@ def test_the_readme_example_runs_as_written(tmp_path: Path) -> None:
     assert (tmp_path / "output" / "square.mp4").stat().st_size > 0
     meta, frames = decode(tmp_path / "output" / "square.mp4")
     assert len(frames) == 49 and meta["size"] == (2560, 720)
-    assert lines[-2] == "output/apple-pear.webm" and (tmp_path / "output" / "apple-pear.webm").stat().st_size > 0
+    assert lines[-3] == "output/apple-pear.webm" and (tmp_path / "output" / "apple-pear.webm").stat().st_size > 0
+    assert lines[-2] == "output/apple-pear.json"
+    # two drawings 1 s apart, each held 0.25 s: 1.5 s at 24 fps, 37 frames in the Lottie file as in the video
+    assert json.loads((tmp_path / "output" / "apple-pear.json").read_text())["op"] == 37

@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 
 from tests.helpers import SCENES, SQUARE, decode, write_scene
 
-skia = pytest.importorskip("skia")
+import skia
 
 
 def _raster(background: tuple[int, int, int, int], width: int = 64, height: int = 48):
@@ -168,12 +168,22 @@ def test_check_imports_neither_skia_nor_ffmpeg_nor_numba() -> None:
     assert not loaded & {"skia", "imageio", "imageio_ffmpeg", "numba"}
 
 
-def test_numba_is_imported_only_for_keys_of_different_counts(tmp_path: Path) -> None:
+def _ring(count: int, radius: float) -> str:
+    angles = np.linspace(0.0, 2.0 * np.pi, count, endpoint=False)
+    return str([[round(float(radius * np.cos(a)), 6), round(float(radius * np.sin(a)), 6)] for a in angles])
+
+
+def test_numba_is_imported_only_for_large_keys_of_different_counts(tmp_path: Path) -> None:
     same = _imported_after("check", "--json", str(SCENES / "square.toml"))
     assert "numba" not in same and "skia" not in same
+    # a few vertices: searched in numpy (core/_small_dtw), numba not loaded
     differ = write_scene(tmp_path, SQUARE.replace("[[7, 1], [7, 3], [5, 3], [5, 1]]",
                                                   "[[7, 1], [7, 3], [6, 4], [5, 3], [5, 1]]"))
-    assert "numba" in _imported_after("check", "--json", str(differ))
+    assert "numba" not in _imported_after("check", "--json", str(differ))
+    # 200 against 230 vertices: 9 million nodes, past the numpy search's 1.5 million
+    large = write_scene(tmp_path, SQUARE.replace("[[0, 0], [2, 0], [2, 2], [0, 2]]", _ring(200, 1.0))
+                        .replace("[[7, 1], [7, 3], [5, 3], [5, 1]]", _ring(230, 1.5)), "large.toml")
+    assert "numba" in _imported_after("check", "--json", str(large))
 
 
 @pytest.mark.parametrize("fmt", ["mp4", "gif"])

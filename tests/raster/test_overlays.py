@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from tweenrender.core.ratios import perimeter_ratio
+from tweenrender.core.ratios import scene_perimeter_ratio as perimeter_ratio
 from tweenrender.model import Key, Paint, Scene, Shape
 from tweenrender.pipeline.job import Frames, RenderJob, tracks_of
 

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from tests.helpers import ring_scene, stroke_cases, stroke_coverage
 
-skia = pytest.importorskip("skia")
+import skia
 
 from tweenrender.raster.round_stroke import stroke_contours, worth_compiling  # noqa: E402
 from tweenrender.raster.surface import Raster, StrokeStyle, contours_path  # noqa: E402

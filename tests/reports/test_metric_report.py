@@ -30,7 +30,6 @@ points = [[2, -1], [4.5, 0.5], [5, 3], [3.5, 5], [0.5, 5], [-1, 3], [-0.5, 0.5]]
 
 @pytest.mark.parametrize("balance", ["copies", "spread"])
 def test_metric_panels_measure_the_scenes_balance(tmp_path: Path, balance: str) -> None:
-    pytest.importorskip("skia")
     from tweenrender.reports.metric_report import metric_panels
 
     scene = load_scene(write_scene(tmp_path, SCENE.format(balance=balance)))

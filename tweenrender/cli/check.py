@@ -1,4 +1,4 @@
-"""``tweenrender check SCENE... [--json]``: validate scenes, or print one as loaded."""
+"""``tweenrender check SCENE...|A.svg B.svg.. [--json]``: validate scenes, or print one as loaded."""
 
 from __future__ import annotations
 
@@ -8,14 +8,15 @@ from typing import TYPE_CHECKING
 
 from ..errors import UsageError, printable
 from .args import print_json
+from .inputs import add_scene_argument, is_morph, timing
 
 if TYPE_CHECKING:
     from ..model import Scene
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("check", help="validate scene files")
-    p.add_argument("scene", nargs="+", metavar="SCENE")
+    p = sub.add_parser("check", help="validate scene files, or SVG drawings as one morph")
+    add_scene_argument(p, several_scenes=True)
     p.add_argument("--json", action="store_true", help="print the scene as loaded")
     p.set_defaults(run=run)
 
@@ -27,25 +28,23 @@ def _count(number: int, noun: str) -> str:
 def run(args: argparse.Namespace) -> int:
     """Check every scene; a bad one is reported on its own line and the others are still checked."""
     from ..errors import SceneError
-    from ..scenefile import load_scene
+    from ..reports.analyses import describe
+    from ..pipeline.library import load_scene
 
-    if args.json and len(args.scene) != 1:
-        raise UsageError("check --json takes exactly one scene")
-    if args.json:
-        from ..pipeline.job import scene_view, tracks_of
-        from ..reports.check_report import scene_dict
-
-        scene = load_scene(args.scene[0])
-        print_json(scene_dict(scene, scene_view(scene, tracks_of(scene), (None,))))
-        return 0
-    if len(args.scene) == 1:
-        scene = load_scene(args.scene[0])  # a single bad scene is reported by the command line
-        _report(args.scene[0], scene)
+    morph = is_morph(args.scene)
+    if args.json and len(args.scene) != 1 and not morph:
+        raise UsageError("check --json takes exactly one scene (or SVG drawings, one morph)")
+    if morph or len(args.scene) == 1:
+        scene = load_scene(args.scene if morph else args.scene[0], args.step, **timing(args))  # the CLI's line
+        if args.json:
+            print_json(describe(scene))
+        else:
+            _report(", ".join(args.scene), scene)
         return 0
     failed = 0
     for path in args.scene:
         try:
-            _report(path, load_scene(path))
+            _report(path, load_scene(path, args.step, **timing(args)))
         except SceneError as error:
             print(f"tweenrender: error: {printable(str(error))}", file=sys.stderr)
             failed += 1

@@ -15,11 +15,11 @@ from importlib import import_module
 from typing import Iterator, NoReturn, Sequence
 
 from .. import __version__
-from ..errors import TweenrenderError, UsageError, printable
+from ..errors import OptionError, TweenrenderError, UsageError, printable
 
 __all__ = ["COMMANDS", "main", "build_parser"]
 
-COMMANDS = ("render", "check", "stats", "correspond", "qcurves", "sheet", "reel", "report")
+COMMANDS = ("render", "check", "stats", "correspond", "qcurves", "sheet", "reel", "report", "preview")
 """The commands, in the order ``--help`` lists them; each is the module of that name beside this one."""
 
 
@@ -66,7 +66,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     except TweenrenderError as error:
         _explain(args.verbose)
         # one line by design: a line break in it came from a name, and is shown escaped like one
-        print(f"tweenrender: error: {printable(str(error)) or 'no message'}", file=sys.stderr)
+        said = error.for_flag() if isinstance(error, OptionError) else str(error)
+        print(f"tweenrender: error: {printable(said) or 'no message'}", file=sys.stderr)
         return error.exit_code
     except Exception as error:  # noqa: BLE001 - the last line of defence against tracebacks
         _explain(args.verbose)
@@ -122,8 +123,6 @@ def _one_line(text: str) -> str:
 
 
 def _silence_stdout() -> None:
-    import os
-
     try:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())

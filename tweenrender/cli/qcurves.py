@@ -1,15 +1,17 @@
-"""``tweenrender qcurves SCENE [--json] [-o PNG]``: Q-curves per vertex, motion class, auto's choice; a plot."""
+"""``tweenrender qcurves SCENE|A.svg B.svg.. [--json] [-o PNG]``: Q-curves per vertex, motion class, auto's
+choice; a plot."""
 
 from __future__ import annotations
 
 import argparse
 
-from .args import escaped, png_target, print_json, print_path
+from .args import escaped, print_json, print_path
+from .inputs import add_scene_argument, default_png, load_one
 
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("qcurves", help="Q-curves of every vertex, the motion they show and auto's choice")
-    p.add_argument("scene", metavar="SCENE")
+    add_scene_argument(p)
     p.add_argument("--json", action="store_true", help="print the report as JSON")
     p.add_argument("-o", "--output", metavar="PNG",
                    help="where to draw the plot (default output/<stem>-qcurves.png)")
@@ -17,18 +19,14 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..reports.qcurve_report import qcurves_dict, qcurves_text, write_qcurve_plot
-    from ..scenefile import load_scene
+    from ..reports.analyses import qcurves
+    from ..reports.qcurve_report import qcurves_text
 
-    target = png_target(args, "qcurves", "the plot")
-    scene = load_scene(args.scene)
-    report = qcurves_dict(scene)
-    report["scene"] = args.scene
+    picture = None if args.json and args.output is None else default_png(args, "qcurves")
+    report = qcurves(load_one(args), picture)
     if args.json:
         print_json(report)
-        if args.output is not None:
-            write_qcurve_plot(report, target)
         return 0
     print(qcurves_text(escaped(report)))
-    print_path(write_qcurve_plot(report, target))
+    print_path(picture)
     return 0

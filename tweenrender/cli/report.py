@@ -1,18 +1,19 @@
-"""``tweenrender report SCENE [--compare M,M..] [-o DIR]``: one HTML page comparing methods."""
+"""``tweenrender report SCENE|A.svg B.svg.. [--compare M,M..] [-o DIR]``: one HTML page comparing methods."""
 
 from __future__ import annotations
 
 import argparse
 from pathlib import Path
 
-from .args import methods
-from .matching_flags import add_balance_flag, add_matching_flags, with_matching
+from .args import methods, print_path
+from .inputs import add_scene_argument, load_one, stem
+from .matching_flags import add_balance_flag, add_matching_flags, matching_options
 
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("report", help="one HTML page comparing methods: animations in sync, sheet, "
                                       "correspondence, metric charts and a table")
-    p.add_argument("scene", metavar="SCENE")
+    add_scene_argument(p)
     p.add_argument("--compare", type=methods, metavar="M,M..",
                    help="the methods to compare (default: every method; jointed where a shape has joints)")
     p.add_argument("-o", "--output", metavar="DIR",
@@ -24,15 +25,13 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..reports.html_report import write_report
-    from ..scenefile import load_scene
+    from ..reports.documents import report
     from .progress import ProgressBar
 
-    target = Path(args.output) if args.output else Path("output") / f"{Path(args.scene).stem}-report"
-    scene = with_matching(load_scene(args.scene), args)
+    target = Path(args.output) if args.output else Path("output") / f"{stem(args.scene)}-report"
 
     def bar(name: str) -> ProgressBar:
         return ProgressBar(name, enabled=False if args.quiet else None)
 
-    print(write_report(scene, target, args.compare, bar))
+    print_path(report(load_one(args), target, compare=args.compare, progress=bar, **matching_options(args)))
     return 0

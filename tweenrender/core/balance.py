@@ -12,6 +12,8 @@ left with zero length.
 
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -40,26 +42,27 @@ def coincident_runs(points: Array) -> list[tuple[int, int]]:
     return runs
 
 
-def spread(k0: Array, k1: Array) -> tuple[Array, Array]:
+def spread(k0: Array, k1: Array, fixed: Sequence[int] = ()) -> tuple[Array, Array]:
     """Balanced keys ``(L, 2)`` with each run of copies spread along its key's outline: two new arrays.
 
     Runs are found by position (consecutive equal vertices), so keys whose
     repeated vertices were drawn that way are spread too. A key whose
-    vertices all coincide is returned as it is.
+    vertices all coincide is returned as it is. The copies at the indices
+    ``fixed`` (hinted vertices) stay on their vertex in both keys.
     """
     k0 = np.array(k0, dtype=np.float64)
     k1 = np.array(k1, dtype=np.float64)
-    return _spread_one(k0, k1), _spread_one(k1, k0)
+    return _spread_one(k0, k1, fixed), _spread_one(k1, k0, fixed)
 
 
-def spread_copies(k0: Array, k1: Array) -> tuple[Array, Array]:
+def spread_copies(k0: Array, k1: Array, fixed: Sequence[int] = ()) -> tuple[Array, Array]:
     """:func:`spread` where either closed key ``(L, 2)`` has copies of a vertex; else the keys as they are."""
     if coincident_runs(k0) or coincident_runs(k1):
-        return spread(k0, k1)
+        return spread(k0, k1, fixed)
     return k0, k1
 
 
-def _spread_one(key: Array, other: Array) -> Array:
+def _spread_one(key: Array, other: Array, fixed: Sequence[int] = ()) -> Array:
     out = key.copy()
     n = len(key)
     for start, length in coincident_runs(key):
@@ -82,6 +85,12 @@ def _spread_one(key: Array, other: Array) -> Array:
         share = _MARGIN + (1.0 - 2.0 * _MARGIN) * share
         place = share * (first + second)
         stay = int(np.argmin(np.abs(place - first)))
+        pinned = [k for k in range(length) if int(index[k + 1]) in fixed]
+        if pinned:  # a hinted copy stays (one per run at most: hints sit on distinct vertices); the copies
+            stay = pinned[0]  # before it go on the half-edge before the vertex, those after it after
+            k = np.arange(length)
+            place = np.where(k < stay, first * (k + 1) / (stay + 1),
+                             first + second * (k - stay) / max(length - stay, 1))
         for k, at in enumerate(place):
             slot = index[k + 1]
             if k == stay:

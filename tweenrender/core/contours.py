@@ -16,6 +16,7 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from .assignment import min_cost_assignment
 from .geometry import signed_area
 
 __all__ = ["ROLES", "inside", "roles", "pair_contours", "nearest_point", "anchor", "contour_size"]
@@ -81,8 +82,12 @@ def contour_size(points: Array, closed: bool) -> float:
 
 
 def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Array],
-                  b_closed: Sequence[bool]) -> list[tuple[int | None, int | None]]:
+                  b_closed: Sequence[bool], forced: Sequence[tuple[int, int]] = ()
+                  ) -> list[tuple[int | None, int | None]]:
     """Which contour of key a goes with which of key b: ``(i, j)`` pairs, ``None`` for no partner.
+
+    ``forced`` pairs (shape hints make them; each contour at most once, of one role) are kept
+    as they are; the others are paired among themselves as follows.
 
     Within a role as many contours are paired as the smaller key has, at the least total
     cost; the rest have no partner. The cost of a pair is the distance between the
@@ -93,10 +98,11 @@ def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Arra
     role_a, role_b = roles(a, a_closed), roles(b, b_closed)
     centre_a, centre_b = _box_centre(a), _box_centre(b)
     scale = max(_key_scale(a), _key_scale(b), 1e-300)
-    pairs: list[tuple[int | None, int | None]] = []
+    pairs: list[tuple[int | None, int | None]] = [(i, j) for i, j in forced]
+    taken_a, taken_b = {i for i, _ in forced}, {j for _, j in forced}
     for role in ROLES:
-        ia = [i for i, r in enumerate(role_a) if r == role]
-        jb = [j for j, r in enumerate(role_b) if r == role]
+        ia = [i for i, r in enumerate(role_a) if r == role and i not in taken_a]
+        jb = [j for j, r in enumerate(role_b) if r == role and j not in taken_b]
         if not ia or not jb:
             pairs += [(i, None) for i in ia] + [(None, j) for j in jb]
             continue
@@ -109,9 +115,7 @@ def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Arra
         sb = np.log([contour_size(b[j], b_closed[j]) for j in jb])
         cost = (np.linalg.norm(pa[:, None] - pb[None], axis=-1) / scale
                 + _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))
-        from scipy.optimize import linear_sum_assignment
-
-        rows, cols = linear_sum_assignment(cost)
+        rows, cols = min_cost_assignment(cost)
         pairs += [(ia[r], jb[c]) for r, c in zip(rows, cols)]
         pairs += [(i, None) for k, i in enumerate(ia) if k not in set(rows.tolist())]
         pairs += [(None, j) for k, j in enumerate(jb) if k not in set(cols.tolist())]

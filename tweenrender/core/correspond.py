@@ -47,6 +47,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..errors import GeometryError
 from ..model import ALIGNS, COSTS, Matching, Points
+from . import _small_dtw
 from .geometry import centroid, signed_area
 
 __all__ = [
@@ -62,7 +63,8 @@ _DEFAULT = Matching()
 
 def _kernels() -> ModuleType:
     """The compiled search kernels, imported on first need: numba costs ~0.2 s to import,
-    and scenes whose keys agree in vertex count never need it."""
+    and scenes whose keys agree in vertex count never need it; small searches are done in
+    numpy by ``_small_dtw`` (the same answers) while numba is not loaded."""
     from . import _cyclic_dtw
 
     return _cyclic_dtw
@@ -164,7 +166,7 @@ def correspond_open(a: Points, b: Points, matching: Matching = _DEFAULT) -> Corr
     _check_matching(matching)
     matching = replace(matching, cost="distance")
     a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
-    kernels = _kernels()
+    kernels = _small_dtw if _small_dtw.takes(len(a), len(b), closed=False) else _kernels()
     best: Correspondence | None = None
     for backwards in (False, True):
         walk = np.arange(len(b))[::-1] if backwards else np.arange(len(b))
@@ -199,8 +201,13 @@ def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> C
     # step of -1 in b when b winds the other way; walk[0] = 0 either way.
     walk = (-np.arange(len(b))) % len(b) if backwards else np.arange(len(b))
     walked_b = np.ascontiguousarray(b[walk])
-    kernels = _kernels()
-    if matching.cost == "distance":
+    small = matching.cost == "distance" and not exhaustive and _small_dtw.takes(len(a), len(b))
+    kernels = _small_dtw if small else _kernels()
+    if matching.cost == "distance" and not (exhaustive or small):
+        from . import _lean_dtw  # the same path as maes_search, in memory n·√m instead of m·n
+
+        _, nodes = _lean_dtw.lean_maes_search(a, walked_b, _lean_dtw.checkpoint_rows(len(a)))
+    elif matching.cost == "distance":
         search = kernels.every_start_search if exhaustive else kernels.maes_search
         _, nodes = search(kernels.distance_matrix(a, walked_b))
     else:

@@ -23,11 +23,11 @@ from . import paths
 from .geometry import best_fit_rotation, rotate
 
 __all__ = ["JointError", "PathFunction", "RULES", "validate_joints", "bodies", "pivoted", "misfit", "root_body",
-           "jointed"]
+           "jointed_paths"]
 
 Array = NDArray[np.float64]
 RULES = ("chain", "mean")
-"""How bodies share their joint vertices; see :func:`jointed`."""
+"""How bodies share their joint vertices; see :func:`jointed_paths`."""
 
 PathFunction = Callable[[Array, Array, ArrayLike], Array]
 """``f(k0 (N, 2), k1 (N, 2), t (T,)) -> (T, N, 2)``, like the functions of :mod:`paths`."""
@@ -144,7 +144,7 @@ def root_body(k0: Array, k1: Array, parts: Sequence[NDArray[np.intp]]) -> int:
     return min(range(len(parts)), key=lambda i: (-len(parts[i]), turns[i], i))
 
 
-def jointed(
+def jointed_paths(
     k0: Array,
     k1: Array,
     t: ArrayLike,

@@ -93,10 +93,12 @@ class Curves:
 
 
 def curves(k0: Array, k1: Array, method: str, t: Array = SWEEP,
-           joints: Sequence[tuple[int, int]] = ()) -> Curves:
-    """Every measure of ``method`` between corresponding keys ``(N, 2)`` at each of ``t (T,)``."""
+           joints: Sequence[tuple[int, int]] = (), frames: Array | None = None) -> Curves:
+    """Every measure of ``method`` between corresponding keys ``(N, 2)`` at each of ``t (T,)``;
+    ``frames (T, N, 2)``, when given, are the inbetweens as drawn (a contour moving with others)."""
     t = np.asarray(t, dtype=np.float64)
-    frames = interpolate(k0, k1, t, method, joints)
+    if frames is None:
+        frames = interpolate(k0, k1, t, method, joints)
     return Curves(
         t=t,
         perimeter_ratio=perimeter_ratio(frames, k0, k1, t),

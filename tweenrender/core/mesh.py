@@ -425,7 +425,7 @@ class _Refiner:
                 elif kind == "edge" and not self.fixed(*found):  # type: ignore[misc]
                     self.insert_on_edge(*found, cx, cy, (-1, math.nan))  # type: ignore[misc]
                 else:
-                    segment = found if kind != "edge" else found  # type: ignore[assignment]
+                    segment = found  # type: ignore[assignment]
                     if segment is not None and segment not in self.segments:
                         segment = (segment[1], segment[0]) if (segment[1], segment[0]) in self.segments else None
             if segment is not None:

@@ -360,4 +360,4 @@ def auto(k0: ArrayLike, k1: ArrayLike, t: ArrayLike, joints: Joints = ()) -> Arr
     functions = [_PATHS[m] for m in choice.bodies]
     if len(joints) == 0:
         return functions[0](k0, k1, t)
-    return _joints.jointed(k0, k1, t, joints, body_paths=functions)
+    return _joints.jointed_paths(k0, k1, t, joints, body_paths=functions)

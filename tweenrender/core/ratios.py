@@ -19,12 +19,12 @@ from numpy.typing import ArrayLike, NDArray
 from .geometry import outline_length
 from .timeline import Track
 
-__all__ = ["perimeter_ratio", "segment_midpoints"]
+__all__ = ["scene_perimeter_ratio", "segment_midpoints"]
 
 Array = NDArray[np.float64]
 
 
-def perimeter_ratio(tracks: Sequence[Track], methods: Sequence[str], times: ArrayLike) -> Array:
+def scene_perimeter_ratio(tracks: Sequence[Track], methods: Sequence[str], times: ArrayLike) -> Array:
     """Summed inbetween perimeter over summed segment key means, ``(T,)`` for ``times (T,)`` seconds.
 
     ``methods`` holds one method per track. Without moving shapes the ratio is 1.

@@ -70,7 +70,11 @@ def sweep(target: Path) -> list[Path]:
 
 
 def prepare_folder(target: Path) -> None:
-    """Create ``target``'s parent folder, reporting an unwritable place clearly; sweep stale temporaries."""
+    """Create ``target``'s parent folder, reporting an unwritable place clearly; sweep stale temporaries.
+    A name too long for the file system, its temporary's included, is refused first (an ``OptionError``)."""
+    from .targets import check_name_fits
+
+    check_name_fits(target)
     parent = target.parent
     try:
         parent.mkdir(parents=True, exist_ok=True)

@@ -1,5 +1,6 @@
-"""Join video parts rendered separately (``--frames`` chunks) into one file: MP4 and WebM parts by
-stream copy, lossless parts into a GIF (whose palette must see every frame)."""
+"""Join video parts rendered separately (``--frames`` chunks) into one file: parts by stream copy, or
+lossless parts encoded once (a GIF, whose palette must see every frame), as the format's
+:attr:`~.formats.Format.join` says."""
 
 from __future__ import annotations
 
@@ -8,13 +9,14 @@ from typing import Sequence
 
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, discard, prepare_folder, sibling
+from .formats import FORMATS, LOSSLESS, TABLE
 from .lifeline import run_program
 
 __all__ = ["concat", "CONCAT_FORMATS"]
 
-CONCAT_FORMATS = ("mp4", "webm", "gif")
-"""Targets parts can be joined into: MP4 and WebM by stream copy (every part starts on a key frame),
-GIF by encoding lossless parts (``encode.sinks.LOSSLESS``) once, exactly as a single render would."""
+CONCAT_FORMATS = tuple(name for name in FORMATS if TABLE[name].join in ("copy", "lossless"))
+"""Targets parts can be joined into (:attr:`.formats.Format.join`): by stream copy (every part starts on a
+key frame), or by encoding lossless parts (:data:`.formats.LOSSLESS`) once, exactly as a single render would."""
 
 
 def _listed(path: Path, seconds: float | None = None) -> str:
@@ -37,9 +39,7 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
     ``alpha`` keeps a GIF's transparency (its parts carry it).
     The target changes only if the joined file was written and reads back.
     """
-    import imageio_ffmpeg
-
-    from .sinks import LOSSLESS, encoder_options, probe_video
+    from .sinks import encoder_options, ffmpeg_exe, probe_video
 
     target = Path(target)
     paths = [Path(p) for p in parts]
@@ -48,17 +48,19 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
         raise OptionError(f"{target}: can join parts into {', '.join(CONCAT_FORMATS)} only, not .{fmt}")
     if not paths:
         raise OptionError(f"{target}: no parts to join")
+    lossless = TABLE[fmt].join == "lossless"
     for path in paths:
         if not path.is_file():
             raise OptionError(f"{path}: part to join does not exist")
-        if fmt == "gif" and path.suffix.lower() != f".{LOSSLESS}":
-            raise OptionError(f"{path}: a GIF is joined from lossless .{LOSSLESS} parts, not {path.suffix or 'this'}")
+        if lossless and path.suffix.lower() != LOSSLESS.suffix:
+            raise OptionError(f"{path}: a {TABLE[fmt].codec} is joined from lossless {LOSSLESS.suffix} parts, "
+                              f"not {path.suffix or 'this'}")
     prepare_folder(target)
     temporary = sibling(target, "." + fmt)
     seconds: list[float | None] = [None] * len(paths)
-    if fmt == "gif":
+    if lossless:
         if rate is None:
-            raise OptionError(f"{target}: joining GIF parts needs the frame rate")
+            raise OptionError(f"{target}: joining {TABLE[fmt].codec} parts needs the frame rate")
         seconds = [_frames_of(path) / rate for path in paths]
     # the list beside the target, like every temporary: a killed run's is swept by the next one
     listing = sibling(target, ".txt")
@@ -67,11 +69,11 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
     except OSError as error:
         discard(listing)
         raise EncodeError(f"{target}: cannot write the list of parts beside it ({error.strerror or error})") from None
-    if fmt == "gif":
-        output = encoder_options("gif", alpha=alpha)
+    if lossless:
+        output = encoder_options(fmt, alpha=alpha)
     else:
-        output = ["-map", "0:v", "-c", "copy", *(["-movflags", "+faststart"] if fmt == "mp4" else []), "-f", fmt]
-    command = [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
+        output = ["-map", "0:v", "-c", "copy", *TABLE[fmt].container, "-f", fmt]
+    command = [ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
                "-f", "concat", "-safe", "0", "-i", str(listing), *output, str(temporary)]
     try:
         done = run_program(command, text=True)

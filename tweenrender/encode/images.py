@@ -9,7 +9,7 @@ from numpy.typing import NDArray
 
 from .atomic import replacing
 
-__all__ = ["write_png"]
+__all__ = ["write_png", "png_bytes"]
 
 
 def write_png(picture: NDArray[np.uint8], target: Path, what: str = "the picture") -> Path:
@@ -24,3 +24,13 @@ def write_png(picture: NDArray[np.uint8], target: Path, what: str = "the picture
     with replacing(target, ".png", what) as temporary:
         iio.imwrite(temporary, picture, extension=".png", compress_level=9)
     return target
+
+
+def png_bytes(picture: NDArray[np.uint8], compress_level: int = 1) -> bytes:
+    """Straight RGBA ``(H, W, 4)`` as PNG file bytes (RGB when opaque); level 1 compresses a flat
+    picture nearly as well as 9 in a fraction of the time, which a frame served live needs."""
+    import imageio.v3 as iio
+
+    if picture.shape[-1] == 4 and np.all(picture[..., 3] == 255):
+        picture = picture[..., :3]
+    return bytes(iio.imwrite("<bytes>", picture, extension=".png", compress_level=compress_level))

@@ -19,11 +19,12 @@ from numpy.typing import NDArray
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 from .lifeline import run_program, start_program
-from .limits import check_frame_size
+from .formats import TABLE, check_alpha, check_frame_size, lookup
+from .manifest import write_manifest
 from .targets import check_frames_folder
 from .yuv420 import PIXEL_ORDERS, Yuv420
 
-__all__ = ["FORMATS", "ALPHA_FORMATS", "LOSSLESS", "PIXEL_FORMATS", "check_alpha", "Sink", "open_sink", "PngSequence",
+__all__ = ["PIXEL_FORMATS", "Sink", "open_sink", "PngSequence",
            "FFmpegVideo", "probe_video", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning", "png_bytes",
            "sends_yuv420", "YUV420_TAGS"]
 
@@ -40,35 +41,6 @@ as BT.709 by many)."""
 # wake-ups. 1 MiB (Linux's limit for an unprivileged process) lets ffmpeg
 # read in larger gulps; elsewhere the default stays.
 _PIPE_BYTES = 1 << 20
-
-FORMATS = ("mp4", "webm", "mov", "gif", "png")
-ALPHA_FORMATS = ("webm", "mov", "gif", "png", "nut")
-"""Formats that keep a transparent background: VP9 with alpha, ProRes 4444, GIF's transparent index, PNG
-(and the lossless parts of a GIF, FFV1 in BGRA)."""
-
-LOSSLESS = "nut"
-"""The format of a lossless part (FFV1 in NUT, BGRA: exact frame times): a chunk of a clip whose encoder must see
-every frame at once (a GIF's palette), encoded when the parts are joined."""
-
-# Output options per container: H.264 and VP9 in yuv420p (what every player plays).
-_CODECS: dict[str, list[str]] = {
-    "mp4": ["-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p",
-            "-movflags", "+faststart", "-f", "mp4"],
-    "webm": ["-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-pix_fmt", "yuv420p",
-             "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"],
-    "mov": ["-c:v", "prores_ks", "-profile:v", "4444", "-vendor", "apl0", "-pix_fmt", "yuv444p10le", "-f", "mov"],
-    "gif": ["-filter_complex", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=sierra2_4a",
-            "-loop", "0", "-f", "gif"],
-    LOSSLESS: ["-c:v", "ffv1", "-pix_fmt", "bgra", "-f", "nut"],
-}
-# With a transparent background: the same encoders keeping alpha.
-_ALPHA: dict[str, dict[str, str]] = {
-    "webm": {"yuv420p": "yuva420p"},
-    "mov": {"yuv444p10le": "yuva444p10le"},
-    "gif": {"palettegen=stats_mode=diff": "palettegen=stats_mode=diff:reserve_transparent=1",
-            "paletteuse=dither=sierra2_4a": "paletteuse=dither=sierra2_4a:alpha_threshold=128"},
-}
-
 
 class Sink(Protocol):
     target: Path
@@ -89,16 +61,16 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
 
     ``pixel_format`` is the layout of the arrays given to ``write`` (video
     sinks; PNG frames are always straight RGBA). ``alpha`` keeps transparency
-    (formats of :data:`ALPHA_FORMATS` only).
+    (formats that can, :attr:`.formats.Format.keeps_alpha`).
     """
-    if fmt not in FORMATS and fmt != LOSSLESS:
-        raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
+    if fmt not in TABLE:
+        lookup(fmt)  # refused, naming the formats there are
     check_alpha(fmt, alpha)
     check_frame_size(fmt, width, height)
-    if fmt == "png":
+    if TABLE[fmt].folder:
         check_frames_folder(target)
     prepare_folder(target)
-    if fmt == "png":
+    if TABLE[fmt].folder:
         return PngSequence(target, frames)
     return FFmpegVideo(fmt, target, width, height, fps, frames, pixel_format, alpha)
 
@@ -108,13 +80,6 @@ def ffmpeg_exe() -> str:
     import imageio_ffmpeg
 
     return imageio_ffmpeg.get_ffmpeg_exe()
-
-
-def check_alpha(fmt: str, alpha: bool) -> None:
-    """Refuse a transparent background in a format that cannot keep it (H.264 MP4)."""
-    if alpha and fmt not in ALPHA_FORMATS:
-        raise OptionError(f"{fmt} (H.264) cannot keep a transparent background; use .webm (VP9 with alpha), "
-                          ".mov (ProRes 4444), .gif or PNG frames, or an opaque background")
 
 
 def x264_tuning(width: int, height: int, cpus: int | None = None) -> list[str]:
@@ -135,9 +100,7 @@ def x264_tuning(width: int, height: int, cpus: int | None = None) -> list[str]:
 def encoder_options(fmt: str, width: int = 0, height: int = 0, alpha: bool = False) -> list[str]:
     """ffmpeg's output options (codec, pixel format, container) for ``fmt`` frames of ``width × height``;
     with ``alpha``, those that keep transparency."""
-    codec = list(_CODECS[fmt])
-    for old, new in (_ALPHA.get(fmt, {}).items() if alpha else ()):
-        codec = [option.replace(old, new) for option in codec]
+    codec = TABLE[fmt].options(alpha)
     if "libx264" in codec and width and height:
         after = codec.index("libx264") + 1
         return [*codec[:after], *x264_tuning(width, height), *codec[after:]]
@@ -147,20 +110,18 @@ def encoder_options(fmt: str, width: int = 0, height: int = 0, alpha: bool = Fal
 def sends_yuv420(fmt: str, width: int, height: int, alpha: bool = False) -> bool:
     """Whether a video sink converts opaque ``width × height`` frames for ``fmt`` to yuv420p itself (:mod:`.yuv420`)
     rather than send RGB: MP4 and WebM without transparency, at even sizes (their encoders take yuv420p
-    anyway). ffmpeg then holds 1.5 bytes a pixel in each frame it queues instead of 4, and converts nothing."""
-    return fmt in ("mp4", "webm") and not alpha and width % 2 == 0 and height % 2 == 0
+    anyway: :attr:`.formats.Format.yuv420`). ffmpeg then holds 1.5 bytes a pixel in each frame it queues instead of 4, and converts nothing."""
+    return TABLE[fmt].yuv420 and not alpha and width % 2 == 0 and height % 2 == 0
 
 
 def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, output: str,
                    pixel_format: str = "rgba", alpha: bool = False) -> list[str]:
     """The bundled ffmpeg's command line that encodes raw ``pixel_format`` frames from ``source`` as ``fmt``."""
-    import imageio_ffmpeg
-
     if pixel_format not in (*PIXEL_FORMATS, "yuv420p"):
         raise OptionError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)} "
                           "or yuv420p")
     tags = YUV420_TAGS if pixel_format == "yuv420p" else []
-    return [imageio_ffmpeg.get_ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
+    return [ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
             "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}", *tags,
             "-i", source, "-an", *encoder_options(fmt, width, height, alpha), output]
 
@@ -209,8 +170,9 @@ class PngSequence:
             self.abort()
             raise EncodeError(f"{self.target}: wrote {self.count} frames, expected {self.expected}")
         try:
+            write_manifest(self.temporary)
             check_frames_folder(self.target)  # again: files may have been saved there meanwhile
-        except OptionError:
+        except (OptionError, EncodeError):
             self.abort()
             raise
         commit_folder(self.temporary, self.target)
@@ -338,9 +300,7 @@ def probe_video(path: Path) -> tuple[int, tuple[int, int]]:
     One ffmpeg run that copies the stream to nowhere (no decoding): the input's
     stream line gives the size, the final progress line the frame count.
     """
-    import imageio_ffmpeg
-
-    done = run_program([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", str(path),
+    done = run_program([ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", str(path),
                         "-map", "0:v:0", "-c", "copy", "-f", "null", "-"], text=True, errors="replace")
     said = done.stderr
     stream = re.search(r"Stream #0:\d+.*?: Video: [^\n]*?(?<!\w)(\d{1,5})x(\d{1,5})(?!\w)", said)

@@ -3,22 +3,26 @@
 Each chunk is a ``frames`` range of the job, rendered where the executor runs
 it; only its encoded result travels back:
 
-- MP4, WebM: a video part, joined by stream copy (each part starts on a key frame);
-- GIF: a lossless part (FFV1), the whole GIF encoded once at the join, so its
-  palette sees every frame and the file is the single render's, byte for byte;
-- PNG: the frames' PNG bytes, written in order into the target folder.
+- a video part joined by stream copy (MP4, WebM: each part starts on a key frame);
+- a lossless part (FFV1), the whole output encoded once at the join (a GIF, so its
+  palette sees every frame and the file is the single render's, byte for byte);
+- the frames' PNG bytes, written in order into the target folder (PNG frames).
+
+Which one is each format's :attr:`~tweenrender.encode.formats.Format.join`.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
 import tempfile
 from concurrent.futures import Executor, Future
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
-from ..errors import EncodeError, OptionError
+from ..encode.formats import TABLE
+from ..errors import EncodeError
 from .job import Progress, RenderJob
 from .workers import draw_frame, split_range
 
@@ -26,36 +30,42 @@ __all__ = ["render_part", "render_chunks", "part_format", "render_in_processes"]
 
 
 def part_format(fmt: str) -> str:
-    """The format a chunk of a ``fmt`` output is rendered in."""
-    from ..encode.sinks import FORMATS, LOSSLESS
+    """The format a chunk of a ``fmt`` output is rendered in (its own, or the lossless one its join encodes)."""
+    from ..encode.formats import LOSSLESS, lookup
 
-    if fmt not in FORMATS:
-        raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
-    return LOSSLESS if fmt == "gif" else fmt
+    return LOSSLESS.name if lookup(fmt).join == "lossless" else fmt
 
 
 _PART_PREFIX = "tweenrender-part-"
 """Folders of parts being rendered, in the temporary folder: ``tweenrender-part-<render's pid>-<random>``."""
 
 
-def sweep_parts() -> None:
+def sweep_parts(own: bool = False) -> None:
     """Remove the part folders of renders that no longer run (killed with their workers before these
-    could clean up)."""
+    could clean up); with ``own``, this process's too (once its workers are stopped)."""
     import shutil
 
     from ..encode.atomic import alive
 
     for folder in Path(tempfile.gettempdir()).glob(f"{_PART_PREFIX}*-*"):
         owner = folder.name[len(_PART_PREFIX):].split("-", 1)[0]
-        if owner.isdigit() and not alive(int(owner)):
+        if owner.isdigit() and ((own and int(owner) == os.getpid()) or not alive(int(owner))):
             shutil.rmtree(folder, ignore_errors=True)
+
+
+@contextlib.contextmanager
+def run_folder(what: str) -> Iterator[Path]:
+    """A folder in the temporary folder for this run's ``what`` (``tweenrender-part-<pid>-<what>-…``),
+    removed afterwards; a run killed before that leaves it to the next run's :func:`sweep_parts`."""
+    with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getpid()}-{what}-", ignore_cleanup_errors=True) \
+            as folder:
+        yield Path(folder)
 
 
 def render_part(job: RenderJob, fmt: str) -> Any:
     """Render ``job`` (typically a ``frames`` chunk) for a ``fmt`` output where this runs.
 
-    Returns a video part's bytes (``fmt`` mp4 or webm, or the lossless format of
-    a GIF's part), or for ``fmt`` png the list of each frame's PNG bytes. Meant
+    Returns a video part's bytes, or for a folder of frames the list of each frame's PNG bytes. Meant
     to run on an executor's worker, whose files it does not keep.
     """
     from ..encode.lifeline import Stopped, stoppable
@@ -65,9 +75,10 @@ def render_part(job: RenderJob, fmt: str) -> Any:
 
     try:
         with stoppable():
-            if fmt == "png":
+            if TABLE[fmt].folder:
                 frames = Frames(job)
                 return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
+            sweep_parts()  # on a worker machine, those of renders killed there before
             with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getppid()}-") as folder:
                 path = Path(folder) / f"part.{fmt}"
                 render(job, fmt, path)
@@ -90,8 +101,8 @@ def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, ch
     ranges = split_range(job.frame_range, chunks)
     futures = [executor.submit(render_part, replace(job, frames=r), kind) for r in ranges]
     try:
-        if fmt == "png":
-            return _join_frames(job, target, futures, progress)
+        if TABLE[fmt].folder:
+            return _join_frames(job, fmt, target, futures, progress)
         return _join_videos(job, fmt, kind, target, futures, [len(r) for r in ranges], progress)
     finally:
         for future in futures:
@@ -100,14 +111,15 @@ def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, ch
 
 def render_in_processes(job: RenderJob, fmt: str, target: Path, workers: int,
                         progress: Progress | None = None) -> Path:
-    """Render ``job`` with ``workers`` processes: an MP4 or WebM as that many chunks, each drawn and
-    encoded by a process of its own and joined by stream copy (no frame travels between processes);
-    PNG frames and GIFs as frames drawn in the processes and written here in order."""
+    """Render ``job`` with ``workers`` processes: a format rendered in chunks (:attr:`.formats.Format.chunked`,
+    MP4 and WebM) as that many chunks, each drawn and encoded by a process of its own and joined by
+    stream copy (no frame travels between processes); others (PNG frames, GIF) as frames drawn in the
+    processes and written here in order."""
     from concurrent.futures import ProcessPoolExecutor
 
     from .stream import render
 
-    if workers <= 1 or fmt not in ("mp4", "webm"):
+    if workers <= 1 or not TABLE[fmt].chunked:
         return render(job, fmt, target, progress, workers=workers)
     from ..encode.lifeline import part_worker_setup
 
@@ -139,14 +151,14 @@ def _stop_workers(pool: Any) -> None:
             process.terminate()
 
 
-def _join_frames(job: RenderJob, target: Path, futures: list[Future[Any]], progress: Progress | None) -> Path:
+def _join_frames(job: RenderJob, fmt: str, target: Path, futures: list[Future[Any]], progress: Progress | None) -> Path:
     from ..encode import open_sink
 
     from .stream import stream_into
 
     width, height = job.frame_size
     total = len(job.frame_range)
-    sink = open_sink("png", target, width, height, job.rate, total)
+    sink = open_sink(fmt, target, width, height, job.rate, total)
     pictures = (data for future in futures for data in future.result())  # each part's PNG bytes, in order
     return stream_into(sink, pictures, total, progress, sink.write_encoded)  # type: ignore[attr-defined]
 
@@ -159,10 +171,15 @@ def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: lis
     prepare_folder(target)
     total = len(job.frame_range)
     parts: list[Path] = []
+    folder = sibling(target, ".parts")  # one folder per run: a killed run leaves one entry, swept as one
+    try:
+        folder.mkdir()
+    except OSError as error:
+        raise EncodeError(f"{target}: cannot create a folder for the parts beside it ({os_reason(error)})") from None
     try:
         done = 0
         for future, size in zip(futures, sizes):
-            part = sibling(target, f".{len(parts):04d}.{kind}")
+            part = folder / f"{len(parts):04d}.{kind}"
             parts.append(part)
             data = future.result()
             try:
@@ -176,5 +193,4 @@ def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: lis
         return concat(parts, target, expected=total, fmt=fmt, rate=job.rate,
                       alpha=job.scene.background[3] < 255)
     finally:
-        for part in parts:
-            discard(part)
+        discard(folder)

@@ -13,16 +13,17 @@ from typing import TYPE_CHECKING, Callable, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.timeline import ShapeAt, Track, build_track, frame_count
+from ..core.stacking import Switch, layered, order_at, stacking_plan
+from ..core.timeline import ShapeAt, Track, frame_count, tracks_of
 from ..errors import OptionError
 from ..model import Points, Scene
+from ..raster.view import Box
 
 if TYPE_CHECKING:
     from ..raster.panels import Composer
 
-__all__ = ["RenderJob", "Frames", "Progress", "total_frames", "pick_frames", "tracks_of", "scene_view"]
+__all__ = ["RenderJob", "Frames", "Progress", "total_frames", "pick_frames", "tracks_of", "scene_view", "stacking_of"]
 
-Box = tuple[float, float, float, float]
 _BLOCK = 32  # frames whose polygons are evaluated in one vectorised call
 Progress = Callable[[int, int], None]
 """Called with ``(frames done, frames in all)`` as a render goes."""
@@ -35,7 +36,8 @@ def total_frames(scene: Scene, fps: float | None = None) -> int:
 
 def pick_frames(spec: str | range | None, total: int) -> range:
     """The frames to render of a clip of ``total``: all (``None``), a ``range``, or ``"A:B"`` text
-    (B exclusive, either side optional, like a Python slice; ``"A"`` alone is one frame)."""
+    (B exclusive, either side optional, like a Python slice, negative numbers counting from the end;
+    ``"A"`` alone is one frame, ``"-1"`` the last)."""
     if spec is None:
         return range(total)
     if isinstance(spec, range):
@@ -48,7 +50,7 @@ def pick_frames(spec: str | range | None, total: int) -> range:
             start = int(start_text) if start_text.strip() else 0
             stop = int(stop_text) if stop_text.strip() else total
             if not colon:
-                stop = start + 1
+                stop = (start + 1) or total  # "-1": the last frame, not the empty slice [-1:0]
         except ValueError:
             raise OptionError(f"frames {text!r}: expected A:B with whole numbers") from None
         picked = range(total)[start:stop]
@@ -57,9 +59,15 @@ def pick_frames(spec: str | range | None, total: int) -> range:
     return picked
 
 
-def tracks_of(scene: Scene) -> tuple[Track, ...]:
-    return tuple(build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
-                 for shape in scene.shapes)
+def stacking_of(scene: Scene, tracks: Sequence[Track]) -> tuple[Switch, ...]:
+    """Where the paint order of ``scene``'s drawings switches between keys (:mod:`..core.stacking`)."""
+    if not layered(scene.shapes):
+        return ()
+
+    def shapes_at(index: int, times: NDArray[np.float64]) -> list[ShapeAt]:
+        return tracks[index].at(times, scene.method_of(scene.shapes[index]))
+
+    return stacking_plan(scene.shapes, shapes_at)
 
 
 def scene_view(scene: Scene, tracks: Sequence[Track], methods: Sequence[str | None]) -> Box:
@@ -90,7 +98,7 @@ class RenderJob:
     fps: float | None = None
     frames: range | None = None  # default every frame
     paths: bool = False  # every vertex's path and the keys, behind the shapes
-    onion: int = 0  # ghosted inbetweens before and after the frame (see render.overlays)
+    onion: int = 0  # ghosted inbetweens before and after the frame (see raster.overlays)
     strip: bool = False  # the perimeter-ratio strip along each panel's bottom
 
     @property
@@ -118,6 +126,7 @@ class Frames:
     job: RenderJob
     layout: str = "rgba"  # "bgra": the surface's own premultiplied pixels (opaque backgrounds only)
     _tracks: tuple[Track, ...] | None = field(default=None, init=False, repr=False)
+    _stacking: tuple[Switch, ...] | None = field(default=None, init=False, repr=False)
     _composer: Composer | None = field(default=None, init=False, repr=False)
     _blocks: dict[str | None, tuple[int, list[list[ShapeAt]]]] = field(default_factory=dict, init=False,
                                                                        repr=False)
@@ -127,6 +136,17 @@ class Frames:
         if self._tracks is None:
             self._tracks = tracks_of(self.job.scene)
         return self._tracks
+
+    @property
+    def stacking(self) -> tuple[Switch, ...]:
+        """Where the paint order switches between keys (each shape under its own method)."""
+        if self._stacking is None:
+            self._stacking = stacking_of(self.job.scene, self.tracks)
+        return self._stacking
+
+    def order_at(self, time: float) -> tuple[int, ...]:
+        """The shapes' paint order at ``time`` seconds (indices into the scene's shapes)."""
+        return order_at(self.stacking, self.job.scene.shapes, time)
 
     def shapes_at(self, method: str | None, time: float) -> list[ShapeAt]:
         """Every shape as it is at ``time`` seconds under ``method`` (``None``: the shape's own)."""
@@ -157,6 +177,8 @@ class Frames:
             width, height = job.panel_size
             view = scene_view(job.scene, self.tracks, job.methods)
             self._composer = Composer(job.scene, labels, width, height, view)
+            if layered(job.scene.shapes):
+                self._composer.stacking = self.order_at
             if job.paths or job.onion or job.strip:
                 from ..raster.overlays import PanelOverlays, above_strip
 

@@ -14,24 +14,24 @@ whose message is the line the command line prints.
 
 from __future__ import annotations
 
+import math
 import os
 from collections import OrderedDict
 from dataclasses import replace
 from pathlib import Path
-from typing import Iterator, Sequence
+from numbers import Real
+from typing import Any, Iterator, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import OptionError
-from ..model import BALANCES, EQUAL_COUNTS, METHODS, Color, Points, Scene
-from .job import Frames, Progress, RenderJob, pick_frames, total_frames
+from ..model import BALANCES, EQUAL_COUNTS, Color, DrawnContour, Points, Scene
+from .job import Frames, RenderJob, pick_frames, total_frames
+from .options import RenderOptions, canvas_limit, check_choice, check_color, check_fps, check_method, check_size
 
-__all__ = ["load_scene", "frame", "frames", "outlines", "write", "output_format", "with_matching",
-           "with_balance", "CANVAS_LIMIT"]
-
-CANVAS_LIMIT = 16384
-"""The largest frame side, in pixels (a comparison's panels together)."""
+__all__ = ["load_scene", "frame", "frames", "outlines", "contours", "write", "render_job", "output_format", "with_matching",
+           "with_balance"]
 
 _CACHE_SIZE = 4
 # Frames objects of recent (scene, method, size, background) calls: building one costs the
@@ -40,15 +40,43 @@ _recent: OrderedDict[tuple[int, str | None, tuple[int, int] | None, Color | None
     OrderedDict()
 
 
-def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0) -> Scene:
+def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0,
+               ease: str = "linear", hold: float = 0.0, stagger: float = 0.0) -> Scene:
     """The scene at ``path`` (TOML; JSON by its ``.json`` suffix; one SVG drawing by ``.svg``), validated;
-    or, for a list of SVG files, their drawings morphing one into the next every ``step`` seconds
-    (what ``tweenrender render a.svg b.svg`` renders)."""
+    or, for a list of SVG files, their drawings morphing one into the next (what ``tweenrender render
+    a.svg b.svg`` renders): each shown ``hold`` seconds, then moving for ``step`` seconds under ``ease``,
+    element i of a drawing starting ``i × stagger`` seconds later and arriving on time."""
     from ..scenefile import load_scene as load
 
     if isinstance(path, (str, os.PathLike)):
-        return load(Path(path), step)
-    return load([Path(p) for p in path], step)
+        given = [n for n, v, d in (("ease", ease, "linear"), ("hold", hold, 0.0), ("stagger", stagger, 0.0)) if v != d]
+        if given and Path(path).suffix.lower() != ".svg":
+            raise OptionError("applies to SVG drawings morphing into each other; a scene file sets ease and "
+                              "stagger itself", given[0])
+        _check_timing(ease, hold, stagger)
+        return load(Path(path), step, ease, float(hold), float(stagger))
+    if isinstance(path, (bytes, bytearray)) or not isinstance(path, Sequence) or \
+            not all(isinstance(p, (str, os.PathLike)) for p in path):
+        raise OptionError(f"path: expected a scene file's name or a list of SVG files, found {path!r}")
+    if isinstance(step, bool) or not isinstance(step, Real):
+        raise OptionError(f"expected seconds between drawings as a number, found {step!r}", "step")
+    _check_timing(ease, hold, stagger)
+    return load([Path(p) for p in path], float(step), ease, float(hold), float(stagger))
+
+
+def _check_timing(ease: object, hold: object, stagger: object) -> None:
+    """Refuse a timing of drawings that is not one: an unknown curve, a negative or non-numeric hold."""
+    from ..core.easing import parse_easing
+
+    if not isinstance(ease, str):
+        raise OptionError(f"expected an easing name or curve, found {ease!r}", "ease")
+    try:
+        parse_easing(ease)
+    except ValueError as error:
+        raise OptionError(str(error), "ease") from None
+    for name, value in (("hold", hold), ("stagger", stagger)):
+        if isinstance(value, bool) or not isinstance(value, Real) or not 0 <= float(value) <= 1e6:
+            raise OptionError(f"expected seconds from 0 to 1000000, found {value!r}", name)
 
 
 def frame(scene: Scene, time: float, *, method: str | None = None, size: tuple[int, int] | None = None,
@@ -67,8 +95,10 @@ def frames(scene: Scene, *, method: str | None = None, size: tuple[int, int] | N
            background: str | Color | None = None, fps: float | None = None) -> Iterator[NDArray[np.uint8]]:
     """Every frame of the clip at ``fps`` (default the scene's), frame ``f`` at ``f / fps`` seconds:
     ``round(last time · fps) + 1`` fresh ``(height, width, 4)`` uint8 arrays, straight RGBA."""
-    rate = _fps(fps, scene)
-    job = _job(scene, method, size, background, fps=rate)
+    scene = _scene(scene)
+    rate = scene.fps if fps is None else check_fps(fps)
+    job = _job(scene, None if method is None else check_method(method), None if size is None else check_size(size),
+               None if background is None else check_color(background), fps=rate)
     drawer = Frames(job)
     for index in job.frame_range:
         yield drawer(index).copy()
@@ -80,94 +110,141 @@ def outlines(scene: Scene, time: float, *, method: str | None = None) -> list[Po
     in order, at the balanced vertex count. A closed contour does not repeat its first point; an
     open one is not closed. Shapes not drawn at that time (before they appear, after they go,
     fully transparent) are left out; contours that are growing or shrinking are in while they have size."""
+    return [drawn.points for drawn in contours(scene, time, method=method)]
+
+
+def contours(scene: Scene, time: float, method: str | None = None) -> list[DrawnContour]:
+    """Every drawn contour at ``time`` seconds as :class:`~tweenrender.model.DrawnContour` s, in the
+    order of :func:`outlines`: which are open strokes, which holes, their element and paint."""
+    from ..core.contours import roles
+    from ..raster.view import Viewport
+
     drawer = _frames_for(scene, method, None, None)
+    at_time = _finite_time(time)
+    shapes = drawer.shapes_at(method, at_time)
+    pixel = 1.0
+    if any(not shape.stroke_scales and shape.paint.stroke is not None for shape in scene.shapes):
+        from .job import scene_view
+
+        pixel = 1.0 / Viewport(scene_view(scene, drawer.tracks, (method,)), *scene.size).scale
     out = []
-    for at in drawer.shapes_at(method, _finite_time(time)):
+    for index in drawer.order_at(at_time):
+        shape, at = scene.shapes[index], shapes[index]
         if not at.visible:
             continue
-        out += [np.array(c, dtype=np.float64) for c in at.contours if np.ptp(c, axis=0).max(initial=0.0) > 0]
+        key = at.key
+        rule = (key.fill_rule if key is not None else None) or shape.fill_rule
+        paint = at.paint
+        width = paint.stroke_width * (1.0 if shape.stroke_scales else pixel)
+        kinds = roles(list(at.contours), list(at.closed))
+        for i, points in enumerate(at.contours):
+            if np.ptp(points, axis=0).max(initial=0.0) <= 0:
+                continue
+            out.append(DrawnContour(np.array(points, dtype=np.float64), at.closed[i], kinds[i] == "hole", shape.name,
+                                    rule, _unit(paint.fill), _unit(paint.stroke), float(width), float(paint.opacity),
+                                    bool(at.reversed and at.reversed[i]), paint.gradient))
     return out
 
 
-def write(scene: Scene, path: str | os.PathLike[str], *, method: str | None = None,
-          compare: Sequence[str] | bool | None = None, format: str | None = None,
-          size: tuple[int, int] | None = None, fps: float | None = None, frames: str | range | None = None,
-          background: str | Color | None = None, balance: str | None = None, paths: bool = False,
-          onion: int = 0, strip: bool = False, cost: str | None = None, align: str | None = None,
-          equal_counts: str | None = None, workers: int | None = None, cluster: str | None = None,
-          progress: Progress | None = None) -> Path:
+def _unit(color: Color | None) -> tuple[float, float, float, float] | None:
+    return None if color is None else tuple(c / 255.0 for c in color)  # type: ignore[return-value]
+
+
+def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions | None = None,
+          **named: Any) -> Path:
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
-    The format is ``format`` or ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name
-    without one is a folder of PNG frames). ``background`` overrides the scene's (``"none"``:
-    transparent, kept by WebM, MOV, GIF and PNG; refused for MP4). ``compare`` lists the methods of side-by-side labelled panels
-    (``True``: the scene's ``compare`` list); ``size`` is each panel's. ``frames`` picks part of the
-    clip (``"A:B"`` or a ``range``). ``cost``, ``align`` and ``equal_counts`` override the scene's
-    ``[correspondence]``; ``balance`` (``"copies"`` or ``"spread"``) overrides every shape's.
-    ``workers`` is the number of drawing processes (default: chosen from the measured cost of a
-    frame against the encoder's). ``cluster`` renders on a dask.distributed cluster instead: a
-    scheduler's address, or ``"local:N"`` for a local cluster of N processes (needs the ``cluster``
-    extra). ``progress`` is called with ``(done, total)`` frames. The target changes only when the
-    whole output was written and checked.
+    Options come by their long names (``method, compare, format, size, fps, frames, background, balance,
+    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress, max_error``; see
+    :class:`~.options.RenderOptions`) or as one ``options`` object. The format is ``format`` or
+    ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name without one is a folder of PNG
+    frames). ``background`` overrides the scene's (``"none"``: transparent, kept by every format but MP4).
+    ``compare`` lists the methods of side-by-side labelled panels (``True``: the scene's ``compare``
+    list); ``size`` is each panel's. ``frames`` picks part of the clip (``"A:B"`` or a ``range``).
+    ``cost``, ``align`` and ``equal_counts`` override the scene's ``[correspondence]``; ``balance``
+    (``"copies"`` or ``"spread"``) overrides every shape's. ``workers`` is the number of drawing
+    processes (default: chosen from the measured cost of a frame against the encoder's). ``cluster``
+    renders on a dask.distributed cluster instead: a scheduler's address, or ``"local:N"`` (needs the
+    ``cluster`` extra). ``progress`` is called with ``(done, total)`` frames. The target changes only
+    when the whole output was written and checked.
+
+    ``.json`` (format ``lottie``) writes Lottie, ``.svg`` (``svg``) an animated SVG: the paths themselves,
+    keyframed within ``max_error`` output pixels (default 0.25) of every frame; they take no ``compare``,
+    ``paths``, ``onion``, ``strip``, ``workers`` or ``cluster``.
     """
-    from ..encode.limits import check_frame_size
+    from ..encode.formats import TABLE, check_alpha, check_frame_size
     from ..encode.targets import check_frames_folder, check_output_name
     from .chunks import render_in_processes
     from .workers import default_workers
 
-    if method is not None and compare not in (None, False):
-        raise OptionError("method and compare do not go together: list the methods in compare")
+    scene = _scene(scene)
+    if options is not None and named:
+        raise OptionError(f"give the options either as options= or by name, not both ({', '.join(named)})")
+    opts = options if isinstance(options, RenderOptions) else RenderOptions.create(**named)
+    if path is None or not isinstance(path, (str, os.PathLike)):
+        raise OptionError(f"path: expected a file or folder name, found {path!r}")
     target = check_output_name(path)
-    fmt = output_format(target, format)
-    _not_the_scene(target, scene)
-    if fmt == "png":
+    fmt = output_format(target, opts.format)
+    _not_an_input(target, scene)
+    if TABLE[fmt].folder:
         check_frames_folder(target)
-    scene = with_balance(with_matching(scene, cost, align, equal_counts), balance)
-    panels: tuple[str | None, ...]
-    if compare is True:
-        panels = scene.compare
-    elif compare:
-        panels = tuple(_method(m) for m in compare)
-    else:
-        panels = (_method(method),)
-    rate = _fps(fps, scene)
-    picked = pick_frames(frames, total_frames(scene, rate))
-    job = _job(scene, None, size, background, fps=rate, panels=panels, labels=bool(compare), frames=picked,
-               paths=paths, onion=onion, strip=strip)
-    from ..encode.sinks import check_alpha
+    if TABLE[fmt].vector:
+        from .vector_export import refuse_raster_options
 
+        refuse_raster_options(fmt, opts)
+    elif opts.max_error is not None:
+        raise OptionError(f"applies to the vector formats (lottie, svg) only, not {fmt}", "max_error")
+    job = render_job(scene, opts)
+    if len(job.frame_range) > opts.max_frames:
+        raise OptionError(f"{len(job.frame_range)} frames is more than {opts.max_frames}; "
+                          "raise it to render them anyway", "max_frames")
+    if TABLE[fmt].vector:
+        from .vector_export import write_vector
+
+        return write_vector(job, fmt, target, opts.max_error)
     check_alpha(fmt, job.scene.background[3] < 255)
     check_frame_size(fmt, *job.frame_size)  # before drawing a frame or starting ffmpeg
-    if cluster is not None:
-        if workers is not None:
-            raise OptionError("workers and cluster do not go together: the cluster's workers draw the frames")
+    if opts.cluster is not None:
         from .cluster import render_on_cluster
 
-        return render_on_cluster(job, fmt, target, cluster, progress)
-    if workers is None:
-        workers = default_workers(job, fmt)
-    elif workers < 1:
-        raise OptionError(f"workers: expected 1 or more processes, found {workers}")
-    return render_in_processes(job, fmt, target, workers, progress)
+        return render_on_cluster(job, fmt, target, opts.cluster, opts.progress)
+    workers = opts.workers or default_workers(job, fmt)
+    return render_in_processes(job, fmt, target, workers, opts.progress)
+
+
+def render_job(scene: Scene, options: RenderOptions) -> RenderJob:
+    """The job ``write`` renders: the scene with the options' matching and balance put over its own,
+    the panels, size, rate, frames and overlays."""
+    scene = with_balance(with_matching(scene, options.cost, options.align, options.equal_counts), options.balance)
+    panels: tuple[str | None, ...]
+    if options.compare is True:
+        panels = scene.compare
+    elif options.compare:
+        panels = tuple(options.compare)
+    else:
+        panels = (options.method,)
+    rate = options.fps or scene.fps
+    picked = pick_frames(options.frames, total_frames(scene, rate))
+    return _job(scene, None, options.size, options.background, fps=rate, panels=panels,
+                labels=bool(options.compare), frames=picked, paths=options.paths, onion=options.onion,
+                strip=options.strip)
 
 
 def output_format(target: Path, fmt: str | None = None) -> str:
     """The format to write ``target`` in: ``fmt``, else its extension; a name without one is PNG frames."""
-    from ..encode import FORMATS
+    from ..encode.formats import FORMATS, TABLE, by_suffix, lookup
 
-    suffix = target.suffix.lower().lstrip(".")
+    suffix = target.suffix.lower()
+    named = by_suffix(suffix)
     if fmt is not None:
-        if fmt not in FORMATS:
-            raise OptionError(f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
-        if suffix in FORMATS and suffix != fmt and fmt != "png":
-            raise OptionError(f"{target} ends in .{suffix} but the format asked for is {fmt}")
+        wanted = lookup(fmt)
+        if named is not None and not named.folder and named is not wanted and not wanted.folder:
+            raise OptionError(f"{target} ends in {suffix} but the format asked for is {fmt}", "format")
         return fmt
-    if suffix in FORMATS and suffix != "png":
-        return suffix
-    if suffix == "":
-        return "png"
-    videos = ", ".join(f".{f}" for f in FORMATS if f != "png")
-    raise OptionError(f"{target}: cannot tell the format from .{suffix}; expected a name ending in {videos}, "
+    if named is not None:
+        return named.name
+    files = ", ".join(TABLE[f].suffix for f in FORMATS if not TABLE[f].folder)
+    raise OptionError(f"{target}: cannot tell the format from {suffix}; expected a name ending in {files}, "
                       "or one without extension for a folder of PNG frames")
 
 
@@ -177,89 +254,51 @@ def output_format(target: Path, fmt: str | None = None) -> str:
 def _frames_for(scene: Scene, method: str | None, size: tuple[int, int] | None,
                 background: str | Color | None) -> Frames:
     """A :class:`Frames` for one panel, reused across calls with the same arguments."""
-    color = None if background is None else _color(background)
-    key = (id(scene), _method(method), None if size is None else tuple(size), color)
+    scene = _scene(scene)
+    method = None if method is None else check_method(method)
+    size = None if size is None else check_size(size)
+    color = None if background is None else check_color(background)
+    key = (id(scene), method, size, color)
     found = _recent.get(key)
     if found is not None and found[0] is scene:
         _recent.move_to_end(key)
         return found[1]
-    drawer = Frames(_job(scene, method, size, background))
+    drawer = Frames(_job(scene, method, size, color))
     _recent[key] = (scene, drawer)  # the scene is held too, so its id cannot be reused meanwhile
     while len(_recent) > _CACHE_SIZE:
         _recent.popitem(last=False)
     return drawer
 
 
-def _job(scene: Scene, method: str | None, size: tuple[int, int] | None, background: str | Color | None,
+def _job(scene: Scene, method: str | None, size: tuple[int, int] | None, background: Color | None,
          panels: tuple[str | None, ...] | None = None, **options: object) -> RenderJob:
     if background is not None:
-        scene = replace(scene, background=_color(background))
+        scene = replace(scene, background=background)
     if panels is None:
-        panels = (_method(method),)
-    width, height = _size(size, scene)
-    if width * len(panels) > CANVAS_LIMIT:
+        panels = (method,)
+    width, height = scene.size if size is None else size
+    limit = canvas_limit()
+    if width * len(panels) > limit:
         raise OptionError(f"{len(panels)} panels of {width} px make a {width * len(panels)} px wide frame, "
-                          f"more than {CANVAS_LIMIT}")
+                          f"more than {limit}", "size")
     return RenderJob(scene, panels, size=(width, height), **options)  # type: ignore[arg-type]
 
 
-def _method(name: str | None) -> str | None:
-    if name is None or name in METHODS:
-        return name
-    import difflib
-
-    close = difflib.get_close_matches(str(name), METHODS, n=1)
-    hint = f" (did you mean {close[0]!r}?)" if close else ""
-    raise OptionError(f"unknown method {name!r}{hint}; expected one of {', '.join(METHODS)}")
+def _scene(scene: object) -> Scene:
+    if not isinstance(scene, Scene):
+        raise OptionError(f"scene: expected a scene from load_scene(), found {type(scene).__name__}")
+    return scene
 
 
-def _size(size: tuple[int, int] | None, scene: Scene) -> tuple[int, int]:
-    if size is None:
-        return scene.size
-    try:
-        width, height = (int(v) for v in size)
-    except (TypeError, ValueError):
-        raise OptionError(f"size: expected (width, height) in pixels, found {size!r}") from None
-    if not (1 <= width <= CANVAS_LIMIT and 1 <= height <= CANVAS_LIMIT):
-        raise OptionError(f"size: expected (width, height) from 1 to {CANVAS_LIMIT} pixels each, "
-                          f"found {width}x{height}")
-    return width, height
-
-
-def _fps(fps: float | None, scene: Scene) -> float:
-    if fps is None:
-        return scene.fps
-    from ..scenefile import LIMITS
-
-    low, high = LIMITS["fps"]
-    if not (isinstance(fps, (int, float)) and low <= fps <= high):
-        raise OptionError(f"fps: expected {low} to {high} frames per second, found {fps!r}")
-    return float(fps)
-
-
-def _color(value: str | Color) -> Color:
-    from ..scenefile import parse_color
-
-    if isinstance(value, str):
-        if value.strip().lower() == "none":
-            return (0, 0, 0, 0)
-        return parse_color(value, lambda message: OptionError(f"background: {message}"))
-    try:
-        r, g, b, a = (int(v) for v in value)
-    except (TypeError, ValueError):
-        raise OptionError(f"background: expected a colour text or an (r, g, b, a) tuple, found {value!r}") from None
-    if not all(0 <= v <= 255 for v in (r, g, b, a)):
-        raise OptionError(f"background: expected (r, g, b, a) from 0 to 255 each, found {value!r}")
-    return (r, g, b, a)
-
-
-def _finite_time(time: float) -> float:
+def _finite_time(time: object) -> float:
+    if isinstance(time, bool) or not isinstance(time, Real):
+        raise OptionError(f"expected seconds as a number, found {time!r}", "time")
     try:
         value = float(time)
-    except (TypeError, ValueError):
-        raise OptionError(f"time: expected seconds as a number, found {time!r}") from None
-    if not np.isfinite(value):
-        raise OptionError(f"time: expected a finite number of seconds, found {time!r}")
+    except OverflowError:
+        value = math.inf
+    if not math.isfinite(value):
+        raise OptionError(f"expected a finite number of seconds, found {time!r}", "time")
     return value
 
 
@@ -271,11 +310,8 @@ def with_matching(scene: Scene, cost: str | None = None, align: str | None = Non
     changes = {}
     for name, value, choices in (("cost", cost, COSTS), ("align", align, ALIGNS),
                                  ("equal_counts", equal_counts, EQUAL_COUNTS)):
-        if value is None:
-            continue
-        if value not in choices:
-            raise OptionError(f"{name}: expected one of {', '.join(choices)}, found {value!r}")
-        changes[name] = value
+        if value is not None:
+            changes[name] = check_choice(value, choices, name)
     return replace(scene, matching=replace(scene.matching, **changes)) if changes else scene
 
 
@@ -283,18 +319,18 @@ def with_balance(scene: Scene, balance: str | None) -> Scene:
     """``scene`` with every shape balanced by ``balance`` (``"copies"`` or ``"spread"``; None: as it is)."""
     if balance is None:
         return scene
-    if balance not in BALANCES:
-        raise OptionError(f"balance: expected one of {', '.join(BALANCES)}, found {balance!r}")
+    balance = check_choice(balance, BALANCES, "balance")
     return replace(scene, balance=balance, shapes=tuple(replace(shape, balance=None) for shape in scene.shapes))
 
 
-def _not_the_scene(target: Path, scene: Scene) -> None:
-    """Refuse to write over the scene file itself."""
-    if scene.path is None:
-        return
-    try:
-        same = os.path.samefile(target, scene.path)
-    except OSError:  # either does not exist (yet): they cannot be the same file
-        return
-    if same:
-        raise OptionError(f"{target}: is the scene file itself; choose another output")
+def _not_an_input(target: Path, scene: Scene) -> None:
+    """Refuse to write over a file the scene was read from."""
+    for source in scene.sources or ((scene.path,) if scene.path else ()):
+        try:
+            same = os.path.samefile(target, source)
+        except OSError:  # either does not exist (yet): they cannot be the same file
+            continue
+        if same and source == scene.path and source.suffix.lower() != ".svg":
+            raise OptionError(f"{target}: is the scene file itself; choose another output")
+        if same:
+            raise OptionError(f"{target}: is an input of the scene ({source}); choose another output")

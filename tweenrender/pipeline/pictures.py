@@ -16,8 +16,9 @@ def write_sheet(scene: Scene, tracks: Sequence[Track], methods: Sequence[str], v
                 count: int = 7, size: tuple[int, int] | None = None, paths: bool = False) -> Path:
     """Draw the sheet and write it to ``target`` (a temporary sibling, then ``os.replace``)."""
     from ..encode.images import write_png
-    from ..raster.plots.storyboard import draw_sheet, sheet_layout
+    from ..raster.plots.storyboard import draw_sheet, is_drawing, sheet_layout
 
-    picture = draw_sheet(scene, tracks, methods, view, sheet_layout(view, len(methods), size), count, paths)
+    cells = count + 2 if is_drawing(scene) else 1  # a drawing's sheet is a filmstrip: keys and inbetweens
+    picture = draw_sheet(scene, tracks, methods, view, sheet_layout(view, len(methods), size, cells), count, paths)
     return write_png(picture, target, "the sheet")
 

@@ -28,6 +28,7 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     (:func:`.chunks.render_in_processes` renders a video in chunks instead.)
     """
     from ..encode import open_sink
+    from ..encode.formats import TABLE
     from ..encode.sinks import png_bytes
 
     indices = job.frame_range
@@ -36,10 +37,11 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     # Over an opaque background premultiplied pixels are straight ones: a video
     # sink can take skia's own BGRA surface without a copy (MP4 and WebM turn it
     # into yuv420p planes, encode.yuv420; the other formats send it as it is).
-    layout = "bgra" if here and fmt != "png" and job.scene.background[3] == 255 else "rgba"
+    folder = TABLE[fmt].folder
+    layout = "bgra" if here and not folder and job.scene.background[3] == 255 else "rgba"
     sink = open_sink(fmt, target, width, height, job.rate, len(indices), pixel_format=layout,
                      alpha=job.scene.background[3] < 255)
-    elsewhere = fmt == "png" and not here
+    elsewhere = folder and not here
     stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None, layout=layout)
     write = sink.write_encoded if elsewhere else sink.write  # type: ignore[attr-defined]
     try:

@@ -22,11 +22,12 @@ from typing import Any, Callable, Iterator, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from ..encode.formats import TABLE
 from ..errors import RenderError
 from .job import Frames, RenderJob
 
 __all__ = ["frame_stream", "draw_frame", "default_workers", "split_range", "Cost", "measure_cost",
-           "predicted_seconds", "choose_workers"]
+           "predicted_seconds", "choose_workers", "tree_mib", "memory_budget_mib"]
 
 # Below about this many pixels per clip, starting worker processes (≈0.3 s
 # each, importing skia) costs more than the work they would share.
@@ -44,14 +45,21 @@ def draw_frame(frames: Frames, index: int) -> NDArray[np.uint8]:
         raise RenderError(f"frame {index}: {error}") from error
 
 
-# The encoder's CPU seconds per megapixel of frame: the bundled ffmpeg with this package's settings,
-# measured on a 2-core Xeon (benchmarks/bench_render.py). Drawing is timed on the machine at hand;
-# these put the encoder on the other side of the balance.
-_ENCODER_SECONDS_PER_MEGAPIXEL = {"mp4": 0.052, "webm": 0.114, "gif": 0.049}
 _CONTENTION = 1.25  # a lone drawing process, sharing the cores with the encoder's threads, draws this much slower
 _START_SECONDS = 0.5  # one more worker process: starting Python, importing skia, building the job's frames
 _TRANSFER_SECONDS_PER_BYTE = 4e-9  # a raw frame pickled back from a worker process
 _GAIN = 0.9  # more processes only when they are predicted to take at most this share of one's time
+
+# Peak memory of the process tree (resident, every process), measured with benchmarks/bench_render.py
+# on the busy scene: one process and its encoder 335 MiB at 1080p, 892 MiB at 4K; two chunks 625 and
+# 1594 MiB. Each chunk (a drawing process with an encoder of its own) thus holds about 132 MiB plus
+# 78 MiB a megapixel of frame; the command's own process, idle meanwhile, about 40 MiB.
+_PROCESS_MIB = 132.0
+_ENCODER_MIB_PER_MEGAPIXEL = 78.0
+_IDLE_PARENT_MIB = 40.0
+_BUDGET_MIB = 400.0  # the most the whole tree may hold at 1080p ...
+_BUDGET_MIB_PER_MEGAPIXEL = 100.0  # ... and this much more a megapixel above it (about 1 GiB at 4K)
+_BUDGET_BASE_PIXELS = 1920 * 1080
 
 
 @dataclass(frozen=True)
@@ -64,52 +72,80 @@ class Cost:
 
 
 def measure_cost(job: RenderJob, fmt: str) -> Cost:
-    """Time drawing one frame of ``job`` (its middle one, drawn twice, the second timed: the first
-    builds the job's tracks and surface) and estimate the encoder's share for ``fmt``."""
+    """Time drawing frames of ``job`` in CPU seconds (three from its middle: the first builds the job's
+    tracks and surface, the other two are timed) and the encoder on those three frames (its CPU time, start
+    included, see :mod:`..encode.encoder_cost`; PNG compression timed for PNG frames)."""
     import time
 
     from ..encode.sinks import png_bytes
 
     frames = Frames(job)
-    middle = job.frame_range[len(job.frame_range) // 2]
-    draw_frame(frames, middle)
-    start = time.perf_counter()
-    picture = draw_frame(frames, middle)
-    draw = time.perf_counter() - start
-    if fmt == "png":
-        start = time.perf_counter()
-        png_bytes(picture)
-        return Cost(draw, time.perf_counter() - start)
-    width, height = job.frame_size
-    return Cost(draw, _ENCODER_SECONDS_PER_MEGAPIXEL.get(fmt, 0.05) * width * height / 1e6)
+    indices = job.frame_range
+    middle = len(indices) // 2
+    picked = [indices[min(middle + k, len(indices) - 1)] for k in range(3)]
+    pictures = [draw_frame(frames, picked[0]).copy()]
+    start = time.process_time()  # CPU seconds, as the encoder's are: other load on the machine stretches neither
+    for index in picked[1:]:
+        pictures.append(draw_frame(frames, index).copy())
+    draw = (time.process_time() - start) / (len(picked) - 1)
+    if TABLE[fmt].folder:  # compressed where it is drawn: timed here
+        start = time.process_time()
+        png_bytes(pictures[-1])
+        return Cost(draw, time.process_time() - start)
+    from ..encode.encoder_cost import encoder_seconds
+
+    return Cost(draw, encoder_seconds(fmt, pictures, job.rate, alpha=job.scene.background[3] < 255))
 
 
 def predicted_seconds(cost: Cost, fmt: str, frames: int, frame_bytes: int, processes: int, cpus: int) -> float:
     """Predicted wall time of rendering ``frames`` frames with ``processes`` drawing processes on ``cpus`` cores.
 
-    PNG: each process draws and compresses, so the work divides among the
-    processes (up to the cores). Video: one process draws while the encoder
+    PNG frames: each process draws and compresses, so the work divides among
+    the processes (up to the cores). Video: one process draws while the encoder
     runs, so a frame takes the longer of drawing it (slowed by sharing the
     cores) and the cores' time for all the work; more processes divide the
-    drawing (MP4 and WebM as chunks with encoders of their own, a GIF as
-    frames sent back to its one encoder, which costs a copy each).
+    drawing (a chunked format as chunks with encoders of their own, any other
+    as frames sent back to its one encoder, which costs a copy each).
     """
     start = _START_SECONDS * processes if processes > 1 else 0.0
-    if fmt == "png":
+    if TABLE[fmt].folder:
         return frames * (cost.draw + cost.encode) / min(processes, cpus) + start
     shared = cost.draw + cost.encode
-    if processes > 1 and fmt == "gif":
+    if processes > 1 and not TABLE[fmt].chunked:
         shared += _TRANSFER_SECONDS_PER_BYTE * frame_bytes
     per_frame = max(cost.draw * _CONTENTION / processes, shared / cpus)
     return frames * per_frame + start
 
 
+def tree_mib(fmt: str, pixels: int, processes: int) -> float:
+    """Predicted peak memory (MiB) of the whole process tree drawing ``pixels``-pixel frames for ``fmt``
+    with ``processes`` > 1 drawing processes: MP4 and WebM as chunks, each process with an encoder of
+    its own; PNG and GIF as frames drawn there and written (or encoded) by the command's process."""
+    megapixels = pixels / 1e6
+    encoder = _ENCODER_MIB_PER_MEGAPIXEL * megapixels
+    if TABLE[fmt].chunked:
+        return _IDLE_PARENT_MIB + processes * (_PROCESS_MIB + encoder)
+    if TABLE[fmt].folder:  # compressed where drawn, written by the command's process
+        return _IDLE_PARENT_MIB + processes * _PROCESS_MIB
+    return _PROCESS_MIB + encoder + processes * _PROCESS_MIB  # one encoder, fed by the command's process
+
+
+def memory_budget_mib(pixels: int) -> float:
+    """The most the process tree may hold for frames of ``pixels`` when more processes are chosen:
+    400 MiB up to 1080p, about 1 GiB at 4K."""
+    return _BUDGET_MIB + _BUDGET_MIB_PER_MEGAPIXEL * max(0.0, pixels - _BUDGET_BASE_PIXELS) / 1e6
+
+
 def choose_workers(cost: Cost, fmt: str, frames: int, frame_bytes: int, cpus: int) -> int:
-    """The number of drawing processes predicted fastest (at most ``cpus`` and 8), or 1 unless more
-    save at least a tenth of the time."""
+    """The number of drawing processes predicted fastest (at most ``cpus`` and 8, and within the
+    memory budget: :func:`tree_mib` ≤ :func:`memory_budget_mib`), or 1 unless more save at least a
+    tenth of the time."""
+    pixels = frame_bytes // 4
     alone = predicted_seconds(cost, fmt, frames, frame_bytes, 1, cpus)
     best, best_seconds = 1, alone
     for processes in range(2, min(cpus, 8) + 1):
+        if tree_mib(fmt, pixels, processes) > memory_budget_mib(pixels):
+            break
         seconds = predicted_seconds(cost, fmt, frames, frame_bytes, processes, cpus)
         if seconds < best_seconds:
             best, best_seconds = processes, seconds
@@ -123,8 +159,9 @@ def default_workers(job: RenderJob, fmt: str, cpus: int | None = None, cost: Cos
     :func:`choose_workers`: an encoder-bound video keeps one process (more
     would only compete with the encoder for the cores), a detailed, stroked
     scene whose drawing is the limit gets more, and PNG frames, compressed
-    where they are drawn, one per core. Clips too short to repay starting
-    processes are not measured.
+    where they are drawn, one per core, as far as the memory budget allows.
+    Clips too short to repay starting processes, and frames too large for a
+    second process to fit the budget, are not measured.
     """
     if cpus is None:
         cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
@@ -132,6 +169,8 @@ def default_workers(job: RenderJob, fmt: str, cpus: int | None = None, cost: Cos
     frames = len(job.frame_range)
     if cpus < 2 or width * height * frames < _MIN_PARALLEL_PIXELS:
         return 1
+    if tree_mib(fmt, width * height, 2) > memory_budget_mib(width * height):
+        return 1  # no second process fits the memory budget: nothing to measure
     cost = cost or measure_cost(job, fmt)
     return choose_workers(cost, fmt, frames, width * height * 4, cpus)
 

@@ -10,7 +10,7 @@ front of them (the strip).
 * onion ``N``: ``N`` inbetweens before and ``N`` after the current frame, every
   :func:`onion_step` frames (a sixth of a second), fading with distance; earlier
   ghosts are outlined warm, later ones cool, like an animator's light table;
-* strip: the scene's perimeter ratio (:func:`tweenrender.core.ratios.perimeter_ratio`)
+* strip: the scene's perimeter ratio (:func:`tweenrender.core.ratios.scene_perimeter_ratio`)
   over the whole clip along the panel's bottom, 1.0 dashed, the current time
   marked and its value printed. Every panel shares one vertical scale.
 """
@@ -23,7 +23,7 @@ import numpy as np
 import skia
 from numpy.typing import NDArray
 
-from ..core.ratios import perimeter_ratio
+from ..core.ratios import scene_perimeter_ratio
 from ..core.timeline import ShapeAt, Track, evaluate_segment, frame_count
 from ..model import Color, Scene
 from .surface import contours_path, paint_color, polygon_path
@@ -133,7 +133,7 @@ class PanelOverlays:
         if strip:
             times = np.arange(frame_count(self.duration, fps)) / fps
             self.strip_times = times
-            self.curves = [perimeter_ratio(self.tracks, m, times) for m in per_shape]
+            self.curves = [scene_perimeter_ratio(self.tracks, m, times) for m in per_shape]
             self.per_shape = per_shape
             low = min(float(np.nanmin(c)) for c in self.curves)
             high = max(float(np.nanmax(c)) for c in self.curves)
@@ -225,7 +225,7 @@ class PanelOverlays:
                           fill_paint(_STRIP_TEXT, 0.6))
         curve = to_xy(self.strip_times, self.curves[panel])
         canvas.drawPath(skia_path([curve], closed=False), stroke_paint(_CURVE, 1.5))
-        now = float(perimeter_ratio(self.tracks, self.per_shape[panel], [time])[0])
+        now = float(scene_perimeter_ratio(self.tracks, self.per_shape[panel], [time])[0])
         x, y = to_xy(np.array([min(time, span)]), np.array([now]))[0]
         canvas.drawLine(x, top + 2, x, bottom - 2, stroke_paint(_NOW, 1.2, 0.8))
         canvas.drawCircle(x, y, max(2.5, size * 0.25), fill_paint(_NOW))

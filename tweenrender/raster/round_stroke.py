@@ -2,9 +2,9 @@
 
 A stroke with round joins (and round caps, or no open ends) is every point within
 half its width of the outline, so each pixel's coverage follows from its
-distance to the nearest segments (see ``_stroke_kernel``): about 30 % less
-time than skia's stroker on a frame of 100 outlines of 500 vertices, and closer
-to the exact area on smooth outlines (``benchmarks/stroke_accuracy.py``). It is
+distance to the nearest segments (see ``_stroke_kernel``): faster than skia's
+stroker on detailed outlines and closer to the exact area on smooth ones
+(``benchmarks/bench_render.py`` and ``benchmarks/stroke_accuracy.py`` measure both). It is
 used only where it can draw what skia would: straight onto the surface's own
 pixels (no layer), under a rectangular clip and a uniform scale with
 translation, in scenes that stroke at least :data:`MIN_SEGMENTS` such segments a
@@ -27,7 +27,7 @@ __all__ = ["MIN_SEGMENTS", "MIN_WIDTH", "worth_compiling", "draws_on", "stroke_c
 
 MIN_SEGMENTS = 20_000
 """Fewest round-stroked segments in a frame of a scene for the compiled stroke to be used: its start-up
-(importing numba and loading the kernel, about 0.4 s and 125 MiB a process) is then repaid within a
+(importing numba and loading the kernel, measured in docs/performance.md) is then repaid within a
 second or two of video."""
 
 MIN_WIDTH = 1.0

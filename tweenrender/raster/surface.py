@@ -177,6 +177,7 @@ class Raster:
                                   StrokeJoin=skia.Paint.kRound_Join, StrokeCap=skia.Paint.kRound_Cap)
         self._restyled = False  # the stroke paint has other caps or joins than round ones
         self._address = self._pixels.ctypes.data
+        self.fill_shader: skia.Shader | None = None  # set while a gradient fills (see raster.gradients)
 
     def clear(self, color: Color) -> None:
         self.canvas.clear(paint_color(color))
@@ -218,8 +219,12 @@ class Raster:
             self._restyled = False
         fill_paint = stroke_paint = None
         if fill is not None:
-            fill_paint = self._fill
-            fill_paint.setColor(paint_color(fill, alpha))
+            if self.fill_shader is not None:  # a gradient: the shader's colours at the fill's opacity
+                fill_paint = skia.Paint(AntiAlias=True, Style=skia.Paint.kFill_Style, Shader=self.fill_shader)
+                fill_paint.setAlphaf(alpha)
+            else:
+                fill_paint = self._fill
+                fill_paint.setColor(paint_color(fill, alpha))
         if stroke is not None:
             stroke_paint = self._stroke
             stroke_paint.setColor(paint_color(stroke, alpha))

@@ -50,6 +50,13 @@ def _key(key: Key, several: bool) -> dict[str, Any]:
     if several:
         out["contours"] = [c.points.tolist() for c in key.contours]
         out["closed"] = [c.closed for c in key.contours]
+    ticks = getattr(key.easing, "ticks", None)
+    if ticks is not None:
+        out["spacing"] = list(ticks)
+    if key.hints:
+        out["hints"] = {h.letter: key.contours[h.contour].points[h.vertex].tolist() for h in key.hints}
+    if key.delay:
+        out["delay"] = key.delay
     out.update(_paint(key.paint))
     if key.hidden:
         out["hidden"] = True

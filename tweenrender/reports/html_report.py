@@ -5,25 +5,30 @@ and every file it shows: one WebM per method, the storyboard sheet, the
 correspondence picture and the metric charts as PNG. Nothing is fetched from
 the network and no script library is used: a few lines of plain JavaScript keep
 the videos on one clock. The folder is built beside the target and moved into
-place whole; it replaces only an earlier report (a folder holding
-:data:`MARKER`), never anything else.
+place whole with a manifest of its files; it replaces only an earlier report whose
+manifest lists every entry, unchanged (:mod:`~tweenrender.encode.manifest`), never
+anything else.
 """
 
 from __future__ import annotations
 
 import html
+import re
 from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
-from ..errors import OptionError
-from ..model import METHODS, Scene
+from ..core.methods import METHODS, measured_methods
+from ..core.stacking import Switch, layered
+from ..errors import OptionError, printable
+from ..model import Scene
 from .stats import crossing_runs
 
-__all__ = ["MARKER", "report_methods", "write_report", "page"]
+__all__ = ["REPORT_FILE", "report_methods", "write_report", "page"]
 
-MARKER = ".tweenrender-report"
-"""The file that marks a folder as a report this module wrote (and so may replace)."""
+REPORT_FILE = re.compile(r"(?:index\.html|sheet\.png|correspondence\.png|metrics\.png|(?:"
+                         + "|".join(re.escape(name) for name in METHODS) + r")\.webm)")
+"""The names of the files a report folder holds: the only names its manifest may list."""
 
 _WIDTH = 384  # pixels of each animation's width (three to a row); the height follows the view
 
@@ -31,16 +36,16 @@ _WIDTH = 384  # pixels of each animation's width (three to a row); the height fo
 def report_methods(scene: Scene) -> tuple[str, ...]:
     """Every method, ``jointed`` only when some shape has joints."""
     jointed = any(shape.joints for shape in scene.shapes)
-    return tuple(m for m in METHODS if m != "jointed" or jointed)
+    return measured_methods(jointed)
 
 
 def _check_target(target: Path) -> None:
+    from ..encode.manifest import frame_names
+    from ..encode.targets import check_own_folder
+
     if target.is_symlink() or (target.exists() and not target.is_dir()):
-        raise OptionError(f"{target}: is not a folder; refusing to replace it with a report")
-    if target.is_dir() and not (target / MARKER).is_file():
-        if any(target.iterdir()):
-            raise OptionError(f"{target}: is a folder that is not a tweenrender report; refusing to replace it "
-                              "(choose another folder)")
+        raise OptionError(f"{printable(str(target))}: is not a folder; refusing to replace it with a report")
+    check_own_folder(target, frame_names(REPORT_FILE), "a report")
 
 
 def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = None,
@@ -48,15 +53,18 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
     """Write the report folder ``target`` for ``methods`` (default :func:`report_methods`); returns
     the path of its ``index.html``. ``progress(name)`` may give a progress callback per video."""
     from ..encode.atomic import commit_folder, discard, prepare_folder, sibling
-    from ..pipeline.job import scene_view, tracks_of
+    from ..encode.manifest import write_manifest
+    from ..pipeline.job import scene_view, stacking_of, tracks_of
     from ..pipeline.library import write
     from ..pipeline.pictures import write_sheet
     from .match_report import correspond_dict, write_match_picture
     from .metric_report import write_metric_plot
     from .stats import stats_dict
 
+    from ..encode.targets import check_output_name
+
     methods = tuple(methods or report_methods(scene))
-    target = Path(target)
+    target = check_output_name(target, "expected a folder's name for the report")
     _check_target(target)
     prepare_folder(target)
     tracks = tracks_of(scene)
@@ -79,8 +87,9 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
         write_match_picture(scene, correspond_dict(scene), folder / "correspondence.png")
         write_metric_plot(scene, methods, folder / "metrics.png")
         stats = stats_dict(scene, [0.25, 0.5, 0.75], methods)
-        (folder / "index.html").write_text(page(scene, videos, stats, (width, height)), encoding="utf-8")
-        (folder / MARKER).write_text("a report written by tweenrender; the folder is replaced whole\n")
+        switches = stacking_of(scene, tracks)
+        (folder / "index.html").write_text(page(scene, videos, stats, (width, height), switches), encoding="utf-8")
+        write_manifest(folder)
     except BaseException:
         discard(folder)
         raise
@@ -125,8 +134,12 @@ if (lead) {
 """
 
 
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
 def _esc(text: Any) -> str:
-    return html.escape(str(text), quote=True)
+    """``text`` for HTML: markup characters escaped, a lone surrogate (which UTF-8 cannot hold) as U+FFFD."""
+    return html.escape(_SURROGATE.sub("\ufffd", str(text)), quote=True)
 
 
 def _crossing_text(at: list[float]) -> str:
@@ -146,7 +159,12 @@ def _table(entry: dict[str, Any]) -> str:
         rows.append(f"<tr><td>{_esc(method)}</td><td>{ratios}</td><td>{areas}</td>"
                     f"<td>{r['edge_error_max']:.4f}</td><td>{r['angle_error_max']:.2f}</td>"
                     f"<td class=\"{'bad' if r['self_intersects'] else ''}\">{_esc(crossing)}</td></tr>")
-    return (f"<h3>{_esc(entry['name'])}, segment {entry['segment']} ({start:g}–{end:g} s): {m} and {n} "
+    where = _esc(entry["name"])
+    if "element" in entry:
+        where = f"element {_esc(entry['element'])}, contour {entry['contour']}"
+    elif "contour" in entry:
+        where += f", contour {entry['contour']}"
+    return (f"<h3>{where}, segment {entry['segment']} ({start:g}–{end:g} s): {m} and {n} "
             f"vertices, {entry['balanced']} after balancing</h3>\n"
             "<table><thead><tr><th>method</th><th>perimeter ratio at t = .25 / .5 / .75</th>"
             "<th>area ratio at t = .25 / .5 / .75</th><th>worst edge error</th>"
@@ -154,9 +172,24 @@ def _table(entry: dict[str, Any]) -> str:
             + "\n".join(rows) + "\n</tbody></table>")
 
 
-def page(scene: Scene, videos: Sequence[tuple[str, str]], stats: dict[str, Any], size: tuple[int, int]) -> str:
+def stacking_words(scene: Scene, switches: Sequence[Switch]) -> list[str]:
+    """One sentence per switch of paint order: when, and which elements change places."""
+    names = [shape.name for shape in scene.shapes]
+    out = []
+    for switch in switches:
+        swapped = ", ".join(f"{names[a]} and {names[b]}" for a, b in switch.pairs[:8])
+        more = f" and {len(switch.pairs) - 8} more pairs" if len(switch.pairs) > 8 else ""
+        out.append(f"Between the keys at {switch.start:g} s and {switch.end:g} s the paint order switches at "
+                   f"{switch.time:.4g} s (t = {round(switch.t * 32)}/32), where the elements that change places "
+                   f"overlap least ({min(switch.areas):.4g} square units): {swapped}{more}.")
+    return out
+
+
+def page(scene: Scene, videos: Sequence[tuple[str, str]], stats: dict[str, Any], size: tuple[int, int],
+         switches: Sequence[Switch] = ()) -> str:
     """The ``index.html`` text: ``videos`` are ``(method, file name)`` pairs; ``stats`` is
-    :func:`~tweenrender.reports.stats.stats_dict` for the same methods."""
+    :func:`~tweenrender.reports.stats.stats_dict` for the same methods; ``switches`` where the paint
+    order of drawings changes (:func:`~tweenrender.pipeline.job.stacking_of`)."""
     from .. import __version__
 
     title = scene.title or (scene.path.stem if scene.path else "scene")
@@ -164,8 +197,12 @@ def page(scene: Scene, videos: Sequence[tuple[str, str]], stats: dict[str, Any],
     figures = "\n".join(
         f'<figure><video src="{_esc(name)}" width="{width}" height="{height}" muted loop autoplay playsinline '
         f'preload="auto"></video><figcaption>{_esc(method)}</figcaption></figure>' for method, name in videos)
-    tables = "\n".join(_table(entry) for entry in stats["shapes"]) or "<p>No shape has two keys: nothing moves.</p>"
+    nothing = stats.get("note", "no shape has two keys: nothing moves")
+    tables = "\n".join(_table(entry) for entry in stats["shapes"]) or f"<p>{_esc(nothing[0].upper() + nothing[1:])}.</p>"
     source = _esc(scene.path) if scene.path else "a scene built in Python"
+    stacking = "".join(f"<p>{_esc(words)}</p>\n" for words in stacking_words(scene, switches))
+    if stacking:
+        stacking = "<h2>Paint order</h2>\n" + stacking
     return f"""<!doctype html>
 <html lang="en">
 <head>
@@ -186,9 +223,10 @@ are taken against the keys' values interpolated at t; errors are the worst over 
 {figures}
 </div>
 <p><button id="playing" type="button">Pause</button></p>
-
+{stacking}
 <h2>Storyboard</h2>
-<p class="note">Keys in bold, inbetweens thin, one row per method.</p>
+<p class="note">{"Keys and inbetweens as drawn, outlines thin, one row per method." if layered(scene.shapes)
+                  else "Keys in bold, inbetweens thin, one row per method."}</p>
 <img src="sheet.png" alt="Storyboard: keys and inbetweens of every method">
 
 <h2>Correspondence</h2>

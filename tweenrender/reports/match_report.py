@@ -16,8 +16,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..core.correspond import correspond, correspond_open, path_work
+from ..core.hints import segment_links
 from ..model import Matching, Scene
-from .segments import entries
+from .segments import entries, nothing_measured
 
 if TYPE_CHECKING:
     from ..raster.plots.match_picture import CPanel
@@ -85,8 +86,16 @@ def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str,
             "pairs": pairs.tolist(),
             **extra,
         })
-    return {"scene": str(scene.path) if scene.path else None, "cost": matching.cost,
-            "align": matching.align, "equal_counts": matching.equal_counts, "shapes": shapes}
+        hints = [{"letter": link.letter, "a": link.a[1], "b": link.b[1]}
+                 for link in segment_links(entry.shape.keys[index].hints, entry.shape.keys[index + 1].hints)
+                 if (link.a[0], link.b[0]) == (i, j)]
+        if hints:
+            shapes[-1]["hints"] = hints
+    out = {"scene": str(scene.path) if scene.path else None, "cost": matching.cost,
+           "align": matching.align, "equal_counts": matching.equal_counts, "shapes": shapes}
+    if not shapes:
+        out["note"] = nothing_measured(scene, closed_only=False)
+    return out
 
 
 def matching_words(cost: str, align: str) -> str:
@@ -125,7 +134,7 @@ def correspond_text(report: dict[str, Any]) -> str:
     lines = [f"{report['scene']}"]
     lines += [entry_line(entry) for entry in report["shapes"]]
     if not report["shapes"]:
-        lines.append("no shape has two keys: nothing to put in correspondence")
+        lines.append(report.get("note", "no shape has two keys: nothing to put in correspondence"))
     return "\n".join(lines)
 
 
@@ -151,7 +160,10 @@ def report_panels(scene: Scene, report: dict[str, Any]) -> list[CPanel]:
         i, j = e.get("key_contours", (0, 0))
         a = np.asarray(keys[e["segment"]].contours[i].points)
         b = np.asarray(keys[e["segment"] + 1].contours[j].points)
-        panels.append(_CPanel(title, words, a, b, np.asarray(e["pairs"], dtype=np.intp).reshape(-1, 2)))
+        hints = tuple((h["letter"], h["a"], h["b"]) for h in e.get("hints", ()))
+        if hints:
+            words += f"; hints {', '.join(h[0] for h in hints)} pin their points"
+        panels.append(_CPanel(title, words, a, b, np.asarray(e["pairs"], dtype=np.intp).reshape(-1, 2), hints))
         if "minimal_pairs" in e:
             # Shown beside the drawn order so the two can be compared; rendering keeps the drawn order.
             best = np.asarray(e["minimal_pairs"], dtype=np.intp).reshape(-1, 2)

@@ -8,37 +8,46 @@ from typing import TYPE_CHECKING, Sequence
 import numpy as np
 
 from ..core.measures import SWEEP, curves
-from ..core.timeline import build_track
+from ..core.timeline import pair_paths
 from ..model import Scene
+from .segments import entries
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
 
     from ..raster.plots.metric_plot import MPanel
 
-__all__ = ["metric_panels", "metrics_png", "write_metric_plot"]
+__all__ = ["PANELS", "metric_panels", "metrics_png", "write_metric_plot"]
+
+
+PANELS = 12
+"""At most this many panels (contours) are charted; the stats table lists every one."""
 
 
 def metric_panels(scene: Scene, methods: Sequence[str]) -> list[MPanel]:
-    """One panel per shape segment: each method's measures over :data:`~tweenrender.core.measures.SWEEP`."""
+    """One panel per moving closed contour of a shape segment (a drawing's element and contour), the
+    first :data:`PANELS`: each method's measures over :data:`~tweenrender.core.measures.SWEEP`."""
     from ..raster.plots.metric_plot import MPanel as _MPanel
 
     panels = []
-    for shape in scene.shapes:
-        track = build_track(shape, scene.matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
-        for index, segment in enumerate(track.segments):
-            series, crossing = {}, {}
-            for method in methods:
-                found = curves(segment.k0, segment.k1, method, SWEEP, segment.joints)
-                series[method] = {"perimeter_ratio": found.perimeter_ratio, "area_ratio": found.area_ratio,
-                                  "edge_error": found.edge_error, "angle_error": found.angle_error}
-                crossing[method] = np.array([c is not None for c in found.crossings])
-            m, n = segment.counts
-            panels.append(_MPanel(
-                title=f"{shape.name}, segment {index} ({segment.start:g}–{segment.end:g} s)",
-                subtitle=f"{m} and {n} vertices, {len(segment.k0)} after balancing "
-                         f"({scene.balance_of(shape)}); t within the segment, before easing",
-                t=SWEEP, series=series, crossing=crossing))
+    for entry in entries(scene, closed_only=True):
+        if len(panels) == PANELS:
+            break
+        segment, pair = entry.segment, entry.pair
+        series, crossing = {}, {}
+        for method in methods:
+            drawn = None if entry.contour is None else pair_paths(segment, SWEEP, method)[entry.contour]
+            found = curves(pair.k0, pair.k1, method, SWEEP, segment.joints, drawn)
+            series[method] = {"perimeter_ratio": found.perimeter_ratio, "area_ratio": found.area_ratio,
+                              "edge_error": found.edge_error, "angle_error": found.angle_error}
+            crossing[method] = np.array([c is not None for c in found.crossings])
+        m, n = pair.counts
+        contour = "" if entry.contour is None else f", contour {entry.contour}"
+        panels.append(_MPanel(
+            title=f"{entry.shape.name}{contour}, segment {entry.index} ({segment.start:g}–{segment.end:g} s)",
+            subtitle=f"{m} and {n} vertices, {len(pair.k0)} after balancing "
+                     f"({scene.balance_of(entry.shape)}); t within the segment, before easing",
+            t=SWEEP, series=series, crossing=crossing))
     return panels
 
 

@@ -17,7 +17,7 @@ from ..core.geometry import edge_lengths
 from ..core.joints import bodies
 from ..core.timeline import Pair, Segment
 from ..model import Scene
-from .segments import entries
+from .segments import entries, nothing_measured
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -81,7 +81,10 @@ def qcurves_dict(scene: Scene) -> dict[str, Any]:
     shapes = []
     for entry in entries(scene, closed_only=True):
         shapes.append({**entry.head(), **segment_dict(entry.segment, entry.pair)})
-    return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
+    out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
+    if not shapes:
+        out["note"] = nothing_measured(scene)
+    return out
 
 
 def motion_words(entry: dict[str, Any]) -> str:
@@ -117,7 +120,7 @@ def qcurves_text(report: dict[str, Any]) -> str:
             cells = [r[0].rjust(widths[0])] + [c.ljust(w) for c, w in zip(r[1:], widths[1:])]
             lines.append("  " + "  ".join(cells).rstrip())
     if not report["shapes"]:
-        lines.append("no shape has two keys: nothing moves")
+        lines.append(report.get("note", "no shape has two keys: nothing moves"))
     return "\n".join(lines)
 
 

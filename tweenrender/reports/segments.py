@@ -5,10 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Iterator
 
-from ..core.timeline import Pair, Segment, build_track
+from ..core.timeline import Pair, Segment, tracks_of
 from ..model import Matching, Scene, Shape
 
-__all__ = ["Entry", "entries"]
+__all__ = ["Entry", "entries", "nothing_measured"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -22,10 +22,14 @@ class Entry:
     pair: Pair
 
     def head(self) -> dict[str, object]:
-        """The fields every report entry starts with: name, segment (and contour), times."""
+        """The fields every report entry starts with: name, segment (and contour), times; a drawing's
+        entries also name their ``element`` (the SVG id, else the loader's name) and always a ``contour``."""
         out: dict[str, object] = {"name": self.shape.name, "segment": self.index}
-        if self.contour is not None:
-            out["contour"] = self.contour
+        drawn = any(key.layer is not None for key in self.shape.keys)
+        if drawn:
+            out["element"] = self.shape.name
+        if self.contour is not None or drawn:
+            out["contour"] = self.contour if self.contour is not None else self.pair.source[0]
         out["times"] = [self.segment.start, self.segment.end]
         return out
 
@@ -37,9 +41,7 @@ def entries(scene: Scene, matching: Matching | None = None, closed_only: bool = 
     appears or goes; with ``closed_only`` open strokes too, and contours of fewer than three
     vertices, which have no angles or area.
     """
-    matching = matching or scene.matching
-    for shape in scene.shapes:
-        track = build_track(shape, matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
+    for shape, track in zip(scene.shapes, tracks_of(scene, matching)):
         for index, segment in enumerate(track.segments):
             if not all(segment.shown):
                 continue
@@ -48,3 +50,14 @@ def entries(scene: Scene, matching: Matching | None = None, closed_only: bool = 
                 if not pair.moving or (closed_only and (not pair.closed or len(pair.k0) < 3)):
                     continue
                 yield Entry(shape, index, segment, k if several else None, pair)
+
+
+def nothing_measured(scene: Scene, closed_only: bool = True) -> str:
+    """Why a report has no entry: nothing moves, or what moves is not measured."""
+    if not any(len(shape.keys) > 1 for shape in scene.shapes):
+        return "no shape has two keys: nothing moves"
+    if not closed_only:
+        return ("no contour is in both keys of a segment: every contour that moves grows from, shrinks to "
+                "or fades at a key, with no partner to put in correspondence")
+    return ("no closed contour is in both keys of a segment, so there is nothing to compare: open strokes and "
+            "contours that grow, shrink or fade move, but are not measured")

@@ -9,15 +9,15 @@ from ..core.measures import SWEEP, report
 from ..core.qcurves import auto_choice
 from ..core.tangles import tangled_times
 from ..core.timeline import pair_paths
-from ..model import METHODS, Scene
-from .segments import Entry, entries
+from ..core.methods import REGISTRY, measured_methods
+from ..model import Scene
+from .segments import Entry, entries, nothing_measured
 
 __all__ = ["stats_dict", "stats_text", "crossing_runs", "STATS_METHODS"]
 
-STATS_METHODS = tuple(m for m in METHODS if m != "jointed")
-"""Every method measured on every segment; ``jointed`` too where the shape has joints."""
+STATS_METHODS = measured_methods(jointed=False)
+"""Every method measured on every segment (and those that need joints where the shape has them)."""
 
-_CLOSURE = {"intrinsic": "paper", "intrinsic-length": "length"}
 
 
 def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None = None) -> dict[str, Any]:
@@ -27,15 +27,14 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
     tangled: dict[tuple[int, int, str], list[float]] = {}
     for entry in entries(scene, closed_only=True):
         pair, joints = entry.pair, entry.segment.joints
-        measured_methods = tuple(methods) if methods is not None else \
-            tuple(m for m in METHODS if m != "jointed" or joints)
+        names = tuple(methods) if methods is not None else measured_methods(jointed=bool(joints))
         choice = auto_choice(pair.k0, pair.k1, joints)
         measured = {m: report(pair.k0, pair.k1, m, t, joints, _as_drawn(entry, m)).as_dict()
-                    for m in measured_methods}
+                    for m in names}
         for method in measured:
             measured[method]["crossings"] = _crossings(entry, method, tangled)
-        for method, closure in _CLOSURE.items():
-            if method in measured:  # how much the closing tweak changed the lengths, at worst
+            closure = REGISTRY[method].closure
+            if closure is not None:  # how much the closing tweak changed the lengths, at worst
                 measured[method]["closure_tweak_max"] = float(closure_tweak(pair.k0, pair.k1, SWEEP, closure).max())
         shapes.append({
             **entry.head(),
@@ -44,7 +43,10 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
             "auto": {"method": choice.method, "why": choice.why},
             "methods": measured,
         })
-    return {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
+    out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
+    if not shapes:
+        out["note"] = nothing_measured(scene)
+    return out
 
 
 def _crossings(entry: Entry, method: str, done: dict[tuple[int, int, str], list[float]]) -> list[float]:
@@ -104,7 +106,7 @@ def stats_text(stats: dict[str, Any]) -> str:
                 lines.append(f"Closing the walk changed the lengths by at most {100 * r['closure_tweak_max']:.2f} % "
                              "of the perimeter")
     if not stats["shapes"]:
-        lines.append("no shape has two keys: nothing moves")
+        lines.append(stats.get("note", "no shape has two keys: nothing moves"))
     return "\n".join(lines)
 
 

@@ -14,13 +14,17 @@ world; every later drawing's view box is fitted into it, centred, aspect kept
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 
-from ..model import Contour, Key, Shape, frozen_points
+from ..core.assignment import min_cost_assignment
+from ..core.easing import Easing
+from ..errors import SceneError
+from ..model import Contour, Hint, Key, Shape, frozen_points
+from .controls import check_hints, check_stagger, pinned
 from .svg import Drawing, Element, read_drawing
 
 __all__ = ["DrawingKey", "read_drawings", "drawing_shapes"]
@@ -36,12 +40,18 @@ _UNMATCHED_COST = 0.6  # leaving an element without a partner: beyond this, it g
 
 @dataclass(frozen=True, slots=True)
 class DrawingKey:
-    """A drawing at a time: its path, the time in seconds, the easing of the segment it starts."""
+    """A drawing at a time: its path, the time in seconds, the easing of the segment it starts (as written,
+    and parsed: ``None`` parses ``ease``), its shape hints (letters to points in the SVG's user units),
+    the stagger of its elements and how long it holds before moving (seconds)."""
 
     path: Path
     time: float
     ease: str = "linear"
     tolerance: float | None = None
+    easing: Easing | None = None
+    hints: dict[str, tuple[float, float]] = field(default_factory=dict)
+    stagger: float = 0.0
+    hold: float = 0.0
 
 
 def read_drawings(keys: Sequence[DrawingKey]) -> tuple[list[Drawing], tuple[float, float, float, float]]:
@@ -53,15 +63,26 @@ def read_drawings(keys: Sequence[DrawingKey]) -> tuple[list[Drawing], tuple[floa
     return drawings, first.box
 
 
-def drawing_shapes(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], unmatched: str) -> list[Shape]:
-    """The shapes the drawings make, in paint order (see the module's docstring)."""
+Fail = Callable[[str, str], SceneError]
+
+
+def _raise(where: str, message: str) -> SceneError:
+    return SceneError(None, where, message)
+
+
+def drawing_shapes(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], unmatched: str,
+                   fail: Fail = _raise) -> list[Shape]:
+    """The shapes the drawings make, in paint order (see the module's docstring). ``fail(where, message)``
+    builds the error for a bad hint or stagger, ``where`` a path such as ``drawing[1].hints.a``."""
     box = drawings[0].box
     diagonal = float(np.hypot(box[2] - box[0], box[3] - box[1])) or 1.0
+    drawings, hints = _pinned_drawings(drawings, keys, fail)
     chains: list[list[tuple[int, int]]] = [[(0, e)] for e in range(len(drawings[0].elements))]
     last_of = {e: e for e in range(len(drawings[0].elements))}  # element of the latest drawing → its chain
     order = list(range(len(chains)))
     for k in range(1, len(drawings)):
-        links = match_elements(drawings[k - 1].elements, drawings[k].elements, diagonal)
+        forced = _hinted_partners(hints[k - 1], hints[k], f"drawing[{k}].hints", fail)
+        links = match_elements(drawings[k - 1].elements, drawings[k].elements, diagonal, forced)
         now: dict[int, int] = {}
         for a, b in links:
             if a is not None and b is not None:
@@ -75,16 +96,96 @@ def drawing_shapes(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], unma
         order = _merge_order(order, [now[b] for b in range(len(drawings[k].elements))])
         last_of = now
     names = _names([[drawings[k].elements[e] for k, e in chain] for chain in chains])
-    return [_shape(chains[c], names[c], drawings, keys, unmatched) for c in order]
+    delays = _delays(chains, drawings, keys, fail)
+    shapes = [_shape(chains[c], names[c], drawings, keys, unmatched, hints, delays[c]) for c in order]
+    times = [key.time for key in keys]
+    for shape in shapes:
+        check_hints(shape.keys, lambda q, s=shape: f"drawing[{times.index(s.keys[q].time)}]", fail)
+    return shapes
 
 
-def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> list[tuple[int | None, int | None]]:
-    """Pairs ``(i, j)`` of elements of consecutive drawings (``None``: no partner)."""
-    from scipy.optimize import linear_sum_assignment
+def _pinned_drawings(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], fail: Fail
+                     ) -> tuple[list[Drawing], list[dict[int, tuple[Hint, ...]]]]:
+    """The drawings with their hints snapped onto their elements (vertices inserted), and per drawing the
+    hints of each element (by element index; a hint's contour indexes its element's contours)."""
+    out, hints = [], []
+    for k, (drawing, key) in enumerate(zip(drawings, keys)):
+        if not key.hints or not drawing.elements:
+            out.append(drawing)
+            hints.append({})
+            continue
+        flat = [(e, c) for e, element in enumerate(drawing.elements) for c in range(len(element.contours))]
+        to_world = drawing.to_world if drawing.to_world is not None else np.eye(3)
+        world = {letter: tuple((to_world @ np.array([x, y, 1.0]))[:2]) for letter, (x, y) in key.hints.items()}
+        scale = float(np.sqrt(abs(np.linalg.det(to_world[:2, :2])))) or 1.0
+        contours = [drawing.elements[e].contours[c] for e, c in flat]
+        new, placed, _ = pinned(contours, world, f"drawing[{k}].hints", fail, scale)  # type: ignore[arg-type]
+        elements = list(drawing.elements)
+        for e in range(len(elements)):
+            mine = tuple(new[q] for q, (owner, _) in enumerate(flat) if owner == e)
+            elements[e] = replace(elements[e], contours=mine)
+        per: dict[int, list[Hint]] = {}
+        for hint in placed:
+            e, c = flat[hint.contour]
+            per.setdefault(e, []).append(Hint(hint.letter, c, hint.vertex))
+        out.append(replace(drawing, elements=tuple(elements)))
+        hints.append({e: tuple(h) for e, h in per.items()})
+    for k, key in enumerate(keys):
+        letters = {h.letter for found in hints[k].values() for h in found}
+        for letter in sorted(letters):
+            near = [q for q in (k - 1, k + 1) if 0 <= q < len(keys)]
+            if not any(letter in {h.letter for found in hints[q].values() for h in found} for q in near):
+                raise fail(f"drawing[{k}].hints.{letter}",
+                           f"expected hint {letter} on the drawing before or after too, found it on neither")
+    return out, hints
 
-    pairs: list[tuple[int | None, int | None]] = []
-    ids_a = {e.id: i for i, e in enumerate(a) if e.id and sum(x.id == e.id for x in a) == 1}
-    ids_b = {e.id: j for j, e in enumerate(b) if e.id and sum(x.id == e.id for x in b) == 1}
+
+def _hinted_partners(first: dict[int, tuple[Hint, ...]], second: dict[int, tuple[Hint, ...]], where: str,
+                     fail: Fail) -> list[tuple[int, int]]:
+    """The element pairs ``(i, j)`` that letters on both drawings make partners."""
+    owner_a = {h.letter: e for e, found in first.items() for h in found}
+    owner_b = {h.letter: e for e, found in second.items() for h in found}
+    to: dict[int, tuple[int, str]] = {}
+    back: dict[int, tuple[int, str]] = {}
+    for letter in sorted(set(owner_a) & set(owner_b)):
+        i, j = owner_a[letter], owner_b[letter]
+        if (i in to and to[i][0] != j) or (j in back and back[j][0] != i):
+            other = to[i][1] if i in to and to[i][0] != j else back[j][1]
+            raise fail(f"{where}.{letter}", f"expected hints {other} and {letter} to pair one element with one "
+                                            f"element, found them pairing it with two")
+        to[i], back[j] = (j, letter), (i, letter)
+    return sorted((i, j) for i, (j, _) in to.items())
+
+
+def _delays(chains: list[list[tuple[int, int]]], drawings: Sequence[Drawing], keys: Sequence[DrawingKey],
+            fail: Fail) -> list[dict[int, float]]:
+    """Per chain, the delay of the segment starting at each drawing k: the drawing's hold, plus
+    ``i × stagger`` for element i in the order of drawing k's paint, then the elements appearing in
+    drawing k + 1 in its order."""
+    out: list[dict[int, float]] = [{} for _ in chains]
+    at = {node: c for c, chain in enumerate(chains) for node in chain}
+    for k in range(len(keys) - 1):
+        key = keys[k]
+        present = [at[(k, e)] for e in range(len(drawings[k].elements))]
+        arriving = [at[(k + 1, e)] for e in range(len(drawings[k + 1].elements))
+                    if chains[at[(k + 1, e)]][0][0] == k + 1]
+        order = present + arriving
+        if key.stagger > 0:
+            check_stagger(key.stagger, len(order), key.time + key.hold, keys[k + 1].time,
+                          f"drawing[{k}].stagger", fail)
+        for i, c in enumerate(order):
+            out[c][k] = key.hold + i * key.stagger
+    return out
+
+
+def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float,
+                   forced: Sequence[tuple[int, int]] = ()) -> list[tuple[int | None, int | None]]:
+    """Pairs ``(i, j)`` of elements of consecutive drawings (``None``: no partner); ``forced`` pairs
+    (shape hints make them) come first, then ids, then the assignment."""
+    pairs: list[tuple[int | None, int | None]] = [(i, j) for i, j in forced]
+    taken_a, taken_b = {i for i, _ in forced}, {j for _, j in forced}
+    ids_a = {e.id: i for i, e in enumerate(a) if e.id and sum(x.id == e.id for x in a) == 1 and i not in taken_a}
+    ids_b = {e.id: j for j, e in enumerate(b) if e.id and sum(x.id == e.id for x in b) == 1 and j not in taken_b}
     for ident, i in ids_a.items():
         if ident in ids_b:
             pairs.append((i, ids_b[ident]))
@@ -103,7 +204,7 @@ def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float) 
             full[:m, n:] = np.where(np.eye(m, dtype=bool), _UNMATCHED_COST, big)
             full[m:, :n] = np.where(np.eye(n, dtype=bool), _UNMATCHED_COST, big)
             full[m:, n:] = 0.0
-            rows, cols = linear_sum_assignment(full)
+            rows, cols = min_cost_assignment(full)
             paired = [(left[r], right[c]) for r, c in zip(rows, cols) if r < m and c < n]
             pairs += paired
             left = [i for i in left if i not in {p[0] for p in paired}]
@@ -178,12 +279,15 @@ def _names(chains: list[list[Element]]) -> list[str]:
 
 
 def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing], keys: Sequence[DrawingKey],
-           unmatched: str) -> Shape:
+           unmatched: str, hints: Sequence[dict[int, tuple[Hint, ...]]], delays: dict[int, float]) -> Shape:
     first_k, last_k = chain[0][0], chain[-1][0]
     elements = [drawings[k].elements[e] for k, e in chain]
-    out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint) for (k, _), e in zip(chain, elements)]
+    out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint, fill_rule=e.fill_rule, cap=e.cap, join=e.join,
+               miter_limit=e.miter_limit, layer=index, clips=e.clips, easing=keys[k].easing,
+               hints=hints[k].get(index, ()), delay=delays.get(k, 0.0))
+           for (k, index), e in zip(chain, elements)]
     if first_k > 0:  # it appears: it comes from the key before
-        out.insert(0, _hidden(elements[0], keys[first_k - 1], unmatched))
+        out.insert(0, replace(_hidden(elements[0], keys[first_k - 1], unmatched), delay=delays.get(first_k - 1, 0.0)))
     if last_k < len(drawings) - 1:  # it goes: it leaves by the key after
         out.append(_hidden(elements[-1], keys[last_k + 1], unmatched))
     style = elements[0]
@@ -194,8 +298,12 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
 def _hidden(element: Element, at: DrawingKey, unmatched: str) -> Key:
     """Where an element comes from or goes to: its centre (``grow``) or itself at opacity 0 (``fade``)."""
     if unmatched == "fade":
-        return Key(at.time, element.contours, at.ease, replace(element.paint, opacity=0.0), hidden=True)
+        return Key(at.time, element.contours, at.ease, replace(element.paint, opacity=0.0), hidden=True,
+                   fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
+                   clips=element.clips, easing=at.easing)
     centre = _centre(element)
     contours = tuple(Contour(frozen_points(np.broadcast_to(centre, c.points.shape)), c.closed)
                      for c in element.contours)
-    return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True)
+    return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True,
+               fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
+               clips=element.clips, easing=at.easing)

@@ -6,7 +6,6 @@ expected and what was found.
 
 from __future__ import annotations
 
-import difflib
 import json
 import math
 import os
@@ -17,9 +16,12 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from ..errors import SceneError
-from ..model import (ALIGNS, BALANCES, CAPS, COSTS, DEFAULT_BALANCE, DEFAULT_FILL, EASES, EQUAL_COUNTS, FILL_RULES,
-                     JOINS, METHODS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
+from ..core.easing import LINEAR, Easing, parse_easing
+from ..core.methods import METHODS, REGISTRY
+from ..errors import SceneError, did_you_mean
+from ..model import (ALIGNS, BALANCES, CAPS, COSTS, DEFAULT_BALANCE, DEFAULT_FILL, EQUAL_COUNTS, FILL_RULES,
+                     JOINS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
+from .controls import check_hints, check_shape_stagger, pinned, read_easing, read_hints, read_stagger, read_timing
 from .locate import json_line_of, line_of
 
 __all__ = ["load_scene", "parse_scene", "LIMITS"]
@@ -37,14 +39,19 @@ LIMITS = {
     # steps: these caps keep one segment's correspondence to seconds (about 1.5 s and 7 s here)
     "match_cells": 25_000_000,    # m·n, cost "distance"
     "match_sg": 100_000_000,      # m·n·max(m, n), cost "sg"
+    # every key is a segment to match and every shape a track drawn each frame: 8 000 keys took 6.6 s
+    # to the first frame here, 8 000 shapes 1.9 s and 69 MB (100 000 took minutes, or 2 GB)
+    "keys": 10_000,        # in the scene, every shape's and drawing's together
+    "shapes": 10_000,      # in the scene, drawings' elements included
 }
 
 _TOP = ("title", "size", "fps", "background", "view", "method", "compare", "balance", "correspondence", "unmatched",
-        "shape", "drawing")
+        "ease", "stagger", "shape", "drawing")
 _PAINT = ("fill", "stroke", "stroke_width", "opacity")
-_SHAPE = ("name", *_PAINT, "method", "joints", "balance", "fill_rule", "closed", "cap", "join", "unmatched", "key")
-_KEY = ("time", "points", "contours", "ease", *_PAINT)
-_DRAWING = ("time", "svg", "ease", "tolerance")
+_SHAPE = ("name", *_PAINT, "method", "joints", "balance", "fill_rule", "closed", "cap", "join", "unmatched", "stagger",
+          "key")
+_KEY = ("time", "points", "contours", "ease", "spacing", "hints", *_PAINT)
+_DRAWING = ("time", "svg", "ease", "spacing", "hints", "stagger", "tolerance")
 _SVG = ("svg", "id", "tolerance")
 _MATCHING = ("cost", "align", "equal_counts", "ks", "cs", "es", "kb", "eb", "mb", "pb")
 
@@ -53,13 +60,15 @@ _KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a pipe (FIFO)"), (stat.S_
           (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
 
 
-def load_scene(path: str | Path | Sequence[str | Path], step: float = 1.0) -> Scene:
+def load_scene(path: str | Path | Sequence[str | Path], step: float = 1.0, ease: str = "linear",
+               hold: float = 0.0, stagger: float = 0.0) -> Scene:
     """Read and validate the scene at ``path`` (``.json`` is JSON, ``.svg`` one drawing, anything else
-    TOML), or build one from a list of SVG drawings, one key every ``step`` seconds."""
+    TOML), or build one from a list of SVG drawings: each shown ``hold`` seconds, then moving for
+    ``step`` seconds to the next under ``ease``, its elements ``stagger`` seconds apart."""
     if not isinstance(path, (str, Path)):
-        return drawings_scene([Path(p) for p in path], step)
+        return drawings_scene([Path(p) for p in path], step, ease, hold, stagger)
     if Path(path).suffix.lower() == ".svg":
-        return drawings_scene([Path(path)], step)
+        return drawings_scene([Path(path)], step, ease, hold, stagger)
     path = Path(path)
     limit = LIMITS["file_bytes"]
     try:
@@ -90,26 +99,52 @@ def load_scene(path: str | Path | Sequence[str | Path], step: float = 1.0) -> Sc
     return parse_scene(text, path, "json" if path.suffix.lower() == ".json" else "toml")
 
 
-def drawings_scene(paths: Sequence[Path], step: float = 1.0) -> Scene:
-    """A scene of whole drawings, one key every ``step`` seconds: what ``tweenrender render a.svg b.svg``
-    renders. The view is the first drawing's view box, the size fitted to it within 1280 × 720."""
+def drawings_scene(paths: Sequence[Path], step: float = 1.0, ease: str = "linear", hold: float = 0.0,
+                   stagger: float = 0.0) -> Scene:
+    """A scene of whole drawings, one key every ``hold + step`` seconds: what ``tweenrender render a.svg
+    b.svg`` renders (see :func:`load_scene`). The view is the first drawing's view box, the size fitted to
+    it within 1280 × 720."""
     from .drawings import DrawingKey, drawing_shapes, read_drawings
 
     if not paths:
         raise SceneError(None, None, "expected at least one SVG drawing, found none")
     if not (isinstance(step, (int, float)) and math.isfinite(step) and 0 < step <= LIMITS["time"] / len(paths)):
         raise SceneError(None, None, f"expected a step of seconds between drawings above 0, found {step!r}")
+    for name, value in (("hold", hold), ("stagger", stagger)):
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+                or not 0 <= value <= LIMITS["time"] / len(paths):
+            raise SceneError(None, None, f"expected a {name} of seconds from 0, found {value!r}")
+    try:
+        easing = parse_easing(ease) if isinstance(ease, str) else None
+    except ValueError as error:
+        raise SceneError(None, None, str(error)) from None
+    if easing is None:
+        raise SceneError(None, None, f"expected an easing name or curve, found {ease!r}")
     for path in paths:
         if path.suffix.lower() != ".svg":
             raise SceneError(path, None, "expected an SVG drawing (.svg) among several drawings")
-    keys = [DrawingKey(path, i * float(step)) for i, path in enumerate(paths)]
+    period = float(step) + float(hold)
+    keys = [DrawingKey(path, i * period, easing.text, easing=easing, stagger=float(stagger), hold=float(hold))
+            for i, path in enumerate(paths)]
     drawings, box = read_drawings(keys)
-    shapes = tuple(drawing_shapes(drawings, keys, "grow"))
+    shapes = tuple(drawing_shapes(drawings, keys, "grow", _drawing_fail(paths)))
     if not shapes:
         raise SceneError(paths[0], None, "expected at least one visible shape in the drawings, found none")
-    scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0])
-    _Reader(paths[0], "", "toml").matching_effort(shapes, scene.matching)
+    scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0],
+                  sources=tuple(dict.fromkeys(paths)), end_hold=float(hold) if len(paths) > 1 else 0.0)
+    reader = _Reader(paths[0], "", "toml")
+    reader.counts(len(shapes), sum(len(shape.keys) for shape in shapes))
+    reader.matching_effort(shapes, scene.matching)
     return scene
+
+
+def _drawing_fail(paths: Sequence[Path]) -> Callable[[str, str], SceneError]:
+    """Errors of drawings given as files: ``drawing[k]...`` is told as drawing k's own file."""
+    def fail(where: str, message: str) -> SceneError:
+        head, _, rest = where.partition("]")
+        index = int(head.removeprefix("drawing[")) if head.startswith("drawing[") else 0
+        return SceneError(paths[index], rest.lstrip(".") or None, message)
+    return fail
 
 
 def _refuse_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
@@ -188,11 +223,6 @@ def _describe(value: Any) -> str:
     return f"{kind} {_short(value)}"
 
 
-def _suggest(word: str, choices: tuple[str, ...] | list[str]) -> str:
-    close = difflib.get_close_matches(word, choices, n=1, cutoff=0.6)
-    return f" (did you mean {close[0]!r}?)" if close else ""
-
-
 class _Reader:
     """Validates one parsed document; knows where it came from for messages."""
 
@@ -200,6 +230,10 @@ class _Reader:
         self.path = path
         self.text = text
         self.locate = json_line_of if fmt == "json" else line_of
+        self.timing: tuple[str, Easing] = ("linear", LINEAR)  # the scene's ease: every key's default
+        self.stagger = 0.0
+        self.moved: dict[str, list[np.ndarray]] = {}  # key path -> where hints moved its contours' vertices
+        self.sources: list[Path] = []  # files the scene refers to, in the order they are read
 
     def fail(self, where: str, message: str) -> SceneError:
         line = self.locate(self.text, where) if where else None
@@ -213,7 +247,7 @@ class _Reader:
         for key in value:
             if key not in allowed:
                 at = f"{where}.{key}" if where else str(key)
-                raise self.fail(at, f"unknown key {_short(key)}{_suggest(str(key), allowed)}; "
+                raise self.fail(at, f"unknown key {_short(key)}{did_you_mean(str(key), allowed)}; "
                                     f"expected one of {', '.join(allowed)}")
         return value
 
@@ -249,7 +283,7 @@ class _Reader:
     def choice(self, value: Any, where: str, choices: tuple[str, ...], what: str) -> str:
         word = self.string(value, where)
         if word not in choices:
-            raise self.fail(where, f"unknown {what} {_short(word)}{_suggest(word, choices)}; "
+            raise self.fail(where, f"unknown {what} {_short(word)}{did_you_mean(word, choices)}; "
                                    f"expected one of {', '.join(choices)}")
         return word
 
@@ -278,10 +312,17 @@ class _Reader:
         if "view" in top:
             view = self.view(top["view"])
         unmatched = self.choice(top.get("unmatched", "grow"), "unmatched", UNMATCHED, "rule for unmatched contours")
+        if "ease" in top:
+            easing = read_easing(top["ease"], "ease", self.fail)
+            self.timing = (easing.text, easing)
+        if "stagger" in top:
+            self.stagger = read_stagger(top["stagger"], "stagger", self.fail)
         shapes_raw = self.listing(top.get("shape", []), "shape", "a list of [[shape]] tables")
         drawings_raw = self.listing(top.get("drawing", []), "drawing", "a list of [[drawing]] tables")
         if not shapes_raw and not drawings_raw:
             raise self.fail("shape", "expected at least one [[shape]] or [[drawing]], found none")
+        keys_raw = sum(len(raw["key"]) for raw in shapes_raw if isinstance(raw, dict) and isinstance(raw.get("key"), list))
+        self.counts(len(shapes_raw), keys_raw + len(drawings_raw))
         shapes = tuple(self.shape(raw, f"shape[{i}]", i) for i, raw in enumerate(shapes_raw))
         names: dict[str, int] = {}
         for i, shape in enumerate(shapes):
@@ -298,6 +339,7 @@ class _Reader:
             if "size" not in top:
                 size = fitted_size(box)
         shapes = drawn + shapes
+        self.counts(len(shapes), sum(len(shape.keys) for shape in shapes))
         method = self.choice(top.get("method", "auto" if drawings_raw else "nonlinear"), "method", METHODS, "method")
         compare = ("linear", "nonlinear")
         if "compare" in top:
@@ -306,8 +348,9 @@ class _Reader:
                 raise self.fail("compare", "expected at least one method name, found an empty list")
             compare = tuple(self.choice(m, f"compare[{i}]", METHODS, "method") for i, m in enumerate(items))
         for i, shape in enumerate(shapes):
-            if (shape.method or method) == "jointed" and not shape.joints:
-                raise self.fail(f"shape[{i}].method", "method 'jointed' needs joints = [[a, b], ...], found none")
+            chosen = shape.method or method
+            if REGISTRY[chosen].needs_joints and not shape.joints:
+                raise self.fail(f"shape[{i}].method", f"method {chosen!r} needs joints = [[a, b], ...], found none")
         title = self.string(top["title"], "title") if "title" in top else None
         background = self.background(top.get("background", "#ffffff"), "background")
         matching = self.matching(top.get("correspondence", {}))
@@ -315,7 +358,13 @@ class _Reader:
         balance = self.choice(top.get("balance", DEFAULT_BALANCE), "balance", BALANCES, "balance")
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
                      method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched,
-                     balance=balance)
+                     balance=balance, sources=tuple(dict.fromkeys((self.path, *self.sources))))
+
+    def counts(self, shapes: int, keys: int) -> None:
+        """Refuse more shapes or keys than :data:`LIMITS` allows, before they are matched or drawn."""
+        for count, what, where in ((shapes, "shapes", "shape"), (keys, "keys", "shape")):
+            if count > LIMITS[what]:
+                raise self.fail(where, f"expected at most {LIMITS[what]} {what} in the scene, found {count}")
 
     def drawings(self, items: list[Any], unmatched: str) -> tuple[tuple[Shape, ...], tuple[float, float, float, float]]:
         """``[[drawing]]`` keys: whole SVG files at times; their shapes and the first drawing's view box."""
@@ -334,18 +383,23 @@ class _Reader:
                 raise self.fail(f"{where}.time", f"expected a time after {keys[-1].time:.15g} "
                                                  f"(times strictly increase), found {time:.15g}")
             file = self.path.parent / self.string(table["svg"], f"{where}.svg")
-            ease = self.choice(table.get("ease", "linear"), f"{where}.ease", EASES, "easing")
+            text, easing = read_timing(table, where, self.fail, self.timing)
             tolerance = None
             if "tolerance" in table:
                 tolerance = self.number(table["tolerance"], f"{where}.tolerance", 1e-9, 1e6,
                                         "a tolerance in world units")
-            keys.append(DrawingKey(file, time, ease, tolerance))
+            hints = read_hints(table["hints"], f"{where}.hints", self.fail, LIMITS["coordinate"]) \
+                if "hints" in table else {}
+            stagger = read_stagger(table["stagger"], f"{where}.stagger", self.fail) \
+                if "stagger" in table else self.stagger
+            keys.append(DrawingKey(file, time, text, tolerance, easing=easing, hints=hints, stagger=stagger))
+            self.sources.append(file)
         try:
             drawings, box = read_drawings(keys)
         except SvgError as error:
             index = next(i for i, key in enumerate(keys) if str(key.path) == error.path)
             raise self.fail(f"drawing[{index}].svg", str(error)) from None
-        return tuple(drawing_shapes(drawings, keys, unmatched)), box
+        return tuple(drawing_shapes(drawings, keys, unmatched, self.fail)), box
 
     def background(self, value: Any, where: str) -> Color:
         """A colour, or ``none`` for a transparent background."""
@@ -362,7 +416,8 @@ class _Reader:
                 counts_b = [len(c.points) for c in shape.keys[k].contours]
                 m, n = max(counts_a), max(counts_b)
                 equal = shape.equal_counts or matching.equal_counts
-                if len(counts_a) == len(counts_b) == 1 and m == n and equal == "drawn":
+                hinted = bool(shape.keys[k - 1].hints and shape.keys[k].hints)
+                if len(counts_a) == len(counts_b) == 1 and m == n and equal == "drawn" and not hinted:
                     continue  # equal counts keep the drawn order: no search
                 effort, limit = (m * n * max(m, n), LIMITS["match_sg"]) if cost == "sg" else \
                                 (m * n, LIMITS["match_cells"])
@@ -416,6 +471,7 @@ class _Reader:
             if keys[k].time <= keys[k - 1].time:
                 raise self.fail(f"{where}.key[{k}].time", f"expected a time after {keys[k - 1].time:.15g} "
                                                           f"(times strictly increase), found {keys[k].time:.15g}")
+        check_hints(keys, lambda k: f"{where}.key[{k}]", self.fail)
         if not closed and not any(key.paint.stroke is not None for key in keys):
             raise self.fail(where, "expected a stroke on an open shape (closed = false), found none: "
                                    "add stroke = \"#rrggbb\"")
@@ -428,7 +484,9 @@ class _Reader:
             if several:
                 raise self.fail(f"{where}.joints", f"expected keys of one closed outline for joints, found "
                                                    f"{len(keys[several[0]].contours)} contours in key {several[0]}")
-            joints = self.joints(table["joints"], f"{where}.joints", len(keys[0].points))
+            moved = self.moved[f"{where}.key[0]"][0]  # joints name the vertices as drawn, before hints
+            joints = tuple((int(moved[i]), int(moved[j]))
+                           for i, j in self.joints(table["joints"], f"{where}.joints", len(moved)))
         fill_rule = self.choice(table.get("fill_rule", "nonzero"), f"{where}.fill_rule", FILL_RULES, "fill rule")
         cap = self.choice(table.get("cap", "round"), f"{where}.cap", CAPS, "line cap")
         join = self.choice(table.get("join", "round"), f"{where}.join", JOINS, "line join")
@@ -437,8 +495,12 @@ class _Reader:
             unmatched = self.choice(table["unmatched"], f"{where}.unmatched", UNMATCHED, "rule for unmatched contours")
         balance = self.choice(table["balance"], f"{where}.balance", BALANCES, "balance") \
             if "balance" in table else None
+        stagger = read_stagger(table["stagger"], f"{where}.stagger", self.fail) if "stagger" in table \
+            else self.stagger
+        place = f"{where}.stagger" if "stagger" in table else "stagger"
+        check_shape_stagger(keys, stagger, place, lambda k: f"{where}.key[{k}]", self.fail)
         return Shape(name=name, keys=keys, method=method, joints=joints, fill_rule=fill_rule, cap=cap, join=join,
-                     unmatched=unmatched, balance=balance)
+                     unmatched=unmatched, balance=balance, stagger=stagger)
 
     def paint(self, table: dict[str, Any], where: str, base: Paint) -> Paint:
         """``base`` with the ``fill``, ``stroke``, ``stroke_width`` and ``opacity`` that ``table`` gives."""
@@ -489,10 +551,14 @@ class _Reader:
                              for i, c in enumerate(items))
         else:
             raise self.fail(where, "expected points = [[x, y], ...] or contours = [[[x, y], ...], ...], found neither")
-        ease = self.choice(table.get("ease", "linear"), f"{where}.ease", EASES, "easing")
+        text, easing = read_timing(table, where, self.fail, self.timing)
         if not closed and "fill" in table:
             raise self.fail(f"{where}.fill", "expected no fill on an open shape (closed = false)")
-        return Key(time=time, contours=contours, ease=ease, paint=self.paint(table, where, defaults))
+        hints = read_hints(table["hints"], f"{where}.hints", self.fail, LIMITS["coordinate"]) \
+            if "hints" in table else {}
+        contours, placed, self.moved[where] = pinned(contours, hints, f"{where}.hints", self.fail)
+        return Key(time=time, contours=contours, ease=text, paint=self.paint(table, where, defaults),
+                   easing=easing, hints=placed)
 
     def outline(self, value: Any, where: str, closed: bool) -> tuple[Contour, ...]:
         """``points``: a list of [x, y] (one contour) or ``{ svg, id }`` (every contour of that element)."""
@@ -538,6 +604,7 @@ class _Reader:
         element = self.string(table["id"], f"{where}.id")
         tolerance = self.number(table.get("tolerance", DEFAULT_TOLERANCE), f"{where}.tolerance",
                                 1e-9, 1e6, "a tolerance in world units")
+        self.sources.append(self.path.parent / file)
         try:
             contours = load_svg_contours(self.path.parent / file, element, tolerance)
         except SvgError as error:

@@ -12,14 +12,14 @@ A whole drawing (:func:`read_drawing`) gives every visible shape element —
 ``polygon``, inside groups, ``<use>`` copies and nested transforms — with its
 paint as an SVG renderer resolves it (:mod:`.svg_document`). Invisible
 elements (no fill and no stroke, ``display:none``, ``visibility:hidden``, zero
-opacity) are left out. Not drawn: clip paths and masks (their content is drawn
-unclipped), filters, markers; gradients and patterns are painted with the
+opacity) are left out. Linear and radial gradient fills are kept
+(:mod:`.svg_gradients`). Not drawn: clip paths and masks (their content is drawn
+unclipped), filters, markers; gradient strokes and patterns are painted with the
 average colour of their stops.
 """
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 from dataclasses import dataclass
@@ -28,9 +28,9 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..errors import SceneError
+from ..errors import SceneError, did_you_mean
 from ..model import Color, Contour, Paint, frozen_points
-from .svg_document import SHAPES, Document, Drawn, Node, length, parse, read, walk
+from .svg_document import SHAPES, Document, Drawn, Node, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
@@ -90,15 +90,20 @@ class Element:
     cap: str
     join: str
     miter_limit: float
+    clips: tuple[tuple[Contour, ...], ...] = ()  # clip regions (world units, nonzero), all of them intersected
 
 
 @dataclass(frozen=True, slots=True)
 class Drawing:
-    """A whole drawing: its view box in world units ``(xmin, ymin, xmax, ymax)``, y up, and its elements."""
+    """A whole drawing: its view box in world units ``(xmin, ymin, xmax, ymax)``, y up, and its elements.
+
+    ``to_world`` is the 3 × 3 map from the SVG's user units (y down) to world units (``None``: unknown).
+    """
 
     path: Path
     box: tuple[float, float, float, float]
     elements: tuple[Element, ...]
+    to_world: NDArray[np.float64] | None = None
 
 
 # -- one element by id ------------------------------------------------------------------------------
@@ -150,8 +155,7 @@ def _find(document: Document, element_id: str) -> Node:
     ids = document.ids
     if element_id not in ids:
         shapes = [i for i, nodes in ids.items() if nodes[0].tag in SHAPES and nodes[0].svg]
-        close = difflib.get_close_matches(element_id, list(ids), n=1, cutoff=0.6)
-        hint = f'; did you mean "{close[0]}"?' if close else ""
+        hint = did_you_mean(element_id, ids)
         listed = ", ".join(f'"{i}"' for i in shapes[:8])
         listed += f" and {len(shapes) - 8} more" if len(shapes) > 8 else ""
         have = f"shapes with ids: {listed}" if shapes else "no shape in the file has an id"
@@ -235,7 +239,7 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
             element = _element(d, to_world, scale, tol, budget)
             if element is not None:
                 elements.append(element)
-        return Drawing(Path(svg_path), world_box, tuple(elements))
+        return Drawing(Path(svg_path), world_box, tuple(elements), to_world)
     except Refusal as refusal:
         raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
 
@@ -271,12 +275,64 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     contours = _contours(d, to_world @ d.ctm, tol, budget, unstroked)
     if not contours:
         return None
+    paint = _with_gradient(paint, d, to_world, contours)
+    clips = tuple(_clip(ident, space, d, to_world, tol, budget) for ident, space in d.clips)
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
                    tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
-                   miter)
+                   miter, tuple(c for c in clips if c is not None))
+
+
+def _clip(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,
+          budget: Budget) -> tuple[Contour, ...] | None:
+    """The region of ``<clipPath id=ident>`` in world units (its shapes' closed contours, nonzero), applied
+    in the user ``space`` of the element that names it; None when ``ident`` is no clip path."""
+    from .svg_document import _Walk
+
+    nodes = d.document.ids.get(ident)
+    if not nodes or nodes[0].tag != "clipPath":
+        return None
+    clip = nodes[0]
+    units = clip.attrs.get("clipPathUnits", "userSpaceOnUse").strip()
+    if units == "objectBoundingBox":
+        if space is not d.ctm:
+            raise Refusal(f"expected clipPathUnits=\"userSpaceOnUse\" on a group's clip path, found "
+                          f"objectBoundingBox (clipPath {ident!r}, line {clip.line}): not drawn yet")
+        every = np.concatenate([p for p, _ in _contours(d, np.eye(3), tol, budget, True)] or [np.zeros((1, 2))])
+        (x0, y0), (x1, y1) = every.min(axis=0), every.max(axis=0)
+        space = space @ np.array([[x1 - x0, 0.0, x0], [0.0, y1 - y0, y0], [0.0, 0.0, 1.0]])
+    if "transform" in clip.attrs:
+        space = space @ matrix(clip.attrs["transform"])
+    out: list[Contour] = []
+    walker = _Walk(d.document, False)
+    for child in clip.children:
+        for shape in walker.visit(child, {}, space, 1.0, True):
+            if shape.visible:
+                out += [Contour(frozen_points(p), True) for p, closed in
+                        _contours(shape, to_world @ shape.ctm, tol, budget, True) if len(p) >= 3]
+    return tuple(out)
 
 
 # -- paint ---------------------------------------------------------------------------------------------
+
+
+def _with_gradient(paint: Paint, d: Drawn, to_world: NDArray[np.float64],
+                   contours: list[tuple[NDArray[np.float64], bool]]) -> Paint:
+    """``paint`` with its fill's gradient, when the fill is ``url(#…)`` of a linear or radial gradient."""
+    from dataclasses import replace
+
+    from .svg_gradients import gradient_ref, read_gradient
+
+    ident = gradient_ref(d.style.get("fill", ""))
+    if ident is None or paint.fill is None:
+        return paint
+    placed = to_world @ d.ctm
+    every = np.concatenate([points for points, _ in contours])
+    user = (np.linalg.inv(placed) @ np.column_stack([every, np.ones(len(every))]).T)[:2].T
+    (x0, y0), (x1, y1) = user.min(axis=0), user.max(axis=0)
+    box = view_box(d.document) or (0.0, 0.0, 100.0, 100.0)
+    gradient = read_gradient(ident, d.document, (float(x0), float(y0), float(x1 - x0), float(y1 - y0)), placed,
+                             (box[2], box[3]), _number(d.style.get("fill-opacity"), 1.0))
+    return paint if gradient is None else replace(paint, gradient=gradient)
 
 
 def _determinant(matrix: np.ndarray) -> float:

@@ -10,7 +10,10 @@ counted as it goes, so a file of nested ``<use>`` s cannot grow without bound.
 
 from __future__ import annotations
 
+import math
+import os
 import re
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterator
@@ -22,7 +25,7 @@ from svgelements import Matrix
 
 from .svg_flatten import Refusal
 
-__all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "SHAPES", "Node", "Document",
+__all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "MAX_RULE_MATCHES", "SHAPES", "Node", "Document",
            "Drawn", "read", "parse"]
 
 MAX_FILE_BYTES = 20 * 1024 * 1024
@@ -33,6 +36,9 @@ MAX_DEPTH = 200
 """Nesting of elements."""
 MAX_EXPANDED = 50_000
 """Elements visited while drawing, ``<use>`` copies included."""
+MAX_RULE_MATCHES = 2_000_000
+"""Style rules looked at, summed over the elements: a sheet of thousands of rules for one tag over
+thousands of elements is refused rather than matched for minutes."""
 
 SHAPES = ("path", "polygon", "polyline", "rect", "circle", "ellipse", "line")
 """The elements that draw a shape."""
@@ -45,7 +51,7 @@ _NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linear
 _UNSUPPORTED = ("text", "image", "foreignObject")
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
               "stroke-linejoin", "stroke-miterlimit", "visibility", "color")
-_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity")
+_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask")
 _ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
 _UNSAFE = ("expected plain SVG, found a DOCTYPE with entity declarations (refused: entities can "
            "expand without bound or read other files); save the drawing as plain SVG")
@@ -73,6 +79,8 @@ class Document:
     root: Node
     ids: dict[str, list[Node]]
     rules: list[tuple[tuple[int, int, int], int, tuple[str | None, tuple[str, ...], str | None], dict[str, str]]]
+    index: dict[str, list[int]] = field(default_factory=dict)  # rules by the id, class or tag they need
+    matched: int = 0  # rules looked at for the elements so far (bounded by MAX_RULE_MATCHES)
 
 
 @dataclass(frozen=True, slots=True)
@@ -85,22 +93,35 @@ class Drawn:
     opacity: float  # the product of its own and every ancestor's opacity
     visible: bool  # display and visibility allow it to be seen
     document: Document
+    # the clip paths on it and its ancestors: (id of the <clipPath>, the user space it is in, 3x3)
+    clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()
 
 
 def read(path: Path) -> bytes:
-    """The file's bytes, refused when too large or declaring entities."""
+    """The file's bytes, refused when not a regular file, too large, or declaring entities.
+
+    A pipe would block ``open`` until a writer comes and a device may never end: the kind is checked
+    before opening, and again on the open descriptor (opened without blocking) in case the name was
+    swapped in between."""
     try:
-        size = path.stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found {size} bytes")
-        with path.open("rb") as handle:
+        kind = _not_a_file(os.stat(path).st_mode)
+        if kind:
+            raise Refusal(f"expected an SVG file, found {kind}")
+        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(descriptor, "rb") as handle:
+            info = os.fstat(handle.fileno())
+            kind = _not_a_file(info.st_mode)
+            if kind:
+                raise Refusal(f"expected an SVG file, found {kind}")
+            if info.st_size > MAX_FILE_BYTES:
+                raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found {info.st_size} bytes")
             data = handle.read(MAX_FILE_BYTES + 1)
     except FileNotFoundError:
         raise Refusal("expected an SVG file, found no file at this path") from None
     except IsADirectoryError:
         raise Refusal("expected an SVG file, found a folder") from None
     except OSError as error:
-        raise Refusal(f"expected a readable SVG file, found: {error.strerror or error}") from error
+        raise Refusal(f"expected a readable SVG file, found: {error.strerror or error}") from None
     if len(data) > MAX_FILE_BYTES:
         raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found more")
     # NULs are dropped so that UTF-16/32 text is caught too; the XML pass refuses the
@@ -110,6 +131,16 @@ def read(path: Path) -> bytes:
     return data
 
 
+def _not_a_file(mode: int) -> str | None:
+    """What a file of ``mode`` is when it is not a regular file (``"a folder"``, ``"a pipe (FIFO)"`` …)."""
+    for test, kind in ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a pipe (FIFO)"),
+                       (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+                       (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return kind
+    return None if stat.S_ISREG(mode) else "not a regular file"
+
+
 def parse(data: bytes) -> Document:
     """The XML tree of ``data``, with its ids and style rules."""
     parser = expat.ParserCreate(namespace_separator=" ")
@@ -117,6 +148,7 @@ def parse(data: bytes) -> Document:
     roots: list[Node] = []
     ids: dict[str, list[Node]] = {}
     count = [0]
+    texts: dict[int, tuple[Node, list[str]]] = {}
 
     def doctype(name: str, system_id: str | None, public_id: str | None, internal: int) -> None:
         if internal:
@@ -147,8 +179,8 @@ def parse(data: bytes) -> Document:
         stack.pop()
 
     def text(data: str) -> None:
-        if stack and stack[-1].tag == "style":
-            stack[-1].text += data
+        if stack and stack[-1].tag == "style":  # pieces joined once at the end: no quadratic copying
+            texts.setdefault(id(stack[-1]), (stack[-1], []))[1].append(data)
 
     parser.StartDoctypeDeclHandler = doctype
     parser.EntityDeclHandler = entity
@@ -163,7 +195,10 @@ def parse(data: bytes) -> Document:
     if not roots or roots[0].tag != "svg" or not roots[0].svg:
         raise Refusal(f"expected an <svg> root element, found <{roots[0].tag if roots else ''}>")
     document = Document(roots[0], ids, [])
+    for node, pieces in texts.values():
+        node.text = "".join(pieces)
     document.rules = _rules(document.root)
+    document.index = _index(document.rules)
     return document
 
 
@@ -172,13 +207,16 @@ def parse(data: bytes) -> Document:
 
 def _rules(root: Node) -> list:  # type: ignore[type-arg]
     """Rules of every ``<style>``: simple selectors (``*``, ``tag``, ``.class``, ``#id`` and their
-    compounds) with their specificity; rules with other selectors are left out."""
+    compounds) with their specificity; rules with other selectors are left out. The sheet is scanned
+    in one pass (:mod:`.css`), so a long or hostile sheet costs time in proportion to its length."""
+    from .css import style_rules
+
     rules = []
     order = 0
     for node in _iterate(root):
         if node.tag != "style":
             continue
-        for selectors, body in _RULE.findall(_COMMENT.sub("", node.text)):
+        for selectors, body in style_rules(node.text):
             declarations = _declarations(body)
             for selector in selectors.split(","):
                 parsed = _selector(selector.strip())
@@ -190,6 +228,16 @@ def _rules(root: Node) -> list:  # type: ignore[type-arg]
                 order += 1
     rules.sort(key=lambda rule: (rule[0], rule[1]))
     return rules
+
+
+def _index(rules: list) -> dict[str, list[int]]:  # type: ignore[type-arg]
+    """Each rule's position under one key a node must have for it to apply: ``#id``, ``.class``, the tag,
+    or ``*``; a node then looks only at the rules of its own id, classes and tag."""
+    index: dict[str, list[int]] = {}
+    for position, (_, _, (tag, classes, ident), _) in enumerate(rules):
+        key = f"#{ident}" if ident is not None else f".{classes[0]}" if classes else tag or "*"
+        index.setdefault(key, []).append(position)
+    return index
 
 
 def _selector(text: str) -> tuple[str | None, tuple[str, ...], str | None] | None:
@@ -227,9 +275,17 @@ def own_style(node: Node, document: Document) -> dict[str, str]:
     style = {name: node.attrs[name].strip() for name in _PROPERTIES if name in node.attrs}
     if document.rules:
         classes = set(node.attrs.get("class", "").split())
-        for _, _, (tag, wanted, ident), declarations in document.rules:
+        ident_here = node.attrs.get("id")
+        keys = ["*", node.tag, *(f".{c}" for c in classes)] + ([f"#{ident_here}"] if ident_here is not None else [])
+        candidates = sorted({p for key in keys for p in document.index.get(key, ())})
+        document.matched += len(candidates)
+        if document.matched > MAX_RULE_MATCHES:
+            raise Refusal(f"expected at most {MAX_RULE_MATCHES} style rules applied over the drawing's elements, "
+                          "found more")
+        for position in candidates:  # the rules' order: specificity, then the sheet's
+            _, _, (tag, wanted, ident), declarations = document.rules[position]
             if (tag is None or tag == node.tag) and set(wanted) <= classes and \
-                    (ident is None or ident == node.attrs.get("id")):
+                    (ident is None or ident == ident_here):
                 style.update((k, v) for k, v in declarations.items() if k in _PROPERTIES)
     if "style" in node.attrs:
         style.update((k, v) for k, v in _declarations(node.attrs["style"]).items() if k in _PROPERTIES)
@@ -239,10 +295,30 @@ def own_style(node: Node, document: Document) -> dict[str, str]:
 # -- walking --------------------------------------------------------------------------------------
 
 
-def matrix(text: str) -> NDArray[np.float64]:
-    """A ``transform`` attribute as a 3x3 matrix (an invalid one reads as identity, as browsers do)."""
-    m = Matrix(text)
+_TRANSFORM_NUMBER = re.compile(r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?|nan|inf(?:inity)?", re.IGNORECASE)
+
+
+def matrix(text: str, line: int = 0) -> NDArray[np.float64]:
+    """A ``transform`` attribute as a 3x3 matrix (an invalid one reads as identity, as browsers do);
+    a number that is not finite (``NaN``, ``1e400``) is refused, naming the attribute and its ``line``."""
+    for number in _TRANSFORM_NUMBER.findall(text):
+        if not math.isfinite(float(number)):
+            raise Refusal(f"expected finite numbers in transform {text.strip()[:80]!r}, found {number} (line {line})")
+    try:
+        m = Matrix(text)
+    except Exception:  # a third-party parser on arbitrary input: what it cannot read is no transform
+        return np.eye(3)
     return np.array([[m.a, m.c, m.e], [m.b, m.d, m.f], [0.0, 0.0, 1.0]])
+
+
+def compose(ctm: NDArray[np.float64], step: NDArray[np.float64], node: Node, what: str) -> NDArray[np.float64]:
+    """``ctm @ step``, refused when the product overflows (``scale(1e200) scale(1e200)``): ``what`` names
+    the attribute that took it there."""
+    with np.errstate(all="ignore"):
+        product = ctm @ step
+    if not (np.isfinite(step).all() and np.isfinite(product).all()):
+        raise Refusal(f"expected a transform that stays finite, found {what} overflowing it (line {node.line})")
+    return product
 
 
 def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -> float:
@@ -269,7 +345,7 @@ class _Walk:
         self.using: list[str] = []
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
-              shown: bool) -> Iterator[Drawn]:
+              shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
         self.visited += 1
         if self.visited > MAX_EXPANDED:
             raise Refusal(f"expected at most {MAX_EXPANDED} elements once <use> copies are counted, found more")
@@ -288,23 +364,31 @@ class _Walk:
             alpha = 1.0
         opacity *= min(max(alpha, 0.0), 1.0)
         if node is not self.document.root and "transform" in node.attrs:
-            ctm = ctm @ matrix(node.attrs["transform"])
+            ctm = compose(ctm, matrix(node.attrs["transform"], node.line), node,
+                          f"transform {node.attrs['transform'].strip()[:80]!r}")
+        if own.get("mask", "none").strip() not in ("none", "") and shown:
+            raise Refusal(f"expected no mask, found mask={own['mask'].strip()!r} on <{node.tag}> (line {node.line}): "
+                          "masks are not drawn yet; apply the mask in the editor, or use a clip-path")
+        reference = own.get("clip-path", "none").strip()
+        if reference.startswith("url(") and shown:
+            target = reference[4:].partition(")")[0].strip().strip("'\"")
+            clips = clips + ((target[1:] if target.startswith("#") else target, ctm),)
         if node.tag in SHAPES:
             visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
-            yield Drawn(node, style, ctm, opacity, visible, self.document)
+            yield Drawn(node, style, ctm, opacity, visible, self.document, clips)
         elif node.tag == "use":
-            yield from self.use(node, style, ctm, opacity, shown)
+            yield from self.use(node, style, ctm, opacity, shown, clips)
         elif node.tag in _CONTAINERS:
             if node.tag == "svg" and node is not self.document.root:
-                ctm = ctm @ _nested_viewport(node)
+                ctm = compose(ctm, _nested_viewport(node), node, "the nested <svg>'s viewport transform")
             for child in node.children:
-                yield from self.visit(child, style, ctm, opacity, shown)
+                yield from self.visit(child, style, ctm, opacity, shown, clips)
         elif node.tag in _UNSUPPORTED and shown:
             raise Refusal(f"expected shapes, found <{node.tag}> (line {node.line}); "
                           "convert it to paths in the editor (Inkscape: Path > Object to Path)")
 
     def use(self, node: Node, style: dict[str, str], ctm: NDArray[np.float64], opacity: float,
-            shown: bool) -> Iterator[Drawn]:
+            shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
         href = node.attrs.get("href", node.attrs.get("xlink:href", "")).strip()
         if not href.startswith("#"):
             return  # external references are not followed
@@ -314,15 +398,16 @@ class _Walk:
         if href in self.using:
             raise Refusal(f"expected <use> references without a loop, found {href!r} inside itself "
                           f"(line {node.line})")
-        placed = ctm @ np.array([[1.0, 0.0, length(node, "x")], [0.0, 1.0, length(node, "y")], [0.0, 0.0, 1.0]])
+        placed = compose(ctm, np.array([[1.0, 0.0, length(node, "x")], [0.0, 1.0, length(node, "y")], [0.0, 0.0, 1.0]]),
+                         node, "the <use> element's x, y transform")
         self.using.append(href)
         try:
             referenced = target[0]
             if referenced.tag == "symbol":
                 for child in referenced.children:
-                    yield from self.visit(child, style, placed, opacity, shown)
+                    yield from self.visit(child, style, placed, opacity, shown, clips)
             else:
-                yield from self.visit(referenced, style, placed, opacity, shown)
+                yield from self.visit(referenced, style, placed, opacity, shown, clips)
         finally:
             self.using.pop()
 

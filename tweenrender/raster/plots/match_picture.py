@@ -2,7 +2,8 @@
 
 Both keys are drawn as outlines side by side, thin lines join corresponding
 vertices, and a vertex the path duplicates ("inserted") wears a red ring with
-its number of copies. Keys whose boxes overlap are pulled apart for the picture
+its number of copies. Shape hints are lettered dots on both keys, joined by the path they
+force. Keys whose boxes overlap are pulled apart for the picture
 only (the second moves right of the first), and the panel says so, since the
 lines would otherwise cross each other illegibly.
 """
@@ -31,6 +32,7 @@ _KEY_A: Color = (31, 119, 180, 255)
 _KEY_B: Color = (230, 110, 20, 255)
 _PAIR: Color = (70, 74, 85, 255)
 _INSERTED: Color = (205, 30, 40, 255)
+_HINT: Color = (120, 40, 170, 255)
 _GAP = 0.25  # space between keys pulled apart, as a share of the wider key
 
 
@@ -38,7 +40,8 @@ _GAP = 0.25  # space between keys pulled apart, as a share of the wider key
 class CPanel:
     """One segment: keys ``a (m, 2)`` and ``b (n, 2)`` (world units, y up), ``pairs (L, 2)`` into them.
 
-    ``subtitle`` is wrapped to the panel's width; a newline starts a new line.
+    ``subtitle`` is wrapped to the panel's width; a newline starts a new line. ``hints`` are shape
+    hints as ``(letter, vertex of a, vertex of b)``.
     """
 
     title: str
@@ -46,6 +49,7 @@ class CPanel:
     a: NDArray[np.float64]
     b: NDArray[np.float64]
     pairs: NDArray[np.intp]
+    hints: tuple[tuple[str, int, int], ...] = ()
 
 
 def placed_apart(a: NDArray[np.float64], b: NDArray[np.float64]) -> tuple[NDArray[np.float64], float]:
@@ -138,6 +142,20 @@ def _key(p: _Painter, pix: NDArray[np.float64], color: Color, copies: NDArray[np
             p.text(str(i), float(tag[0]), float(tag[1]), 9, _SOFT, centred=True)
 
 
+def _hints(p: _Painter, hints: Sequence[tuple[str, int, int]], pa: NDArray[np.float64],
+           pb: NDArray[np.float64]) -> None:
+    """Each hint: its path between the keys, and a lettered dot on each key."""
+    for letter, i, j in hints:
+        p.line(pa[i], pb[j], _HINT, 2.0, 0.9)
+    for pix, side in ((pa, [h[1] for h in hints]), (pb, [h[2] for h in hints])):
+        out = _outward(pix)
+        for (letter, _, _), v in zip(hints, side):
+            p.dot(pix[v], 7.5, _HINT)
+            p.text(letter, float(pix[v][0]), float(pix[v][1]) + 3.5 * p.scale, 10, _BACK, bold=True, centred=True)
+            tag = pix[v] + out[v] * 22 * p.scale
+            p.text(letter, float(tag[0]), float(tag[1]), 12, _HINT, bold=True, centred=True)
+
+
 def _panel(p: _Painter, panel: CPanel, lay: _Layout, y: float, width: float) -> None:
     s = p.scale
     p.text(panel.title, 14 * s, y + 22 * s, 15, bold=True)
@@ -162,6 +180,7 @@ def _panel(p: _Painter, panel: CPanel, lay: _Layout, y: float, width: float) -> 
         p.line(pa[i[k]], pb[j[k]], _INSERTED if extra else _PAIR, 1.0, 0.75 if extra else 0.45)
     _key(p, pa, _KEY_A, ca)
     _key(p, pb, _KEY_B, cb)
+    _hints(p, panel.hints, pa, pb)
     bottom = y + lay.height
     if lay.note:
         p.text(lay.note, 14 * s, bottom - 24 * s, 10.5, _SOFT)

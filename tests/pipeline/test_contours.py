@@ -1,0 +1,61 @@
+"""``contours``: every drawn contour with what a caller needs to draw or test it — open or closed,
+hole or not, its element, fill rule and paint — read against the SVG files' own text."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import tweenrender as tr
+from tests.helpers import DATA
+from tweenrender.model import DrawnContour
+from tweenrender.pipeline.library import contours
+
+ICONS = DATA / "icons"
+
+
+def test_an_open_polyline_is_an_open_stroke_in_drawing_units() -> None:
+    # feather's check: <polyline points="20 6 9 17 4 12"/>, stroke="currentColor" stroke-width="2", fill="none"
+    (check,) = contours(tr.load_scene(ICONS / "feather" / "check.svg"), 0.0)
+    assert isinstance(check, DrawnContour)
+    assert not check.closed and not check.hole and check.fill is None
+    assert check.stroke == (0.0, 0.0, 0.0, 1.0) and check.stroke_width == pytest.approx(2.0)
+    assert check.element == "polyline1"
+    # y up: the SVG's (20, 6) is (20, -6)
+    assert np.allclose(check.points[0], [20, -6]) and np.allclose(check.points[-1], [4, -12])
+
+
+def test_holes_fill_rule_and_ids_of_a_drawing(tmp_path: Path) -> None:
+    svg = tmp_path / "ring.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">'
+                   '<path id="ring" fill-rule="evenodd" fill="#ff8000" d="M0 0H10V10H0Z M3 3H7V7H3Z"/>'
+                   '<circle cx="5" cy="5" r="1" fill="none" stroke="#0000ff" stroke-width="0.5" opacity="0.5"/></svg>')
+    outer, hole, dot = contours(tr.load_scene(svg), 0.0)
+    assert (outer.element, outer.hole, outer.fill_rule) == ("ring", False, "evenodd")
+    assert (hole.element, hole.hole) == ("ring", True)
+    assert outer.fill == pytest.approx((1.0, 128 / 255, 0.0, 1.0))
+    assert dot.closed and dot.fill is None and dot.stroke == (0.0, 0.0, 1.0, 1.0)
+    assert dot.stroke_width == pytest.approx(0.5) and dot.opacity == pytest.approx(0.5)
+    assert [c.points.shape for c in contours(tr.load_scene(svg), 0.0)] == [p.shape for p in tr.outlines(tr.load_scene(svg), 0.0)]
+
+
+def test_a_scene_files_pixel_stroke_width_in_scene_units(tmp_path: Path) -> None:
+    scene_file = tmp_path / "s.toml"
+    scene_file.write_text('size = [200, 100]\nview = [0, 0, 20, 10]\n[[shape]]\nname = "box"\nstroke = "#000000"\n'
+                          'stroke_width = 4.0\n[[shape.key]]\ntime = 0.0\npoints = [[1, 1], [3, 1], [3, 3]]\n')
+    (box,) = contours(tr.load_scene(scene_file), 0.0)
+    assert box.element == "box" and box.stroke_width == pytest.approx(0.4)  # 10 px a unit
+
+
+def test_the_second_key_of_a_reversed_partner_is_flagged() -> None:
+    # at the last key, a contour whose balanced points run against its own SVG contour says so
+    scene = tr.load_scene([ICONS / "mdi" / "alpha-a.svg", ICONS / "mdi" / "alpha-o-box.svg"])
+    last = contours(scene, scene.duration)
+    assert sum(c.hole for c in last) == 1 and len(last) == 3
+    from tweenrender.core.geometry import signed_area
+
+    # each contour wound as drawn: the hole against the box, the O's counter with the box (nonzero)
+    wound = [np.sign(signed_area(c.points[::-1] if c.reversed else c.points)) for c in last]
+    assert wound[0] != wound[1] or wound[0] != wound[2]

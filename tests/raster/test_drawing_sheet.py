@@ -1,0 +1,30 @@
+"""The sheet of a drawing pair is a filmstrip of the frames as drawn, a row per method."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+import tweenrender as tr
+from tests.helpers import DATA
+from tweenrender.pipeline.job import scene_view, tracks_of
+from tweenrender.pipeline.pictures import write_sheet
+
+
+def test_a_drawing_sheet_shows_its_keys_filled_with_their_own_paint(tmp_path: Path) -> None:
+    import imageio.v3 as iio
+
+    icons = DATA / "icons" / "twemoji"
+    scene = tr.load_scene([icons / "1f4c4.svg", icons / "1f69a.svg"])
+    tracks = tracks_of(scene)
+    view = scene_view(scene, tracks, ("linear", "auto"))
+    picture = iio.imread(write_sheet(scene, tracks, ("linear", "auto"), view, tmp_path / "sheet.png", count=3))
+    # five cells a row (two keys, three inbetweens): a row as tall as a cell, its caption and the label band
+    assert picture.shape[1] == 1280 and picture.shape[0] < 64 + 2 * (1280 / 5 + 90)
+    red = np.all(np.abs(picture[..., :3].astype(int) - (0xDD, 0x2E, 0x44)) <= 3, axis=-1)  # the truck's own red
+    columns = np.flatnonzero(red.any(axis=0))
+    assert red.sum() > 2000  # filled, at full strength, not a faint outline
+    assert columns.min() > 1280 * 0.5  # only towards the end of the strip, where the truck is
+    rows = np.flatnonzero(red.any(axis=1))
+    assert rows.max() - rows.min() > picture.shape[0] / 3  # in both rows

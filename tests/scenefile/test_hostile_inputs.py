@@ -1,0 +1,182 @@
+"""Inputs that cannot hang or explode: only regular files are read, the CSS scanner reads each byte a
+bounded number of times, counts of keys and shapes are refused before work starts, every number of a
+transform is checked.
+
+Each case runs the real command line in a child process with a deadline far above what a correct run
+needs; the assertions are on what it printed, never on how long it took.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from tests.helpers import SQUARE, write_scene
+
+SVG = ('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">'
+       '<path id="a" d="M1 1 L9 1 L9 9 Z"{extra}/></svg>')
+
+
+def _run(*args: object, cwd: Path) -> subprocess.CompletedProcess[str]:
+    """The command in a child; a hang fails the test (the deadline is minutes above a correct run)."""
+    try:
+        return subprocess.run([sys.executable, "-W", "error", "-m", "tweenrender", *map(str, args)],
+                              capture_output=True, text=True, cwd=cwd, timeout=120)
+    except subprocess.TimeoutExpired:
+        pytest.fail("the command did not return: it hung on its input")
+
+
+def _one_line(done: subprocess.CompletedProcess[str], *words: str) -> None:
+    assert done.returncode == 2, done.stderr
+    assert done.stderr.startswith("tweenrender: error: ") and done.stderr.count("\n") == 1, done.stderr
+    assert "Traceback" not in done.stderr and "unexpected" not in done.stderr and "Warning" not in done.stderr
+    for word in words:
+        assert word in done.stderr, done.stderr
+
+
+# -- only regular files -----------------------------------------------------------------------------
+
+def _drawing_scene(folder: Path, svg: str) -> Path:
+    return write_scene(folder, f'[[drawing]]\ntime = 0\nsvg = "{svg}"\n[[drawing]]\ntime = 1\nsvg = "b.svg"\n',
+                       "drawings.toml")
+
+
+@pytest.mark.parametrize("kind", ["fifo", "device", "folder"])
+@pytest.mark.parametrize("how", ["command line", "scene's drawing", "scene's key"])
+def test_a_non_regular_svg_is_refused_at_once(tmp_path: Path, kind: str, how: str) -> None:
+    (tmp_path / "b.svg").write_text(SVG.format(extra=""))
+    if kind == "fifo":
+        os.mkfifo(tmp_path / "a.svg")  # no writer ever comes: open() without O_NONBLOCK waits for ever
+        name = "a.svg"
+    elif kind == "device":
+        (tmp_path / "a.svg").symlink_to("/dev/zero")  # endless bytes
+        name = "a.svg"
+    else:
+        (tmp_path / "a.svg").mkdir()
+        name = "a.svg"
+    if how == "command line":
+        done = _run("check", name, "b.svg", cwd=tmp_path)
+    elif how == "scene's drawing":
+        _drawing_scene(tmp_path, name)
+        done = _run("check", "drawings.toml", cwd=tmp_path)
+    else:
+        write_scene(tmp_path, f'[[shape]]\nname = "s"\n[[shape.key]]\ntime = 0\n'
+                              f'points = {{ svg = "{name}", id = "a" }}\n', "keyed.toml")
+        done = _run("check", "keyed.toml", cwd=tmp_path)
+    _one_line(done, "a.svg", {"fifo": "pipe", "device": "device", "folder": "folder"}[kind])
+
+
+# -- the <style> scanner ----------------------------------------------------------------------------
+
+class Counted(str):
+    """A ``str`` that adds up how many characters its ``find`` calls scanned."""
+
+    scanned = 0
+
+    def find(self, sub: str, start: int = 0, end: int | None = None) -> int:  # type: ignore[override]
+        found = str.find(self, sub, start, len(self) if end is None else end)
+        Counted.scanned += (found + len(sub) if found >= 0 else (len(self) if end is None else end)) - start
+        return found
+
+
+def _style_rules(css: str) -> list:  # type: ignore[type-arg]
+    from tweenrender.scenefile.css import style_rules
+
+    Counted.scanned = 0
+    return style_rules(Counted(css))
+
+
+HOSTILE = {
+    "one 120 kB selector": "a" * 120_000,
+    "one 120 kB rule": "path" + ".x" * 60_000 + " { fill: red }",
+    "many rules": "path.c { fill: red }\n" * 12_000,
+    "unclosed comments": "/*" * 60_000,
+    "unclosed blocks": "a {" * 40_000,
+    "stray closings": "} a" * 40_000,
+}
+
+
+@pytest.mark.parametrize("name", list(HOSTILE))
+def test_the_style_scanner_reads_each_character_a_bounded_number_of_times(name: str) -> None:
+    css = HOSTILE[name]
+    _style_rules(css)
+    # every character is looked at (no part of the sheet skipped), and none more than four times
+    assert len(css) <= Counted.scanned <= 4 * len(css), (Counted.scanned, len(css))
+
+
+SMALL = ["a{fill:red}", "/* x */ path.c, #i { fill: blue; stroke: red }", "a {fill:red", "@media x { a { fill: red } }",
+         "}a{fill:red}b{c}", "/* never closed a{fill:red}", "a/**/{fill:red}", "x{y:z}{}{a:b}"]
+
+
+@pytest.mark.parametrize("css", SMALL)
+def test_the_scanner_finds_what_a_regular_expression_finds(css: str) -> None:
+    """On small sheets, the rules are those of the obvious (but quadratic) regular expression."""
+    import re
+
+    text = re.sub(r"/\*.*?\*/", "", css, flags=re.S)
+    if "/*" in text:
+        text = text[:text.index("/*")]  # a comment never closed runs to the end, as CSS says
+    expected = [(s, b) for s, b in re.findall(r"([^{}]+)\{([^{}]*)\}", text)]
+    assert _style_rules(css) == expected
+
+
+def test_a_drawing_with_a_huge_style_sheet_loads(tmp_path: Path) -> None:
+    sheet = "path.c { fill: red }\n" * 12_000 + "path" + ".x" * 60_000 + " { fill: red }"
+    (tmp_path / "a.svg").write_text(SVG.format(extra=' class="c"').replace("<path", f"<style>{sheet}</style><path"))
+    (tmp_path / "b.svg").write_text(SVG.format(extra=""))
+    done = _run("check", "a.svg", "b.svg", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+
+
+# -- counts refused before work -----------------------------------------------------------------------
+
+def test_too_many_keys_are_refused_before_work(tmp_path: Path) -> None:
+    keys = "".join(f"[[shape.key]]\ntime = {i}\npoints = [[0, 0], [1, 0], [1, 1]]\n" for i in range(10_001))
+    write_scene(tmp_path, '[[shape]]\nname = "s"\n' + keys, "keys.toml")
+    _one_line(_run("check", "keys.toml", cwd=tmp_path), "10000 keys", "10001")
+
+
+def test_too_many_shapes_are_refused_before_work(tmp_path: Path) -> None:
+    shapes = "".join(f'[[shape]]\nname = "s{i}"\n[[shape.key]]\ntime = 0\npoints = [[0, 0], [1, 0], [1, 1]]\n'
+                     for i in range(10_001))
+    write_scene(tmp_path, shapes, "shapes.toml")
+    _one_line(_run("check", "shapes.toml", cwd=tmp_path), "10000 shapes", "10001")
+
+
+def test_as_many_keys_as_allowed_still_load(tmp_path: Path) -> None:
+    from tweenrender.scenefile import LIMITS
+
+    assert LIMITS["keys"] == 10_000 and LIMITS["shapes"] == 10_000
+    keys = "".join(f"[[shape.key]]\ntime = {i}\npoints = [[0, 0], [1, 0], [1, 1]]\n" for i in range(10_000))
+    write_scene(tmp_path, '[[shape]]\nname = "s"\n' + keys, "keys.toml")
+    done = _run("check", "keys.toml", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+
+
+# -- transforms ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("transform", ["scale(NaN)", "scale(nan)", "translate(1e308) scale(1e308)", "scale(1e308)",
+                                       "scale(1e400)", "matrix(1 0 0 1 1e400 0)", "rotate(1e400)",
+                                       "scale(1e200) scale(1e200)", "skewX(inf)"])
+def test_every_number_of_a_transform_is_checked(tmp_path: Path, transform: str) -> None:
+    (tmp_path / "a.svg").write_text(SVG.format(extra=f' transform="{transform}"'))
+    (tmp_path / "b.svg").write_text(SVG.format(extra=""))
+    for args in (("check", "a.svg", "b.svg"), ("render", "a.svg", "b.svg", "-o", "x.gif", "--frames", "0:2")):
+        done = _run(*args, cwd=tmp_path)
+        _one_line(done, "a.svg", "transform")
+    assert not (tmp_path / "x.gif").exists()
+
+
+def test_a_large_but_finite_transform_still_draws(tmp_path: Path) -> None:
+    (tmp_path / "a.svg").write_text(SVG.format(extra=' transform="scale(1e-3) scale(1e3)"'))
+    (tmp_path / "b.svg").write_text(SVG.format(extra=""))
+    assert _run("check", "a.svg", "b.svg", cwd=tmp_path).returncode == 0
+
+
+def test_a_regular_scene_still_loads(tmp_path: Path) -> None:
+    write_scene(tmp_path, SQUARE)
+    assert _run("check", "scene.toml", cwd=tmp_path).returncode == 0

@@ -1,0 +1,90 @@
+"""Gradient fills between keys: stops blended in OKLab, geometry carried by the element's motion.
+
+A key's gradient is re-expressed relative to its element's bounding box at that key
+(``R = B⁻¹ · M``, with ``B`` the map of the unit square onto the box); an inbetween takes the
+blend of the two keys' relative gradients through its own bounding box, so the gradient moves,
+turns and stretches with the element and is each key's own gradient at its key. A plain colour
+blends as a gradient of that one colour; gradients of different kinds (linear, radial) or spreads
+take the nearer key's.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..model import Color, Gradient, Paint
+from .paint import blend_colors
+
+__all__ = ["Box", "box_of", "blend_gradient", "color_at"]
+
+Box = tuple[float, float, float, float]
+"""``(xmin, ymin, xmax, ymax)`` in world units."""
+_FLAT = 1e-12
+
+
+def box_of(contours: list[NDArray[np.float64]]) -> Box:
+    """The bounding box of the contours ``(N_i, 2)``."""
+    every = np.concatenate(contours)
+    (x0, y0), (x1, y1) = every.min(axis=0), every.max(axis=0)
+    return float(x0), float(y0), float(x1), float(y1)
+
+
+def _frame(box: Box) -> NDArray[np.float64] | None:
+    """The 3x3 map of the unit square onto ``box``, or None for a flat box."""
+    x0, y0, x1, y1 = box
+    w, h = x1 - x0, y1 - y0
+    if w <= _FLAT * max(1.0, abs(x0), abs(x1)) or h <= _FLAT * max(1.0, abs(y0), abs(y1)):
+        return None
+    return np.array([[w, 0.0, x0], [0.0, h, y0], [0.0, 0.0, 1.0]])
+
+
+def _matrix(gradient: Gradient) -> NDArray[np.float64]:
+    a, b, c, d, e, f = gradient.matrix
+    return np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]])
+
+
+def color_at(gradient: Gradient, offset: float) -> Color:
+    """The gradient's colour at ``offset`` in [0, 1] (straight RGBA, interpolated as SVG does, in sRGB)."""
+    offsets = np.array([o for o, _ in gradient.stops])
+    colours = np.array([c for _, c in gradient.stops], dtype=float)
+    return tuple(int(round(np.interp(offset, offsets, colours[:, k]))) for k in range(4))  # type: ignore[return-value]
+
+
+def _as_gradient(paint: Paint, like: Gradient) -> Gradient | None:
+    if paint.gradient is not None:
+        return paint.gradient
+    if paint.fill is None:
+        return None
+    return Gradient(like.kind, like.geometry, like.matrix, ((0.0, paint.fill), (1.0, paint.fill)), like.spread)
+
+
+def blend_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: float) -> Gradient | None:
+    """The gradient fill at eased ``t`` in (0, 1) between keys painted ``p0`` (element's box ``box0``) and
+    ``p1`` (``box1``), for an inbetween whose box is ``box``; None when neither key has a gradient."""
+    like = p0.gradient or p1.gradient
+    if like is None:
+        return None
+    g0, g1 = _as_gradient(p0, like), _as_gradient(p1, like)
+    if g0 is None or g1 is None:  # no fill on one side: the other's gradient, fading by the fill's alpha
+        return g0 or g1
+    near, far = (g0, g1) if t < 0.5 else (g1, g0)
+    near_box, far_box = (box0, box1) if t < 0.5 else (box1, box0)
+    frames = _frame(near_box), _frame(far_box), _frame(box)
+    if frames[0] is None or frames[2] is None:
+        return near
+    relative_near = np.linalg.solve(frames[0], _matrix(near))
+    same = near.kind == far.kind and len(near.geometry) == len(far.geometry)
+    if same and frames[1] is not None:
+        relative_far = np.linalg.solve(frames[1], _matrix(far))
+        weight = t if near is g0 else 1.0 - t  # the far key's share
+        relative = (1.0 - weight) * relative_near + weight * relative_far
+        geometry = tuple(float(a + weight * (b - a)) for a, b in zip(near.geometry, far.geometry))
+    else:
+        relative, geometry = relative_near, near.geometry
+    placed = frames[2] @ relative
+    offsets = sorted({o for o, _ in g0.stops} | {o for o, _ in g1.stops})
+    stops = tuple((o, blend_colors(color_at(g0, o), color_at(g1, o), np.array([t]))[0]) for o in offsets)
+    return Gradient(near.kind, geometry,
+                    (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
+                     float(placed[0, 2]), float(placed[1, 2])), stops, near.spread)  # type: ignore[arg-type]

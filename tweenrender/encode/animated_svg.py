@@ -1,0 +1,126 @@
+"""An animated SVG (SMIL) from a :class:`VectorClip`: browsers play it as it is.
+
+A full-size rectangle is the background; each run (an element over the frames of one segment) is
+a group, shown only over its frames (``visibility``, discrete) and faded by the paint's
+``opacity``, holding one ``<path>``: all its contours as subpaths, so holes follow the fill rule.
+``<animate>`` moves ``d`` through the path keyframes (``calcMode="spline"`` with the easing's
+``keySplines`` for an exact segment) and ``fill``, ``fill-opacity``, ``stroke``,
+``stroke-opacity``, ``stroke-width`` through the paint keyframes. Frame ``f`` is at
+``keyTime f / F`` of ``dur = F / fps`` seconds; every animation freezes at its end.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from xml.sax.saxutils import escape, quoteattr
+
+from .atomic import replacing
+from .vector_data import STRAIGHT, Array, Handles, VectorClip, VectorRun
+
+__all__ = ["svg_document", "write_animated_svg"]
+
+_EARLY = 1e-3  # frames: how much earlier than its first frame a run is shown (and hidden after its last)
+
+
+def write_animated_svg(clip: VectorClip, target: Path) -> Path:
+    """Write ``clip`` to ``target`` as an animated SVG, atomically; returns ``target``."""
+    text = svg_document(clip, target.stem)
+    with replacing(target, ".svg", "the SVG file") as temporary:
+        temporary.write_text(text, encoding="utf-8")
+    return target
+
+
+def svg_document(clip: VectorClip, title: str = "tweenrender") -> str:
+    """The SVG text of ``clip``."""
+    width, height = clip.size
+    duration = f"{_number(clip.frames / clip.fps, 6)}s"
+    lines = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+             f'viewBox="0 0 {width} {height}">', f"<title>{escape(title)}</title>"]
+    r, g, b, a = clip.background
+    if a > 0:
+        lines.append(f'<rect width="{width}" height="{height}" fill="{_hex((r / 255, g / 255, b / 255))}"'
+                     + (f' fill-opacity="{_number(a / 255, 4)}"' if a < 255 else "") + "/>")
+    for run in clip.runs:
+        lines.extend(_run(run, clip.frames, duration))
+    lines.append("</svg>")
+    return "\n".join(lines) + "\n"
+
+
+def _number(value: float, digits: int = 3) -> str:
+    text = f"{value:.{digits}f}".rstrip("0").rstrip(".")
+    return "0" if text in ("", "-0") else text
+
+
+def _hex(rgb: Array | tuple[float, float, float]) -> str:
+    return "#" + "".join(f"{int(round(float(v) * 255)):02x}" for v in rgb)
+
+
+def _d(paths: list[Array], closed: tuple[bool, ...]) -> str:
+    """One path's ``d``: ``M x,y L x,y … Z`` per contour (``(L, 2)`` pixels each)."""
+    parts = []
+    for points, shut in zip(paths, closed):
+        coords = [f"{_number(x)},{_number(y)}" for x, y in points.tolist()]
+        parts.append("M" + coords[0] + " L" + " ".join(coords[1:]) + (" Z" if shut else ""))
+    return " ".join(parts)
+
+
+def _animate(name: str, frames: tuple[int, ...], values: list[str], total: int, duration: str,
+             ease: Handles = STRAIGHT) -> str:
+    """An ``<animate>`` of ``name`` through ``values`` at clip ``frames``, held before the first and
+    after the last (keyTimes run from 0 to 1); ``""`` when the value never changes."""
+    if all(v == values[0] for v in values[1:]):
+        return ""
+    times = [f / total for f in frames]
+    splines = [ease] * (len(frames) - 1)
+    held = STRAIGHT
+    if frames[0] > 0:
+        times, values, splines = [0.0, *times], [values[0], *values], [held, *splines]
+    times, values, splines = [*times, 1.0], [*values, values[-1]], [*splines, held]
+    spline = "" if ease == STRAIGHT else ' calcMode="spline" keySplines="' + ";".join(
+        " ".join(_number(v, 4) for v in s) for s in splines) + '"'
+    return (f'<animate attributeName="{name}" dur="{duration}" fill="freeze" '
+            f'keyTimes="{";".join(_number(t, 9) for t in times)}" values={quoteattr(";".join(values))}{spline}/>')
+
+
+def _run(run: VectorRun, total: int, duration: str) -> list[str]:
+    lines = [f"<g id={quoteattr(f'{run.element}-{run.first}')}"
+             + (' visibility="hidden"' if run.first > 0 else "") + _static_opacity(run) + ">"]
+    if run.first > 0 or run.stop < total:
+        # switched a thousandth of a frame early, so a frame's own time is never on the edge
+        values, times = (["hidden", "visible"], [0.0, (run.first - _EARLY) / total]) if run.first > 0 \
+            else (["visible"], [0.0])
+        if run.stop < total:
+            values, times = [*values, "hidden"], [*times, (run.stop - _EARLY) / total]
+        lines.append(f'<animate attributeName="visibility" dur="{duration}" fill="freeze" calcMode="discrete" '
+                     f'keyTimes="{";".join(_number(t, 9) for t in times)}" values="{";".join(values)}"/>')
+    lines.append(_animate("opacity", run.paint_frames, [_number(o, 4) for o in run.opacity], total, duration))
+    shapes = [[p[k] for p in run.paths] for k in range(len(run.path_frames))]
+    d_values = [_d(s, run.closed) for s in shapes]
+    attributes = [f'd="{d_values[0]}"', f'fill-rule="{run.fill_rule}"']
+    inner = [_animate("d", run.path_frames, d_values, total, duration, run.ease)]
+    for name, colours in (("fill", run.fill), ("stroke", run.stroke)):
+        if colours is None:
+            attributes.append(f'{name}="none"')
+            continue
+        hexes = [_hex(c[:3]) for c in colours]
+        alphas = [_number(c[3], 4) for c in colours]
+        attributes += [f'{name}="{hexes[0]}"', f'{name}-opacity="{alphas[0]}"']
+        inner += [_animate(name, run.paint_frames, hexes, total, duration),
+                  _animate(f"{name}-opacity", run.paint_frames, alphas, total, duration)]
+    if run.stroke is not None:
+        widths = [_number(w, 4) for w in run.width]
+        attributes += [f'stroke-width="{widths[0]}"', f'stroke-linecap="{run.cap}"',
+                       f'stroke-linejoin="{run.join}"', f'stroke-miterlimit="{_number(run.miter_limit, 4)}"']
+        inner.append(_animate("stroke-width", run.paint_frames, widths, total, duration))
+    inner = [line for line in inner if line]
+    lines.append("<path " + " ".join(attributes) + ("/>" if not inner else ">"))
+    if inner:
+        lines += inner + ["</path>"]
+    lines.append("</g>")
+    return [line for line in lines if line]
+
+
+def _static_opacity(run: VectorRun) -> str:
+    opacity = float(run.opacity[0])
+    return "" if opacity == 1.0 else f' opacity="{_number(opacity, 4)}"'
+

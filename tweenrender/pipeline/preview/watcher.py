@@ -1,0 +1,70 @@
+"""Watches the files a scene was read from and calls back when one of them changes on disk.
+
+``watchfiles`` (inotify on Linux) watches the folders that hold the files, not the files
+themselves: an editor that saves by writing a new file and renaming it over the old one
+replaces the file's inode, which a watch on the file would lose.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+from pathlib import Path
+from typing import Callable, Iterable
+
+__all__ = ["FileWatcher"]
+
+_QUIET_MS = 20  # a burst of events (truncate, write, rename) ends after this much quiet
+_RETRY_SECONDS = 0.5  # a folder that cannot be watched (removed, renamed) is tried again after this
+
+
+class FileWatcher:
+    """Calls ``on_change`` (from its own thread) when any file given to :meth:`watch` changes."""
+
+    def __init__(self, on_change: Callable[[], None]) -> None:
+        self._on_change = on_change
+        self._files: frozenset[str] = frozenset()
+        self._lock = threading.Lock()
+        self._stop = threading.Event()
+        self._restart = threading.Event()  # set to end the current watch: new files, or stopping
+        self._thread = threading.Thread(target=self._run, name="tweenrender-watch", daemon=True)
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def watch(self, files: Iterable[Path]) -> None:
+        """Watch ``files`` (they need not exist yet, but their folders should)."""
+        names = set()
+        for file in files:
+            names.add(os.path.abspath(file))
+            names.add(os.path.realpath(file))  # a symbolic link's target changes too
+        with self._lock:
+            if frozenset(names) == self._files:
+                return
+            self._files = frozenset(names)
+        self._restart.set()
+
+    def stop(self, timeout: float = 2.0) -> None:
+        self._stop.set()
+        self._restart.set()
+        if self._thread.is_alive():
+            self._thread.join(timeout)
+
+    def _run(self) -> None:
+        import watchfiles
+
+        while not self._stop.is_set():
+            with self._lock:
+                files = self._files
+            self._restart.clear()
+            folders = sorted({os.path.dirname(f) for f in files if os.path.isdir(os.path.dirname(f))})
+            if not folders:
+                self._restart.wait(_RETRY_SECONDS)
+                continue
+            try:
+                for _changes in watchfiles.watch(*folders, watch_filter=lambda _change, path: path in files,
+                                                 recursive=False, step=_QUIET_MS, debounce=400,
+                                                 stop_event=self._restart, raise_interrupt=False):
+                    self._on_change()
+            except (OSError, RuntimeError):  # a folder went away while watched: try again shortly
+                self._restart.wait(_RETRY_SECONDS)

@@ -1,0 +1,133 @@
+"""SVG ``linearGradient`` and ``radialGradient`` paint servers read into :class:`~tweenrender.model.Gradient` s.
+
+Attributes and stops are inherited through ``href`` chains, as SVG says; ``gradientUnits``
+(``objectBoundingBox`` by default, or ``userSpaceOnUse``), ``gradientTransform`` and
+``spreadMethod`` are kept; the result is placed in world units by the element's own transform.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..model import Color, Gradient
+from .svg_document import Document, Node, matrix, own_style
+
+__all__ = ["read_gradient", "gradient_ref"]
+
+_DEPTH = 8  # href links followed at most
+_DEFAULTS = {"linearGradient": {"x1": "0", "y1": "0", "x2": "1", "y2": "0"},
+             "radialGradient": {"cx": "0.5", "cy": "0.5", "r": "0.5"}}
+
+
+def gradient_ref(value: str) -> str | None:
+    """The id in ``url(#id)`` (with any fallback after it), else None."""
+    value = value.strip()
+    if not value.startswith("url("):
+        return None
+    ref = value[4:].partition(")")[0].strip().strip("'\"")
+    return ref[1:] if ref.startswith("#") else None
+
+
+def _chain(ident: str, document: Document) -> list[Node]:
+    """The gradient node of ``ident`` and the nodes its ``href`` leads to, nearest first."""
+    chain: list[Node] = []
+    while ident and len(chain) <= _DEPTH:
+        nodes = document.ids.get(ident)
+        if not nodes or nodes[0].tag not in _DEFAULTS or nodes[0] in chain:
+            break
+        chain.append(nodes[0])
+        href = nodes[0].attrs.get("href", nodes[0].attrs.get("xlink:href", "")).strip()
+        ident = href[1:] if href.startswith("#") else ""
+    return chain
+
+
+def _number(text: str, relative: float) -> float:
+    """A gradient coordinate: a number, or a percentage of ``relative``."""
+    text = text.strip()
+    try:
+        value = float(text[:-1]) / 100.0 * relative if text.endswith("%") else float(text)
+    except ValueError:
+        return math.nan
+    return value
+
+
+def _stops(nodes: list[Node], document: Document, opacity: float) -> list[tuple[float, Color]]:
+    from svgelements import Color as SvgColor
+
+    holder = next((n for n in nodes if any(c.tag == "stop" for c in n.children)), None)
+    if holder is None:
+        return []
+    stops: list[tuple[float, Color]] = []
+    last = 0.0
+    for stop in (c for c in holder.children if c.tag == "stop"):
+        own = own_style(stop, document)
+        offset = _number(stop.attrs.get("offset", "0"), 1.0)
+        offset = min(max(offset if math.isfinite(offset) else 0.0, 0.0, last), 1.0)  # clamped, never decreasing
+        last = offset
+        try:
+            c = SvgColor(own.get("stop-color", "black"))
+        except (ValueError, TypeError):
+            c = SvgColor("black")
+        if c.value is None:
+            c = SvgColor("black")
+        try:
+            alpha = float(own.get("stop-opacity", "1").strip().rstrip("%"))
+        except ValueError:
+            alpha = 1.0
+        alpha = min(max(alpha, 0.0), 1.0) * c.alpha * opacity
+        stops.append((offset, (c.red, c.green, c.blue, int(round(alpha)))))
+    return stops
+
+
+def read_gradient(ident: str, document: Document, user_box: tuple[float, float, float, float],
+                  to_world: NDArray[np.float64], viewport: tuple[float, float], opacity: float = 1.0
+                  ) -> Gradient | None:
+    """The gradient ``ident`` filling an element whose geometry spans ``user_box`` ``(x, y, w, h)`` in its
+    own user units, drawn through ``to_world`` (3x3, user units → world); ``viewport`` ``(w, h)`` is what
+    percentages of ``userSpaceOnUse`` take. None when ``ident`` is no gradient or has no stops (the
+    paint's fallback then applies). ``opacity`` multiplies the stops' alpha."""
+    chain = _chain(ident, document)
+    if not chain:
+        return None
+    kind = chain[0].tag
+
+    def attribute(name: str, default: str | None = None) -> str | None:
+        for node in chain:
+            if name in node.attrs:
+                return node.attrs[name]
+        return default
+
+    stops = _stops(chain, document, opacity)
+    if not stops:
+        return None
+    units = (attribute("gradientUnits", "objectBoundingBox") or "").strip()
+    bounding = units != "userSpaceOnUse"
+    x, y, w, h = user_box
+    # percentages: of the bounding box (whose units are fractions already), else of the viewport
+    across, down = (1.0, 1.0) if bounding else viewport
+    relative = {"x1": across, "x2": across, "cx": across, "fx": across, "y1": down, "y2": down, "cy": down,
+                "fy": down, "r": 1.0 if bounding else math.hypot(across, down) / math.sqrt(2)}
+    names = ("x1", "y1", "x2", "y2") if kind == "linearGradient" else ("cx", "cy", "r", "fx", "fy")
+    values = []
+    for name in names:
+        if name in ("fx", "fy"):  # the focus defaults to the centre
+            text = attribute(name) or attribute("c" + name[1], _DEFAULTS[kind]["c" + name[1]])
+        else:
+            text = attribute(name, _DEFAULTS[kind].get(name, "0"))
+        values.append(_number(text or "0", relative[name]))
+    if not all(math.isfinite(v) for v in values):
+        return None
+    own = matrix(attribute("gradientTransform", "") or "")
+    if bounding:
+        if w <= 0 or h <= 0:
+            return None  # SVG: a bounding-box gradient on a flat element is not drawn; the fallback colour is
+        own = np.array([[w, 0.0, x], [0.0, h, y], [0.0, 0.0, 1.0]]) @ own
+    placed = to_world @ own
+    spread = (attribute("spreadMethod", "pad") or "pad").strip()
+    return Gradient("linear" if kind == "linearGradient" else "radial", tuple(float(v) for v in values),
+                    (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
+                     float(placed[0, 2]), float(placed[1, 2])),
+                    tuple(stops), spread if spread in ("pad", "reflect", "repeat") else "pad")

@@ -24,7 +24,8 @@ from tweenrender.core.crossings import self_crossings  # noqa: E402
 from tweenrender.core.measures import SWEEP, edge_error  # noqa: E402
 from tweenrender.core.methods import interpolate  # noqa: E402
 from tweenrender.core.timeline import build_track  # noqa: E402
-from tweenrender.model import BALANCES, METHODS  # noqa: E402
+from tweenrender.core.methods import METHODS  # noqa: E402
+from tweenrender.model import BALANCES  # noqa: E402
 from tweenrender.scenefile import load_scene  # noqa: E402
 
 

@@ -27,7 +27,7 @@ sys.path.insert(0, str(ROOT))
 
 from tweenrender.core import arap as arap_module  # noqa: E402
 from tweenrender.core.methods import interpolate  # noqa: E402
-from tweenrender.model import METHODS  # noqa: E402
+from tweenrender.core.methods import METHODS  # noqa: E402
 
 BLOCK = 32
 REPEATS = 5

@@ -18,7 +18,11 @@ tangle themselves (:mod:`tweenrender.core.tangles`), else it is left out. For ev
 Then the compatible triangulation of two 500-vertex keys (two real outlines resampled by arc
 length) and one frame of it. Times are printed with the machine's load, never asserted.
 
-Run: ``python benchmarks/method_crossings.py [pairs]`` (default 40).
+Flubber (npm ``flubber``, the web's usual shape morph) is measured beside them on the single
+outlines when ``FLUBBER_DIR`` names a folder where ``npm install flubber`` was run
+(``benchmarks/flubber_morph.js`` runs it under node).
+
+Run: ``[FLUBBER_DIR=...] python benchmarks/method_crossings.py [pairs]`` (default 40).
 """
 
 from __future__ import annotations
@@ -38,7 +42,7 @@ import tweenrender as tr  # noqa: E402
 from tweenrender.core import injective as injective_module  # noqa: E402
 from tweenrender.core.tangles import parents, tangles  # noqa: E402
 from tweenrender.core.timeline import build_track, pair_paths  # noqa: E402
-from tweenrender.model import METHODS  # noqa: E402
+from tweenrender.core.methods import METHODS  # noqa: E402
 
 T = np.round(np.arange(1, 20) * 0.05, 2)
 AREA_T = (0.25, 0.5, 0.75)
@@ -158,6 +162,55 @@ def measure(pairs: list[tuple[Path, Path]]) -> None:
               f"{1000 * spent / frame_count:>10.2f}")
 
 
+def flubber_row(pairs: list[tuple[Path, Path]]) -> None:
+    """The same measures for flubber on the single outlines, if ``FLUBBER_DIR`` names a folder where
+    ``npm install flubber`` was run (flubber matches the drawn outlines itself: copies are dropped)."""
+    import json
+    import shutil
+    import subprocess
+
+    folder = os.environ.get("FLUBBER_DIR")
+    if not folder or shutil.which("node") is None:
+        print("flubber: not run (set FLUBBER_DIR to a folder with node_modules/flubber)")
+        return
+    from tweenrender.core.crossings import distinct_outline
+
+    single = [c for c in cases(pairs) if len(c[2]) == 1 and c[1].pairs[c[2][0]].closed]
+    asked = []
+    for _, segment, moving, _ in single:
+        pair = segment.pairs[moving[0]]
+        a, b = distinct_outline(pair.k0), distinct_outline(pair.k1)
+        size = max(np.ptp(a, axis=0).max(), np.ptp(b, axis=0).max())
+        asked.append({"a": a.tolist(), "b": b.tolist(), "t": [*T.tolist(), *AREA_T], "segment": size / 50})
+    done = subprocess.run(["node", str(ROOT / "benchmarks" / "flubber_morph.js")], input=json.dumps(asked),
+                          capture_output=True, text=True, check=True,
+                          env={**os.environ, "NODE_PATH": str(Path(folder) / "node_modules")})
+    bad_cases = bad_frames = 0
+    deviations, saw, seen, spent = [], [], [], []
+    for (name, segment, moving, _), found in zip(single, json.loads(done.stdout)):
+        pair = segment.pairs[moving[0]]
+        rings = [np.array(r, dtype=np.float64) for r in found["rings"]]
+        tangled = [tangles([r], [True], [None]) for r in rings[:len(T)]]
+        bad_frames += sum(tangled)
+        bad_cases += any(tangled)
+        a0, a1 = signed_area(pair.k0), signed_area(pair.k1)
+        for i, t in enumerate(AREA_T):
+            reference = (1 - t) * a0 + t * a1
+            if reference != 0:
+                # flubber winds its rings its own way: areas compared unsigned
+                deviations.append(abs(abs(signed_area(rings[len(T) + i])) / abs(reference) - 1))
+        mid = rings[len(T) + 1]
+        keys = max(turning(pair.k0), turning(pair.k1))
+        saw.append(turning(mid) / keys if keys > 0 else 1.0)
+        tolerance = SEEN * max(np.ptp(pair.k0, axis=0).max(), np.ptp(pair.k1, axis=0).max())
+        keys = max(turning(simplify(pair.k0, tolerance)), turning(simplify(pair.k1, tolerance)))
+        seen.append(turning(simplify(mid, tolerance)) / keys if keys > 0 else 1.0)
+        spent.append(found["ms"])
+    print(f"{'flubber (1-outline)':<18}{bad_cases:>14}{bad_frames:>8}{'':>10}{'':>10}"
+          f"{np.median(deviations):>15.3f}{np.percentile(deviations, 90):>7.3f}{np.mean(np.array(saw) > 1.5):>9.1%}"
+          f"{np.mean(np.array(seen) > 1.5):>9.1%}{np.mean(spent):>10.2f}  (node, frames only)")
+
+
 def resample(points: np.ndarray, count: int) -> np.ndarray:
     """``count`` points evenly by arc length around a closed polygon, from its topmost vertex."""
     points = np.roll(points, -int(np.argmax(points[:, 1])), axis=0)
@@ -195,7 +248,9 @@ def main() -> None:
     print(f"load average {os.getloadavg()[0]:.2f} on {os.cpu_count()} cores")
     injective_module._Paths(np.array([[0, 0], [1, 0], [0, 1.0]]), np.array([[0, 0], [1, 0], [0, 1.0]]),
                             [0, 3], [True])  # scipy's import, paid once before timing
-    measure(sample(count))
+    pairs = sample(count)
+    measure(pairs)
+    flubber_row(pairs)
     big_mesh()
     print(f"load average {os.getloadavg()[0]:.2f}")
 

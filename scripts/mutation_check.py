@@ -245,7 +245,7 @@ MUTANTS = [
     Mutant("manifest: an unlisted entry accepted", "tweenrender/encode/manifest.py",
            "if entry is None or not ours(name):", "if entry is not None and not ours(name):", OWNED),
     Mutant("report: a shape name left unescaped in the table", "tweenrender/reports/html_report.py",
-           "<h3>{_esc(entry['name'])}", "<h3>{entry['name']}", ("tests/cli/test_names.py",)),
+           'where = _esc(entry["name"])', 'where = entry["name"]', ("tests/cli/test_names.py",)),
     Mutant("svg: nested viewport scaled by max (slice) not min (meet)", "tweenrender/scenefile/svg_document.py",
            "s = min(width / bw, height / bh)", "s = max(width / bw, height / bh)", DRAWING),
     Mutant("svg: display none drawn", "tweenrender/scenefile/svg_document.py",

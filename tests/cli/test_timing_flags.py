@@ -67,3 +67,36 @@ def test_the_library_names_the_keyword(tmp_path) -> None:
         tr.load_scene(drawings, ease="steps(0)")
     with pytest.raises(tr.OptionError, match=r"^hold=: expected seconds from 0"):
         tr.load_scene(drawings, hold=-1)
+
+
+def _path_keyframes(document: dict) -> list[list[dict]]:
+    found: list[list[dict]] = []
+
+    def walk(node: object) -> None:
+        if isinstance(node, dict):
+            if node.get("ty") == "sh" and isinstance(node.get("ks"), dict) and node["ks"].get("a") == 1:
+                found.append(node["ks"]["k"])
+            for value in node.values():
+                walk(value)
+        elif isinstance(node, list):
+            for value in node:
+                walk(value)
+
+    walk(document)
+    return found
+
+
+def test_lottie_of_held_drawings_moves_after_the_hold(tmp_path) -> None:
+    """Exact linear keyframes start where the hold ends, with the curve's own handles."""
+    import json
+
+    import tweenrender as tr
+
+    scene = tr.load_scene(_drawings(tmp_path), step=1.0, hold=0.5, ease="ease-in")
+    tr.write(scene, tmp_path / "held.json", fps=4, method="linear")
+    keyframes = _path_keyframes(json.loads((tmp_path / "held.json").read_text()))
+    assert keyframes
+    for frames in keyframes:
+        assert [k["t"] for k in frames] == [2, 6]  # 0.5 s held at 4 fps, then 1 s of motion
+        assert frames[0]["o"]["x"] == [0.42] and frames[0]["o"]["y"] == [0.0]
+        assert frames[0]["i"]["x"] == [1.0] and frames[0]["i"]["y"] == [1.0]

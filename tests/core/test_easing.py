@@ -267,3 +267,28 @@ def test_every_method_follows_an_overshoot_without_nan(tmp_path, method: str) ->
         assert t < -0.1
         want = keys[0].points + t * (keys[1].points - keys[0].points)
         assert tr.outlines(scene, time, method=method)[0] == pytest.approx(want, abs=1e-9)
+
+
+def test_injective_overshoots_rigidly_with_its_weights_clamped(tmp_path) -> None:
+    """Past a key, injective keeps that key's shape (its weights stop at 0) while its frame moves on."""
+    k0 = [[0, 0], [4, 0], [4, 1], [1, 1], [1, 3], [0, 3]]
+    k1 = [[10, 0], [13, 0], [13, 3], [12, 3], [12, 1], [11, 1], [10, 1]]
+    text = ('[[shape]]\nname = "s"\nmethod = "injective"\n'
+            f'[[shape.key]]\ntime = 0\npoints = {k0}\nease = "cubic-bezier(0.6, -0.8, 0.4, 1.8)"\n'
+            f'[[shape.key]]\ntime = 2\npoints = {k1}\n')
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    scene = tr.load_scene(path)
+    curve = CubicBezier(0.6, -0.8, 0.4, 1.8)
+    u = np.linspace(0, 1, 2001)
+    low = float(u[np.argmin(curve(u))])
+    assert curve(np.array([low]))[0] < -0.1
+    first = tr.outlines(scene, 1e-9)[0]  # t just above 0: the balanced first key, as the mesh holds it
+    past = tr.outlines(scene, 2 * low)[0]
+
+    def gaps(points: np.ndarray) -> np.ndarray:
+        return np.linalg.norm(points[:, None] - points[None], axis=-1)
+
+    assert np.all(np.isfinite(past))
+    assert gaps(past) == pytest.approx(gaps(first), abs=1e-6)  # the same shape ...
+    assert not np.allclose(past.mean(axis=0), first.mean(axis=0), atol=1e-3)  # ... moved back past the key

@@ -30,7 +30,7 @@ _scalars = st.one_of(
 ARBITRARY = st.recursive(_scalars, lambda inner: st.one_of(st.lists(inner, max_size=3), st.tuples(inner, inner),
                                                            st.dictionaries(st.text(max_size=4), inner, max_size=2)),
                          max_leaves=6)
-SETTINGS = settings(max_examples=40, deadline=None, derandomize=True,
+SETTINGS = settings(max_examples=100, deadline=None, derandomize=True,
                     suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 
 
@@ -128,3 +128,12 @@ def test_the_property_tests_can_fail() -> None:
     """The check itself: a raw TypeError is not accepted."""
     with pytest.raises(TypeError):
         _only_result_or_refusal(lambda: math.floor("x"))  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("fps", [10**400, -10**400])
+def test_a_frame_rate_too_large_for_a_float_is_refused(scene: tr.Scene, tmp_path: Path, fps: int) -> None:
+    """Found by test_write: float(10**400) raises OverflowError."""
+    with pytest.raises(tr.OptionError, match="fps=: expected 1 to 240 frames per second"):
+        tr.write(scene, tmp_path / "x.mp4", fps=fps)
+    with pytest.raises(tr.OptionError, match="fps=: expected 1 to 240"):
+        next(tr.frames(scene, fps=fps))

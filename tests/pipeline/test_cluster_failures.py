@@ -59,7 +59,7 @@ def test_a_bad_address_is_refused_before_connecting(cli, tmp_path: Path, monkeyp
         tr.write(tr.load_scene(scene_path), tmp_path / "x.mp4", cluster=address)
     assert words in str(caught.value) and "\n" not in str(caught.value)
     code, out, err = cli("render", scene_path, "-o", tmp_path / "x.mp4", "--cluster", address, "-q")
-    assert code == 2 and err == f"tweenrender: error: {caught.value}\n"
+    assert code == 2 and err == f"tweenrender: error: {caught.value.for_flag()}\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]
 
 

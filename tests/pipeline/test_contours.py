@@ -59,3 +59,19 @@ def test_the_second_key_of_a_reversed_partner_is_flagged() -> None:
     # each contour wound as drawn: the hole against the box, the O's counter with the box (nonzero)
     wound = [np.sign(signed_area(c.points[::-1] if c.reversed else c.points)) for c in last]
     assert wound[0] != wound[1] or wound[0] != wound[2]
+
+
+def test_nothing_of_an_element_without_a_partner_is_drawn_at_a_key(tmp_path: Path) -> None:
+    # b has a stroked circle that a has not: at a's key it is not there at all (no dot), halfway it is
+    # there at half its size, with half its stroke width
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    square = '<rect id="sq" x="2" y="2" width="6" height="6" fill="#000000"/>'
+    a.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40">{square}</svg>')
+    b.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40">{square}'
+                 '<circle id="ring" cx="30" cy="30" r="5" fill="none" stroke="#ff0000" stroke-width="2"/></svg>')
+    scene = tr.load_scene([a, b])
+    assert [c.element for c in contours(scene, 0.0)] == ["sq"]
+    (ring,) = [c for c in contours(scene, 0.5, method="linear") if c.element == "ring"]
+    assert ring.stroke_width == pytest.approx(1.0)
+    assert np.ptp(ring.points[:, 0]) == pytest.approx(5.0, rel=0.02)
+    assert [c.element for c in contours(scene, 1.0)] == ["sq", "ring"]

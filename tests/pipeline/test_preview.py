@@ -181,7 +181,7 @@ def test_bad_save_shows_the_error_line_and_keeps_the_last_good_frames(box_previe
 
 @needs_chromium
 def test_method_picker_lists_every_method_and_redraws_with_the_choice(box_preview: tuple[Preview, Path]) -> None:
-    from tweenrender.model import METHODS
+    from tweenrender.core.methods import METHODS
 
     preview, _ = box_preview
     with live_page(preview.url) as page:

@@ -28,7 +28,7 @@ def run(args: argparse.Namespace) -> int:
     from ..reports.documents import report
     from .progress import ProgressBar
 
-    target = Path(args.output) if args.output else Path("output") / f"{stem(args.scene)}-report"
+    target = Path(args.output) if args.output is not None else Path("output") / f"{stem(args.scene)}-report"
 
     def bar(name: str) -> ProgressBar:
         return ProgressBar(name, enabled=False if args.quiet else None)

@@ -60,7 +60,7 @@ def _as_gradient(paint: Paint, like: Gradient) -> Gradient | None:
 
 
 def blend_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: float) -> Gradient | None:
-    """The gradient fill at eased ``t`` in (0, 1) between keys painted ``p0`` (element's box ``box0``) and
+    """The gradient fill at eased ``t`` (between 0 and 1, or beyond with an overshoot) between keys painted ``p0`` (element's box ``box0``) and
     ``p1`` (``box1``), for an inbetween whose box is ``box``; None when neither key has a gradient."""
     like = p0.gradient or p1.gradient
     if like is None:

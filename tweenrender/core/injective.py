@@ -45,7 +45,7 @@ __all__ = ["injective", "injective_contours", "injective_mesh", "mean_value_weig
 
 Array = NDArray[np.float64]
 
-_CACHE = 32  # pairs of keys whose mesh is kept
+_CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
 _FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
 _cache: OrderedDict[bytes, Callable[[Array], list[Array]]] = OrderedDict()
 

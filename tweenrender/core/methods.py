@@ -136,6 +136,19 @@ def measured_methods(jointed: bool) -> tuple[str, ...]:
     return tuple(m.name for m in REGISTRY.values() if jointed or not m.needs_joints)
 
 
+def _numbers(value: object, name: str) -> Array:
+    """``value`` as a float64 array, or a :class:`GeometryError` naming ``name`` (text, ``None``, a mapping,
+    an integer too large for a float are not numbers)."""
+    try:
+        if isinstance(value, (str, bytes, dict)) or value is None:
+            raise TypeError
+        return np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError, OverflowError):
+        shown = repr(value)
+        shown = shown if len(shown) <= 40 else f"{shown[:20]}…"
+        raise GeometryError(f"{name}: expected numbers, found {shown}") from None
+
+
 def interpolate(k0: Array, k1: Array, t: ArrayLike, method: str, joints: Joints = ()) -> Array:
     """Inbetweens of corresponding keys ``(N, 2)`` at ``t (T,)`` by ``method``: ``(T, N, 2)``.
 
@@ -144,10 +157,12 @@ def interpolate(k0: Array, k1: Array, t: ArrayLike, method: str, joints: Joints 
     found = REGISTRY.get(method) if isinstance(method, str) else None
     if found is None:
         raise GeometryError(unknown_method(method))
-    k0, k1 = np.asarray(k0, dtype=np.float64), np.asarray(k1, dtype=np.float64)
+    k0, k1 = _numbers(k0, "k0"), _numbers(k1, "k1")
     if k0.ndim != 2 or k0.shape[-1:] != (2,) or k0.shape != k1.shape:
         raise GeometryError(f"keys must both be (N, 2) with the same N, found {k0.shape} and {k1.shape}")
-    t = paths.as_times(t)
+    t = np.atleast_1d(_numbers(t, "t"))
+    if t.ndim != 1:
+        raise GeometryError(f"t: expected a number or a list of numbers (T,), found shape {t.shape}")
     frames = found.paths(k0, k1, t, joints)
     frames[t == 0.0] = k0
     frames[t == 1.0] = k1

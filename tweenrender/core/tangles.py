@@ -31,7 +31,7 @@ Array = NDArray[np.float64]
 SWEEP = np.linspace(0.0, 1.0, 101)
 """The swept t of a segment at which crossings are looked for (``stats``' ``crossings``, ``auto``)."""
 
-_CACHED = 64  # shapes whose linear crossings are kept
+_CACHED = 1024  # shapes whose straight paths' crossings are kept
 _linear_cache: OrderedDict[bytes, list[float]] = OrderedDict()
 
 _BOUND = 4.0 * np.finfo(np.float64).eps  # relative rounding bound of a 2x2 orientation determinant

@@ -54,10 +54,6 @@ def easing_of(key: Key) -> Easing:
         raise GeometryError(str(error)) from None
 
 
-_CLAMPED = ("injective",)
-"""Methods whose weights cannot leave [0, 1]: an overshooting easing is clamped for them."""
-
-
 def frame_count(duration: float, fps: float) -> int:
     """Frames from time 0 to the frame nearest ``duration``, both included: ``round(duration · fps) + 1``.
 
@@ -245,8 +241,6 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
     moving = [i for i, p in enumerate(pairs) if p.moving]
-    if method in _CLAMPED:
-        t = np.clip(t, 0.0, 1.0)
     if moving:
         k0 = np.concatenate([pairs[i].k0 for i in moving])
         k1 = np.concatenate([pairs[i].k1 for i in moving])
@@ -305,8 +299,8 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
     """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t (``frames``: the pairs'
     inbetweens already computed, e.g. staggered; the paint follows ``t``).
 
-    At a key only that key's contours are drawn (none that grows from or shrinks to a point there),
-    with the key's own fill rule and windings; in-betweens take the first key's until
+    At a key only that key's contours are drawn (one that grows from or shrinks to a point there is
+    kept, as that point with no stroke width), with the key's own fill rule and windings; in-betweens take the first key's until
     ``segment.switch``, the second's from it.
     """
     pairs = segment.pairs
@@ -327,23 +321,25 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
         visible = segment.shown[0] if x == 0.0 else segment.shown[1] if x == 1.0 else True
         contours = tuple(f[k] for f in frames)  # type: ignore[index]
         clips: tuple[tuple[Points, ...], ...] = ()
-        if boxes is not None and 0.0 < x < 1.0:  # gradient and clips move with the element
+        if x in (0.0, 1.0):
+            clips = tuple(tuple(c.points for c in region) for region in (c0 if x == 0.0 else c1))
+        elif boxes is not None:  # gradient and clips move with the element (an overshoot too)
             box = box_of(list(contours))
             if p0.gradient is not None or p1.gradient is not None:
                 paint = replace(paint, gradient=blend_gradient(p0, p1, *boxes, box, x))
             clips = clips_at(c0, c1, *boxes, box, x)
-        elif x in (0.0, 1.0):
-            clips = tuple(tuple(c.points for c in region) for region in (c0 if x == 0.0 else c1))
         phase = 0 if x < segment.switch else 1
         flips = segment.flips[phase] or (False,) * len(pairs)
         drawn_as = segment.ends[phase] if segment.ends is not None else None
-        if x in (0.0, 1.0):  # a key: only its own contours
+        if fading and x in (0.0, 1.0):  # a key of a cross-fade: only its own contours
             end = 0 if x == 0.0 else 1
             own = [i for i, p in enumerate(pairs) if p.source[end] is not None]
             out.append(ShapeAt(tuple(contours[i] for i in own), tuple(closed[i] for i in own), paint,
                                visible and paint.visible, reversed=tuple(flips[i] for i in own), key=drawn_as,
                                clips=clips))
             continue
+        # every pair is kept (a constant count, for players that interpolate vertices): at a key, one that
+        # grows from or shrinks to a point there is that point, stroked with no width, so nothing of it shows
         widths: tuple[float, ...] = ()
         if growing:
             share = [1.0] * len(pairs)

@@ -108,17 +108,21 @@ def _same_file(a: str | Path, b: str | Path) -> bool:
 
 
 def check_not_an_input(target: Path, sources: Iterable[str | os.PathLike[str]], folder: bool = False,
-                       files: Iterable[str] = ()) -> None:
+                       files: Iterable[str] = (), scene_files: Iterable[str | os.PathLike[str]] = ()) -> None:
     """Refuse to write ``target`` over a file the command reads (``sources``: the scene, its SVG keys and
     drawings), compared through symbolic and hard links. A ``folder`` target is replaced whole, so a source
     inside it clashes too, as does a source that any of ``files`` (the names put in it) already is.
-    The one line names both."""
+    The one line names both (once when they are one name; ``scene_files`` are called the scene file)."""
     real_target = os.path.realpath(target)
     inside = real_target.rstrip(os.sep) + os.sep
+    scenes = {str(p) for p in scene_files}
     for source in sources:
         real = os.path.realpath(source)
         shown = f"{printable(str(target))}: is {printable(str(source))}"
         if real == real_target or _same_file(target, source):
+            if str(source) in scenes:
+                itself = "" if str(source) == str(target) else f" ({printable(str(source))})"
+                raise OptionError(f"{printable(str(target))}: is the scene file itself{itself}; choose another output")
             raise OptionError(f"{shown}, which this command reads; choose another output")
         if not folder:
             continue

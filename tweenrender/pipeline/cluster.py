@@ -39,7 +39,7 @@ _OTHER_SCHEMES = {
 
 
 def _refuse(text: str, problem: str) -> OptionError:
-    return OptionError(f"cluster {printable(repr(text))}: {_EXPECTED}, found {problem}")
+    return OptionError(f"{_EXPECTED}, found {printable(repr(text))}: {problem}", "cluster")
 
 
 def parse_address(address: str) -> tuple[str, int | None]:
@@ -51,16 +51,17 @@ def parse_address(address: str) -> tuple[str, int | None]:
     """
     text = str(address).strip()
     if not text:
-        raise OptionError(f"cluster: {_EXPECTED}, found an empty address")
+        raise OptionError(f"{_EXPECTED}, found an empty address", "cluster")
     if text.lower().startswith("local:") or text.lower() == "local":
         _, _, count = text.partition(":")
         try:
             processes = int(count)
         except ValueError:
-            raise OptionError(f"cluster {printable(repr(text))}: expected local:N with N a whole number of "
-                              "processes") from None
+            raise OptionError(f"expected local:N with N a whole number of processes, found {printable(repr(text))}",
+                              "cluster") from None
         if not 1 <= processes <= _LOCAL_LIMIT:
-            raise OptionError(f"cluster {printable(repr(text))}: expected local:N with N from 1 to {_LOCAL_LIMIT}")
+            raise OptionError(f"expected local:N with N from 1 to {_LOCAL_LIMIT}, found {printable(repr(text))}",
+                              "cluster")
         return "local", processes
     scheme, separator, rest = text.partition("://")
     if not separator:

@@ -31,7 +31,7 @@ from .job import Frames, RenderJob, pick_frames, total_frames
 from .options import RenderOptions, canvas_limit, check_choice, check_color, check_fps, check_method, check_size
 
 __all__ = ["load_scene", "frame", "frames", "outlines", "contours", "write", "render_job", "output_format", "with_matching",
-           "with_balance"]
+           "with_balance", "not_an_input"]
 
 _CACHE_SIZE = 4
 # Frames objects of recent (scene, method, size, background) calls: building one costs the
@@ -185,7 +185,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
         raise OptionError(f"path: expected a file or folder name, found {path!r}")
     target = check_output_name(path)
     fmt = output_format(target, opts.format)
-    _not_an_input(target, scene)
+    not_an_input(target, [scene], folder=TABLE[fmt].folder)
     if TABLE[fmt].folder:
         check_frames_folder(target)
     if TABLE[fmt].vector:
@@ -323,14 +323,12 @@ def with_balance(scene: Scene, balance: str | None) -> Scene:
     return replace(scene, balance=balance, shapes=tuple(replace(shape, balance=None) for shape in scene.shapes))
 
 
-def _not_an_input(target: Path, scene: Scene) -> None:
-    """Refuse to write over a file the scene was read from."""
-    for source in scene.sources or ((scene.path,) if scene.path else ()):
-        try:
-            same = os.path.samefile(target, source)
-        except OSError:  # either does not exist (yet): they cannot be the same file
-            continue
-        if same and source == scene.path and source.suffix.lower() != ".svg":
-            raise OptionError(f"{target}: is the scene file itself; choose another output")
-        if same:
-            raise OptionError(f"{target}: is an input of the scene ({source}); choose another output")
+def not_an_input(target: Path, scenes: Sequence[Scene], folder: bool = False, files: Sequence[str] = ()) -> None:
+    """Refuse to write ``target`` over a file ``scenes`` were read from (the scene file, its SVG keys and
+    drawings), through links; a ``folder`` target also when it holds one, or one of ``files`` (the names
+    it will hold) already is one (see :func:`~tweenrender.encode.targets.check_not_an_input`)."""
+    from ..encode.targets import check_not_an_input
+
+    sources = [p for scene in scenes for p in (scene.sources or ((scene.path,) if scene.path else ()))]
+    scene_files = [scene.path for scene in scenes if scene.path is not None and scene.path.suffix.lower() != ".svg"]
+    check_not_an_input(target, sources, folder, files, scene_files)

@@ -53,6 +53,12 @@ def check_methods(names: object, option: str) -> tuple[str, ...]:
     return tuple(check_method(name, option) for name in names)
 
 
+def _shown(value: object) -> str:
+    """``repr(value)``, a very long one cut (``10**400`` has 401 digits)."""
+    text = repr(value)
+    return text if len(text) <= 40 else f"{text[:20]}…({len(text)} characters)"
+
+
 def _whole(value: object, option: str, what: str) -> int:
     if isinstance(value, bool) or not isinstance(value, (Integral, Real)):
         raise OptionError(f"expected {what}, found {value!r}", option)
@@ -79,8 +85,8 @@ def check_fps(fps: object, option: str = "fps") -> float:
     from ..scenefile import LIMITS
 
     low, high = LIMITS["fps"]
-    if isinstance(fps, bool) or not isinstance(fps, Real) or not low <= float(fps) <= high:
-        raise OptionError(f"expected {low:g} to {high:g} frames per second, found {fps!r}", option)
+    if isinstance(fps, bool) or not isinstance(fps, Real) or not low <= fps <= high:  # no float(): 10**400
+        raise OptionError(f"expected {low:g} to {high:g} frames per second, found {_shown(fps)}", option)
     return float(fps)
 
 
@@ -193,6 +199,10 @@ class RenderOptions:
             raise OptionError(f"expected A:B (a text) or a range of frame indices, found {v['frames']!r}", "frames")
         if "cluster" in v and not isinstance(v["cluster"], str):
             raise OptionError(f"expected a scheduler address or local:N, found {v['cluster']!r}", "cluster")
+        if "cluster" in v:
+            from .cluster import parse_address
+
+            parse_address(v["cluster"])  # before any work: a bad address is a usage error, not a late failure
         if "progress" in v and not callable(v["progress"]):
             raise OptionError(f"expected a function of (done, total), found {v['progress']!r}", "progress")
         return cls(

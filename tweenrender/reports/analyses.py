@@ -11,7 +11,7 @@ from typing import Any, Sequence
 
 from ..errors import OptionError
 from ..model import Scene
-from ..pipeline.library import _scene, with_balance, with_matching
+from ..pipeline.library import _scene, not_an_input, with_balance, with_matching
 
 __all__ = ["stats", "correspondence", "qcurves", "describe", "scene_name", "tuned", "picture_target"]
 
@@ -62,6 +62,8 @@ def correspondence(scene: Scene, picture: str | os.PathLike[str] | None = None, 
 
     target = None if picture is None else picture_target(picture, "the picture")
     scene = tuned(scene, cost, align, equal_counts)
+    if target is not None:
+        not_an_input(target, [scene])
     report = {"scene": scene_name(scene), **_without_scene(correspond_dict(scene, scene.matching))}
     if target is not None:
         write_match_picture(scene, report, target)
@@ -75,6 +77,8 @@ def qcurves(scene: Scene, picture: str | os.PathLike[str] | None = None) -> dict
 
     target = None if picture is None else picture_target(picture, "the plot")
     scene = _scene(scene)
+    if target is not None:
+        not_an_input(target, [scene])
     report = {"scene": scene_name(scene), **_without_scene(qcurves_dict(scene))}
     if target is not None:
         write_qcurve_plot(report, target)

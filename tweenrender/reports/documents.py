@@ -11,7 +11,7 @@ from typing import Callable, Sequence
 from ..errors import OptionError
 from ..model import Scene
 from .analyses import picture_target, tuned
-from ..pipeline.library import _scene, output_format
+from ..pipeline.library import _scene, not_an_input, output_format
 from ..pipeline.options import DEFAULT_MAX_FRAMES, MAX_ONION, Progress, check_fps, check_methods, check_size
 
 __all__ = ["sheet", "report", "reel", "DEFAULT_COUNT", "REEL_SIZE", "REEL_FPS"]
@@ -34,6 +34,7 @@ def sheet(scene: Scene, path: str | os.PathLike[str], *, methods: Sequence[str] 
 
     target = picture_target(path, "a sheet")
     scene = tuned(scene, cost, align, equal_counts, balance)
+    not_an_input(target, [scene])
     rows = scene.compare if methods is None else check_methods(methods, "methods")
     if isinstance(count, bool) or not isinstance(count, int) or not 0 <= count <= 200:
         raise OptionError(f"expected a whole number from 0 to 200, found {count!r}", "count")
@@ -77,6 +78,9 @@ def reel(scenes: Sequence[Scene], path: str | os.PathLike[str], *, names: Sequen
         raise OptionError(f"{target}: a reel is a video of title cards and labelled comparisons, which a {fmt} "
                           "file cannot hold; write .mp4, .webm, .mov, .gif or a folder of PNG frames", "path")
     chosen = [tuned(_scene(s), cost, align, equal_counts, balance) for s in scenes]
+    from ..encode.formats import TABLE
+
+    not_an_input(target, chosen, folder=TABLE[fmt].folder)
     labels = list(names) if names is not None else [Path(s.path).stem if s.path else f"scene {i + 1}"
                                                     for i, s in enumerate(chosen)]
     if isinstance(onion, bool) or not isinstance(onion, int) or not 0 <= onion <= MAX_ONION:

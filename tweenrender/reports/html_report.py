@@ -63,8 +63,12 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
 
     from ..encode.targets import check_output_name
 
+    from ..pipeline.library import not_an_input
+
     methods = tuple(methods or report_methods(scene))
     target = check_output_name(target, "expected a folder's name for the report")
+    files = ["index.html", "sheet.png", "correspondence.png", "metrics.png", *(f"{m}.webm" for m in methods)]
+    not_an_input(target, [scene], folder=True, files=files)
     _check_target(target)
     prepare_folder(target)
     tracks = tracks_of(scene)

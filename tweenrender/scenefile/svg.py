@@ -30,7 +30,7 @@ from numpy.typing import NDArray
 
 from ..errors import SceneError, did_you_mean
 from ..model import Color, Contour, Paint, frozen_points
-from .svg_document import SHAPES, Document, Drawn, Node, length, matrix, parse, read, walk
+from .svg_document import SHAPES, Document, Drawn, Node, compose, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
@@ -301,7 +301,8 @@ def _clip(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np
         (x0, y0), (x1, y1) = every.min(axis=0), every.max(axis=0)
         space = space @ np.array([[x1 - x0, 0.0, x0], [0.0, y1 - y0, y0], [0.0, 0.0, 1.0]])
     if "transform" in clip.attrs:
-        space = space @ matrix(clip.attrs["transform"])
+        space = compose(space, matrix(clip.attrs["transform"], clip.line), clip,
+                        f"transform {clip.attrs['transform'].strip()[:80]!r}")
     out: list[Contour] = []
     walker = _Walk(d.document, False)
     for child in clip.children:

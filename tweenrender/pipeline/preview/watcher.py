@@ -16,6 +16,7 @@ __all__ = ["FileWatcher"]
 
 _QUIET_MS = 20  # a burst of events (truncate, write, rename) ends after this much quiet
 _RETRY_SECONDS = 0.5  # a folder that cannot be watched (removed, renamed) is tried again after this
+_ARMED_SECONDS = 0.5  # by then a watch is armed (inotify is set up as it starts)
 
 
 class FileWatcher:
@@ -61,6 +62,12 @@ class FileWatcher:
             if not folders:
                 self._restart.wait(_RETRY_SECONDS)
                 continue
+            # a save made while the watch is being armed would be missed: compare the files, once armed,
+            # with what they were before it
+            seen = _signatures(files)
+            check = threading.Timer(_ARMED_SECONDS, self._changed_since, (files, seen))
+            check.daemon = True
+            check.start()
             try:
                 for _changes in watchfiles.watch(*folders, watch_filter=lambda _change, path: path in files,
                                                  recursive=False, step=_QUIET_MS, debounce=400,
@@ -68,3 +75,21 @@ class FileWatcher:
                     self._on_change()
             except (OSError, RuntimeError):  # a folder went away while watched: try again shortly
                 self._restart.wait(_RETRY_SECONDS)
+            finally:
+                check.cancel()
+
+    def _changed_since(self, files: frozenset[str], seen: dict[str, tuple[int, int, int] | None]) -> None:
+        if not self._stop.is_set() and _signatures(files) != seen:
+            self._on_change()
+
+
+def _signatures(files: Iterable[str]) -> dict[str, tuple[int, int, int] | None]:
+    """Each file's (inode, size, modification time in ns), or None where it is missing."""
+    out: dict[str, tuple[int, int, int] | None] = {}
+    for name in files:
+        try:
+            found = os.stat(name)
+            out[name] = (found.st_ino, found.st_size, found.st_mtime_ns)
+        except OSError:
+            out[name] = None
+    return out

@@ -120,42 +120,27 @@ _MEDIA = """
 
 def open_page(url: str, settle: float = 3.0, size: tuple[int, int] = (1280, 2400)) -> PageReport:
     """Load ``url`` in a fresh headless chromium; wait ``settle`` seconds; report what happened."""
-    executable = chromium()
-    if executable is None:
-        raise FileNotFoundError("chromium")
-    with tempfile.TemporaryDirectory(prefix="tweenrender-chromium-") as profile:
-        browser = _Browser(executable, profile)
-        try:
-            target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-            for domain in ("Runtime", "Log", "Page", "Network"):
-                browser.send(f"{domain}.enable", session=session)
-            browser.send("Emulation.setDeviceMetricsOverride",
-                         {"width": size[0], "height": size[1], "deviceScaleFactor": 1, "mobile": False},
-                         session=session)
-            browser.send("Page.navigate", {"url": url}, session=session)
-            browser.pump(settle)
-            report = PageReport()
-            report.media = browser.send("Runtime.evaluate", {"expression": _MEDIA, "returnByValue": True},
-                                        session=session)["result"]["value"]
-            shot = browser.send("Page.captureScreenshot", {"format": "png", "captureBeyondViewport": False},
-                                session=session)
-            report.screenshot = base64.b64decode(shot["data"])
-            for event in browser.events:
-                method, params = event.get("method"), event.get("params", {})
-                if method == "Runtime.consoleAPICalled" and params.get("type") in ("error", "assert"):
-                    report.errors.append("console: " + " ".join(str(a.get("value", a.get("description")))
-                                                                 for a in params.get("args", [])))
-                elif method == "Runtime.exceptionThrown":
-                    report.errors.append("exception: " + json.dumps(params.get("exceptionDetails", {}))[:300])
-                elif method == "Log.entryAdded" and params.get("entry", {}).get("level") == "error":
-                    entry = params["entry"]
-                    report.errors.append(f"log: {entry.get('text')} {entry.get('url', '')}")
-                elif method == "Network.loadingFailed" and not params.get("canceled"):
-                    report.errors.append(f"load failed: {params.get('errorText')}")
-            return report
-        finally:
-            browser.close()
+    with _session(url, size, ("Runtime", "Log", "Page", "Network")) as (browser, session):
+        browser.pump(settle)
+        report = PageReport()
+        report.media = browser.send("Runtime.evaluate", {"expression": _MEDIA, "returnByValue": True},
+                                    session=session)["result"]["value"]
+        shot = browser.send("Page.captureScreenshot", {"format": "png", "captureBeyondViewport": False},
+                            session=session)
+        report.screenshot = base64.b64decode(shot["data"])
+        for event in browser.events:
+            method, params = event.get("method"), event.get("params", {})
+            if method == "Runtime.consoleAPICalled" and params.get("type") in ("error", "assert"):
+                report.errors.append("console: " + " ".join(str(a.get("value", a.get("description")))
+                                                             for a in params.get("args", [])))
+            elif method == "Runtime.exceptionThrown":
+                report.errors.append("exception: " + json.dumps(params.get("exceptionDetails", {}))[:300])
+            elif method == "Log.entryAdded" and params.get("entry", {}).get("level") == "error":
+                entry = params["entry"]
+                report.errors.append(f"log: {entry.get('text')} {entry.get('url', '')}")
+            elif method == "Network.loadingFailed" and not params.get("canceled"):
+                report.errors.append(f"load failed: {params.get('errorText')}")
+        return report
 
 
 def page_url(path: Path) -> str:
@@ -211,6 +196,13 @@ class LivePage:
 @contextlib.contextmanager
 def live_page(url: str, size: tuple[int, int] = (1400, 900)) -> Iterator[LivePage]:
     """Open ``url`` in a fresh headless chromium and keep it open for the ``with`` block."""
+    with _session(url, size, ("Runtime",)) as (browser, session):
+        yield LivePage(browser, session)
+
+
+@contextlib.contextmanager
+def _session(url: str, size: tuple[int, int], domains: tuple[str, ...]) -> Iterator[tuple[_Browser, str]]:
+    """A fresh headless chromium showing ``url`` at ``size`` with ``domains`` enabled: (browser, session)."""
     executable = chromium()
     if executable is None:
         raise FileNotFoundError("chromium")
@@ -219,11 +211,12 @@ def live_page(url: str, size: tuple[int, int] = (1400, 900)) -> Iterator[LivePag
         try:
             target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
             session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-            browser.send("Runtime.enable", session=session)
+            for domain in domains:
+                browser.send(f"{domain}.enable", session=session)
             browser.send("Emulation.setDeviceMetricsOverride",
                          {"width": size[0], "height": size[1], "deviceScaleFactor": 1, "mobile": False},
                          session=session)
             browser.send("Page.navigate", {"url": url}, session=session)
-            yield LivePage(browser, session)
+            yield browser, session
         finally:
             browser.close()

@@ -16,7 +16,7 @@ __all__ = ["FileWatcher"]
 
 _QUIET_MS = 20  # a burst of events (truncate, write, rename) ends after this much quiet
 _RETRY_SECONDS = 0.5  # a folder that cannot be watched (removed, renamed) is tried again after this
-_ARMED_SECONDS = 0.5  # by then a watch is armed (inotify is set up as it starts)
+_ARMED_CHECK_MS = 200  # an armed watch answers (with nothing) after this much quiet
 
 
 class FileWatcher:
@@ -25,6 +25,7 @@ class FileWatcher:
     def __init__(self, on_change: Callable[[], None]) -> None:
         self._on_change = on_change
         self._files: frozenset[str] = frozenset()
+        self._baseline: dict[str, tuple[int, int, int] | None] = {}
         self._lock = threading.Lock()
         self._stop = threading.Event()
         self._restart = threading.Event()  # set to end the current watch: new files, or stopping
@@ -43,6 +44,7 @@ class FileWatcher:
             if frozenset(names) == self._files:
                 return
             self._files = frozenset(names)
+            self._baseline = _signatures(self._files)  # a save from now on is seen, even before the watch is armed
         self._restart.set()
 
     def stop(self, timeout: float = 2.0) -> None:
@@ -56,31 +58,29 @@ class FileWatcher:
 
         while not self._stop.is_set():
             with self._lock:
-                files = self._files
+                files, baseline = self._files, self._baseline
             self._restart.clear()
             folders = sorted({os.path.dirname(f) for f in files if os.path.isdir(os.path.dirname(f))})
             if not folders:
                 self._restart.wait(_RETRY_SECONDS)
                 continue
-            # a save made while the watch is being armed would be missed: compare the files, once armed,
-            # with what they were before it
-            seen = _signatures(files)
-            check = threading.Timer(_ARMED_SECONDS, self._changed_since, (files, seen))
-            check.daemon = True
-            check.start()
+            # a save made before the watch is armed has no event: once armed (its first answer, an event
+            # or a timeout), the files are compared with what they were when they were given to watch
+            seen: dict[str, tuple[int, int, int] | None] | None = baseline
             try:
-                for _changes in watchfiles.watch(*folders, watch_filter=lambda _change, path: path in files,
-                                                 recursive=False, step=_QUIET_MS, debounce=400,
-                                                 stop_event=self._restart, raise_interrupt=False):
-                    self._on_change()
+                for changes in watchfiles.watch(*folders, watch_filter=lambda _change, path: path in files,
+                                                recursive=False, step=_QUIET_MS, debounce=400,
+                                                rust_timeout=_ARMED_CHECK_MS, yield_on_timeout=True,
+                                                stop_event=self._restart, raise_interrupt=False):
+                    missed = seen is not None and _signatures(files) != seen
+                    seen = None
+                    if (changes or missed) and not self._stop.is_set():
+                        with self._lock:
+                            if files == self._files:
+                                self._baseline = _signatures(files)
+                        self._on_change()
             except (OSError, RuntimeError):  # a folder went away while watched: try again shortly
                 self._restart.wait(_RETRY_SECONDS)
-            finally:
-                check.cancel()
-
-    def _changed_since(self, files: frozenset[str], seen: dict[str, tuple[int, int, int] | None]) -> None:
-        if not self._stop.is_set() and _signatures(files) != seen:
-            self._on_change()
 
 
 def _signatures(files: Iterable[str]) -> dict[str, tuple[int, int, int] | None]:

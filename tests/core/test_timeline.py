@@ -82,10 +82,23 @@ def test_at_a_key_time_the_key_is_shown_as_drawn(tmp_path) -> None:
 
 
 def test_the_last_key_has_its_frame(tmp_path) -> None:
-    """Frames run from time 0 to the last key, both included: round(duration · fps) + 1 of them."""
+    """Frames run from time 0 to the last key, both included."""
     scene = _scene(tmp_path, [(0.0, SQ, "linear"), (2.0, _shifted(10), "linear")])
     pictures = list(tr.frames(scene, fps=4))
     assert len(pictures) == 9
     last = pictures[-1][..., :3].astype(int)
     assert np.array_equal(last, tr.frame(scene, 2.0)[..., :3].astype(int))
     assert not np.array_equal(pictures[-2], pictures[-1])
+
+
+@pytest.mark.parametrize("duration, fps, count", [(2.0, 4, 9), (1.01, 24, 26), (1.99, 4, 9), (2.1, 4, 10),
+                                                  (0.1 * 3, 10, 4), (1 / 3, 3, 2), (0.0, 24, 1)])
+def test_the_last_frame_is_the_last_key_when_it_falls_between_frames(tmp_path, duration: float, fps: float,
+                                                                     count: int) -> None:
+    """ceil(T · fps − 1e-9) + 1 frames (DESIGN, "Frames and the last key"): a last key between two
+    frame times gets the later one, which shows it; 0.1·3·10 and (1/3)·3 are whole in exact arithmetic."""
+    keys = [(0.0, SQ, "linear")] + ([(duration, _shifted(10), "linear")] if duration else [])
+    scene = _scene(tmp_path, keys)
+    pictures = list(tr.frames(scene, fps=fps))
+    assert len(pictures) == count
+    assert np.array_equal(pictures[-1], tr.frame(scene, duration))

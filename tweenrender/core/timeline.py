@@ -18,6 +18,7 @@ hints (:mod:`.hints`) pair contours and fix the correspondence at their vertices
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 from typing import Sequence
 
@@ -55,11 +56,12 @@ def easing_of(key: Key) -> Easing:
 
 
 def frame_count(duration: float, fps: float) -> int:
-    """Frames from time 0 to the frame nearest ``duration``, both included: ``round(duration · fps) + 1``.
+    """Frames from time 0 until one at or after ``duration``: ``ceil(duration · fps − 1e-9) + 1``.
 
-    The last frame is the last key's (or lies within half a frame of it, holding the last key).
+    The last frame shows the last key: at its time, or just after it while the key holds (the
+    1e-9 keeps a product that rounding put just above a whole number from adding a frame).
     """
-    return round(duration * fps) + 1
+    return math.ceil(duration * fps - 1e-9) + 1
 
 
 @dataclass(frozen=True, slots=True)

@@ -94,7 +94,7 @@ def frame(scene: Scene, time: float, *, method: str | None = None, size: tuple[i
 def frames(scene: Scene, *, method: str | None = None, size: tuple[int, int] | None = None,
            background: str | Color | None = None, fps: float | None = None) -> Iterator[NDArray[np.uint8]]:
     """Every frame of the clip at ``fps`` (default the scene's), frame ``f`` at ``f / fps`` seconds:
-    ``round(last time · fps) + 1`` fresh ``(height, width, 4)`` uint8 arrays, straight RGBA."""
+    ``ceil(last time · fps − 1e-9) + 1`` fresh ``(height, width, 4)`` uint8 arrays, straight RGBA."""
     scene = _scene(scene)
     rate = scene.fps if fps is None else check_fps(fps)
     job = _job(scene, None if method is None else check_method(method), None if size is None else check_size(size),

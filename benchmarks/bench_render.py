@@ -41,6 +41,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -533,17 +534,41 @@ def cluster(folder: Path, rounds: int) -> None:
     print()
 
 
-def icon_morph(folder: Path, rounds: int) -> None:
+def manim_command(manim: str | None, folder: Path) -> list[str] | None:
+    """The command that renders ``manim_morph.py``'s morph with ``manim`` (a path, else ``manim`` on the PATH)
+    into ``folder``, or None when there is none."""
+    executable = manim or shutil.which("manim")
+    if executable is None:
+        return None
+    media = folder / "manim"
+    return [executable, "render", "-r", "1280,720", "--frame_rate", "24", "--disable_caching", "--progress_bar",
+            "none", "-v", "WARNING", "--media_dir", str(media), "-o", "icons",
+            str(Path(__file__).resolve().parent / "manim_morph.py"), "IconMorph"]
+
+
+def icon_morph(folder: Path, rounds: int, manim: str | None = None) -> None:
     """A two-icon morph, 1 s of 720p MP4: wall and CPU of the whole command, what it imported, and
-    manim's wall on the same motion when manim is installed."""
+    manim's wall on the same motion (``manim_morph.py``), interleaved, when a manim is given or on the PATH."""
     icons = ROOT / "tests" / "data" / "icons" / "feather"
     target = folder / "icons.mp4"
     command = [*TWEENRENDER, "render", str(icons / "heart.svg"), str(icons / "star.svg"), "--size", "1280x720",
                "-o", str(target), "-q"]
-    runs = [run_measured(command) for _ in range(rounds)]
+    theirs = manim_command(manim, folder)
+    runs, manim_runs = [], []
+    for _ in range(rounds):
+        runs.append(run_measured(command))
+        if theirs is not None:
+            manim_runs.append(run_measured(theirs))
     print(f"## A two-icon morph (feather heart -> star), 1 s of 1280x720 MP4, {rounds} runs ({load()})")
     print(f"wall {_min_median([r[0] for r in runs], 2)} s (min / median), CPU {median([r[1] for r in runs]):.2f} s, "
           f"peak tree {max(r[2] for r in runs)} MiB")
+    if theirs is None:
+        print("manim is not installed (give --manim PATH): no comparison")
+    else:
+        ratios = [ours[0] / other[0] for ours, other in zip(runs, manim_runs)]
+        print(f"manim ({theirs[0]}): wall {_min_median([r[0] for r in manim_runs], 2)} s, CPU "
+              f"{median([r[1] for r in manim_runs]):.2f} s, peak tree {max(r[2] for r in manim_runs)} MiB; "
+              f"tweenrender / manim wall, same round: {_min_median(ratios)} (min / median)")
     check = ("import sys, tweenrender as tr\n"
              f"scene = tr.load_scene([{str(icons / 'heart.svg')!r}, {str(icons / 'star.svg')!r}])\n"
              "tr.frame(scene, 0.5, size=(1280, 720))\n"
@@ -551,10 +576,6 @@ def icon_morph(folder: Path, rounds: int) -> None:
     loaded = subprocess.run([sys.executable, "-c", check], capture_output=True, text=True, cwd=ROOT,
                             env={**os.environ, "PYTHONPATH": str(ROOT)}).stdout.strip()
     print(f"heavy modules loaded by loading and drawing it: {loaded}")
-    try:
-        import manim  # noqa: F401
-    except ImportError:
-        print("manim is not installed: no comparison")
     print()
 
 
@@ -593,6 +614,7 @@ def installed_bytecode() -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3, help="interleaved runs of each comparison")
+    parser.add_argument("--manim", help="a manim executable to compare the icon morph with (default: manim on the PATH)")
     parser.add_argument("--only", choices=("stroked", "busy", "drawing", "memory", "ffmpeg", "cluster", "icons",
                                            "preview"))
     args = parser.parse_args()
@@ -613,7 +635,7 @@ def main() -> None:
         if args.only in (None, "cluster"):
             cluster(folder, args.rounds)
         if args.only in (None, "icons"):
-            icon_morph(folder, max(args.rounds, 3))
+            icon_morph(folder, max(args.rounds, 3), args.manim)
         if args.only in (None, "preview"):
             preview_latency(args.rounds)
     machine()

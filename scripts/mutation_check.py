@@ -50,6 +50,7 @@ CONTROLS = ("tests/core/test_easing.py", "tests/core/test_hints.py", "tests/scen
             "tests/cli/test_timing_flags.py")
 ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
 VECTOR = ("tests/core/test_keyframes.py", "tests/pipeline/test_vector_output.py")
+PAINT = ("tests/encode/test_vector_paint_players.py",)
 OWNED = ("tests/encode/test_manifest.py", "tests/cli/test_targets.py")
 _CLUSTER_TESTS = "tests/pipeline/test_cluster_failures.py::"
 CLUSTER = tuple(_CLUSTER_TESTS + name for name in ("test_a_bad_address_is_refused_before_connecting",
@@ -288,12 +289,20 @@ MUTANTS = [
            '_FILL_RULES = {"nonzero": 1, "evenodd": 2}', '_FILL_RULES = {"nonzero": 2, "evenodd": 1}', VECTOR),
     Mutant("lottie: layers hand over at the key frame (rlottie draws both)", "tweenrender/encode/lottie.py",
            "_EARLY_IN, _EARLY_OUT = 0.499, 0.501", "_EARLY_IN, _EARLY_OUT = 0.0, 0.0", VECTOR),
-    Mutant("lottie: easing handles' x and y swapped", "tweenrender/encode/lottie.py",
+    Mutant("lottie: easing handles' x and y swapped", "tweenrender/encode/lottie_values.py",
            'key["o"] = {"x": [x1], "y": [y1]}', 'key["o"] = {"x": [y1], "y": [x1]}', VECTOR),
-    Mutant("svg: keyTimes over F - 1 frames", "tweenrender/encode/animated_svg.py",
+    Mutant("svg: keyTimes over F - 1 frames", "tweenrender/encode/smil.py",
            "times = [f / total for f in frames]", "times = [f / (total - 1) for f in frames]", VECTOR),
     Mutant("vector: a linear segment's easing dropped", "tweenrender/pipeline/vector_export.py",
            "ease = _timing(segment) or STRAIGHT", "ease = STRAIGHT", VECTOR),
+    Mutant("vector paint: a radial gradient's ellipse turned the other way", "tweenrender/pipeline/vector_paint.py",
+           "angle[f], ratio[f] = np.degrees(theta),", "angle[f], ratio[f] = -np.degrees(theta),", PAINT),
+    Mutant("vector paint: a linear gradient's ends swapped", "tweenrender/pipeline/vector_paint.py",
+           "return start, start + g / float(g @ g)", "return start + g / float(g @ g), start", PAINT),
+    Mutant("vector paint: no stops between those changing colour and alpha", "tweenrender/pipeline/vector_paint.py",
+           "int(np.ceil(np.sqrt(worst / 4.0 / _HALF_STEP)))", "1", PAINT),
+    Mutant("lottie: a clip path of several contours left out", "tweenrender/encode/lottie_paint.py",
+           "    if not several:\n        return None", "    if True:\n        return None", PAINT),
     # -- start-up, memory and the preview ------------------------------------------------------------
     Mutant("assignment: column potentials raised instead of lowered", "tweenrender/core/assignment.py",
            "v[used] -= delta", "v[used] += delta", ("tests/core/test_assignment.py",)),

@@ -12,6 +12,8 @@ from pathlib import Path
 
 import numpy as np
 
+IOU, COLOUR = 0.98, 0.03
+"""The acceptance bounds: coverage IoU at least, colour error at most."""
 _INK = 32  # a pixel is ink where a channel differs from the background by more than 32/255
 
 
@@ -48,6 +50,70 @@ def over(picture: np.ndarray, background: tuple[int, int, int]) -> np.ndarray:
         return picture[..., :3]
     alpha = picture[..., 3:4].astype(np.float32) / 255.0
     return np.rint(picture[..., :3] * alpha + np.array(background, dtype=np.float32) * (1 - alpha)).astype(np.uint8)
+
+
+def background_of(scene: object) -> tuple[int, int, int]:
+    """The opaque colour a scene's pictures are compared over: its background, else white."""
+    colour = scene.background  # type: ignore[attr-defined]
+    return colour[:3] if colour[3] == 255 else (255, 255, 255)
+
+
+def check_pictures(scene: object, pictures: list[np.ndarray], frames: list[int], method: str | None,
+                   player: str) -> list[tuple[float, float]]:
+    """Assert that each of ``pictures`` (RGB or straight RGBA) of ``frames`` is within :data:`IOU` and
+    :data:`COLOUR` of ``tr.frame`` of ``scene`` at the same time; returns the measures per frame."""
+    import tweenrender as tr
+
+    background = background_of(scene)
+    out = []
+    for frame, picture in zip(frames, pictures):
+        ours = over(tr.frame(scene, frame / scene.fps, method=method), background)  # type: ignore[attr-defined]
+        theirs = over(picture, background) if picture.shape[-1] == 4 else picture
+        iou, error = measures(ours, theirs, background)
+        assert iou >= IOU and error <= COLOUR, f"{player}, frame {frame}: IoU {iou:.4f}, colour error {error:.4f}"
+        out.append((iou, error))
+    return out
+
+
+def sample_frames(scene: object, count: int) -> list[int]:
+    """Ten frames evenly from the first to the last, and the frames on both sides of every key
+    (where the layers of consecutive segments hand over)."""
+    keys = {round(key.time * scene.fps) for shape in scene.shapes for key in shape.keys}  # type: ignore[attr-defined]
+    around = {f + d for f in keys for d in (-1, 0) if 0 <= f + d < count}
+    return sorted({0, count - 1, *np.linspace(0, count - 1, 10).round().astype(int).tolist(), *around})
+
+
+def check_lottie_players(scene: object, folder: Path, method: str | None = None, every_frame: bool = True) -> None:
+    """Write ``scene`` as Lottie and check what rlottie (every frame, or :func:`sample_frames`) and ThorVG
+    (the sample) draw of it against the project's frames."""
+    import tweenrender as tr
+    from tweenrender.pipeline.job import total_frames
+
+    target = tr.write(scene, folder / "clip.json", method=method)
+    count = total_frames(scene)
+    sample = sample_frames(scene, count)
+    rlottie_picked = list(range(count)) if every_frame else sample
+    size = scene.size  # type: ignore[attr-defined]
+    check_pictures(scene, rlottie_frames(target, rlottie_picked, size), rlottie_picked, method, "rlottie")
+    check_pictures(scene, thorvg_frames(target, sample, size), sample, method, "ThorVG")
+
+
+def check_chromium(cases: list[tuple[str, object, str | None]], folder: Path) -> None:
+    """Write each ``(name, scene, method)`` as an animated SVG and check Chromium's pictures at t = 0, ¼, ½, ¾, 1
+    of the clip (at frame times) against the project's frames, one browser for all."""
+    import tweenrender as tr
+    from tweenrender.pipeline.job import total_frames
+
+    files, picks = [], []
+    for name, scene, method in cases:
+        target = tr.write(scene, folder / f"{name}.svg", method=method)
+        count = total_frames(scene)
+        frames = sorted({round(q * (count - 1)) for q in (0, 0.25, 0.5, 0.75, 1)})
+        files.append((target, [f / scene.fps for f in frames], scene.size))  # type: ignore[attr-defined]
+        picks.append(frames)
+    shots = chromium_svg_frames(files)
+    for (name, scene, method), frames, pictures in zip(cases, picks, shots):
+        check_pictures(scene, pictures, frames, method, f"Chromium, {name}")
 
 
 def rlottie_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[np.ndarray]:

@@ -14,17 +14,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 import tweenrender as tr
 from tweenrender.core.methods import METHODS
-from tweenrender.pipeline.job import total_frames
 from tests.helpers import DATA, SCENES, write_scene
-from tests.vector_players import chromium_svg_frames, measures, over
+from tests.vector_players import check_chromium, check_lottie_players
 
-SIZE = None  # each scene's own size: the video's
-IOU, COLOUR = 0.98, 0.03
 SHIPPED = sorted(SCENES.glob("*.toml"))
 ICONS = DATA / "icons"
 ICON_PAIRS = [("mdi/alpha-a.svg", "mdi/alpha-b.svg"),  # holes
@@ -95,40 +91,6 @@ def _paint_scene(tmp_path: Path) -> tr.Scene:
     return tr.load_scene(write_scene(tmp_path, PAINT))
 
 
-def _background(scene: tr.Scene) -> tuple[int, int, int]:
-    return scene.background[:3] if scene.background[3] == 255 else (255, 255, 255)
-
-
-def _check(scene: tr.Scene, pictures: list[np.ndarray], frames: list[int], method: str | None, fps: float,
-           player: str) -> None:
-    background = _background(scene)
-    for frame, picture in zip(frames, pictures):
-        ours = over(tr.frame(scene, frame / fps, method=method, size=SIZE), background)
-        theirs = over(picture, background) if picture.shape[-1] == 4 else picture
-        iou, error = measures(ours, theirs, background)
-        assert iou >= IOU and error <= COLOUR, f"{player}, frame {frame}: IoU {iou:.4f}, colour error {error:.4f}"
-
-
-def _lottie_players(scene: tr.Scene, tmp_path: Path, method: str | None = None, every_frame: bool = True) -> None:
-    from tests.vector_players import rlottie_frames, thorvg_frames
-
-    target = tr.write(scene, tmp_path / "clip.json", method=method, size=SIZE)
-    size = SIZE or scene.size
-    count = total_frames(scene)
-    sample = _sample(scene, count)
-    rlottie_picked = list(range(count)) if every_frame else sample
-    _check(scene, rlottie_frames(target, rlottie_picked, size), rlottie_picked, method, scene.fps, "rlottie")
-    _check(scene, thorvg_frames(target, sample, size), sample, method, scene.fps, "ThorVG")
-
-
-def _sample(scene: tr.Scene, count: int) -> list[int]:
-    """Ten frames evenly from the first to the last, and the frames on both sides of every key
-    (where the layers of consecutive segments hand over)."""
-    keys = {round(key.time * scene.fps) for shape in scene.shapes for key in shape.keys}
-    around = {f + d for f in keys for d in (-1, 0) if 0 <= f + d < count}
-    return sorted({0, count - 1, *np.linspace(0, count - 1, 10).round().astype(int).tolist(), *around})
-
-
 @pytest.fixture(autouse=True)
 def _players() -> None:
     pytest.importorskip("rlottie_python", reason="rlottie-python (the test extra) is not installed")
@@ -137,18 +99,18 @@ def _players() -> None:
 
 @pytest.mark.parametrize("scene_path", SHIPPED, ids=lambda p: p.stem)
 def test_shipped_scenes_in_rlottie_and_thorvg(scene_path: Path, tmp_path: Path) -> None:
-    _lottie_players(tr.load_scene(scene_path), tmp_path, every_frame=False)
+    check_lottie_players(tr.load_scene(scene_path), tmp_path, every_frame=False)
 
 
 @pytest.mark.parametrize("pair", ICON_PAIRS, ids=lambda p: p[0].split("/")[0] + "-" + Path(p[0]).stem)
 def test_icon_pairs_in_rlottie_and_thorvg(pair: tuple[str, str], tmp_path: Path) -> None:
-    _lottie_players(_icons(*pair), tmp_path)
+    check_lottie_players(_icons(*pair), tmp_path)
 
 
 @pytest.mark.parametrize("method", METHODS)
 @pytest.mark.parametrize("pair", [ICON_PAIRS[0], ICON_PAIRS[2]], ids=["holes", "strokes"])
 def test_every_method_in_rlottie_and_thorvg(method: str, pair: tuple[str, str], tmp_path: Path) -> None:
-    _lottie_players(_icons(*pair), tmp_path, method, every_frame=False)
+    check_lottie_players(_icons(*pair), tmp_path, method, every_frame=False)
 
 
 def _timed() -> tr.Scene:
@@ -158,11 +120,11 @@ def _timed() -> tr.Scene:
 
 
 def test_holds_css_easing_and_stagger_in_rlottie_and_thorvg(tmp_path: Path) -> None:
-    _lottie_players(_timed(), tmp_path)
+    check_lottie_players(_timed(), tmp_path)
 
 
 def test_paint_changes_in_rlottie_and_thorvg(tmp_path: Path) -> None:
-    _lottie_players(_paint_scene(tmp_path), tmp_path)
+    check_lottie_players(_paint_scene(tmp_path), tmp_path)
 
 
 def test_svg_in_chromium_at_five_times(tmp_path: Path) -> None:
@@ -175,14 +137,4 @@ def test_svg_in_chromium_at_five_times(tmp_path: Path) -> None:
     cases += [(a.replace("/", "-"), _icons(a, b), None) for a, b in ICON_PAIRS]
     cases += [("paint", _paint_scene(tmp_path), None), ("timed", _timed(), None)]
     cases += [(f"holes-{m}", _icons(*ICON_PAIRS[0]), m) for m in ("nonlinear", "arap", "intrinsic")]
-    files, picks = [], []
-    for name, scene, method in cases:
-        target = tr.write(scene, tmp_path / f"{name}.svg", method=method, size=SIZE)
-        count = total_frames(scene)
-        frames = sorted({round(q * (count - 1)) for q in (0, 0.25, 0.5, 0.75, 1)})
-        files.append((target, [f / scene.fps for f in frames], SIZE or scene.size))
-        picks.append(frames)
-    shots = chromium_svg_frames(files)
-    for (name, scene, method), frames, pictures in zip(cases, picks, shots):
-        _check(scene, pictures, frames, method, scene.fps, f"Chromium, {name}")
-
+    check_chromium(cases, tmp_path)

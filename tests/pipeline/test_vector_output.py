@@ -339,21 +339,66 @@ def _drawing(folder: Path, name: str, body: str) -> Path:
     return path
 
 
-@pytest.mark.parametrize("defs, paint, what", [
-    ('<linearGradient id="g"><stop offset="0" stop-color="#ff0000"/><stop offset="1" stop-color="#0000ff"/>'
-     "</linearGradient>", 'fill="url(#g)"', "gradient"),
-    ('<clipPath id="c"><rect x="0" y="0" width="6" height="10"/></clipPath>', 'fill="#ff0000" clip-path="url(#c)"',
-     "clipped")])
-def test_gradients_and_clip_paths_are_refused_naming_the_element(tmp_path: Path, defs: str, paint: str,
-                                                                  what: str) -> None:
-    first = _drawing(tmp_path, "a.svg", f'<defs>{defs}</defs><rect id="box" x="2" y="2" width="6" height="6" {paint}/>')
-    second = _drawing(tmp_path, "b.svg", f'<defs>{defs}</defs><rect id="box" x="9" y="1" width="8" height="4" '
-                                         f"{paint}/>")
-    scene = tr.load_scene([first, second])
-    for suffix in (".json", ".svg"):
-        with pytest.raises(OptionError, match=f"'box'.*{what}"):
-            tr.write(scene, tmp_path / f"x{suffix}")
-        assert not (tmp_path / f"x{suffix}").exists()
+def _box_drawings(folder: Path, defs: tuple[str, str], paint: str, group: str = "") -> tr.Scene:
+    """Two drawings of one rectangle ``box`` painted ``paint``, with the ``defs`` of each (inside ``<g group>``)."""
+    first = _drawing(folder, "a.svg", f'<defs>{defs[0]}</defs><g {group}><rect id="box" x="2" y="2" width="6" '
+                                      f'height="6" {paint}/></g>')
+    second = _drawing(folder, "b.svg", f'<defs>{defs[1]}</defs><g {group}><rect id="box" x="9" y="1" width="8" '
+                                       f'height="4" {paint}/></g>')
+    return tr.load_scene([first, second])
+
+
+_TWO_STOPS = '<linearGradient id="g"><stop offset="0" stop-color="#ff0000"/><stop offset="1" stop-color="#0000ff"/>'
+_THREE_STOPS = ('<linearGradient id="g" x2="0" y2="1"><stop offset="0" stop-color="#ff0000"/>'
+                '<stop offset="0.5" stop-color="#00ff00"/><stop offset="1" stop-color="#0000ff"/>')
+_CLIP = '<clipPath id="c"><rect x="0" y="0" width="{w}" height="10"/></clipPath>'
+
+
+def test_gradients_and_clip_paths_are_written(tmp_path: Path) -> None:
+    """A linear gradient of two stops becoming one of three, under a clip path: Lottie's gradient fill keeps
+    one stop count (the three offsets) in every keyframe, its clip path is the layer's mask; the SVG has a
+    gradient in pixels whose stops are animated, and a clip path whose outline moves."""
+    defs = (_TWO_STOPS + "</linearGradient>" + _CLIP.format(w=6),
+            _THREE_STOPS + "</linearGradient>" + _CLIP.format(w=13))
+    scene = _box_drawings(tmp_path, defs, 'fill="url(#g)" clip-path="url(#c)"')
+    layer = _shape_layers(json.loads(tr.write(scene, tmp_path / "x.json").read_text()))[0]
+    fill = _items(layer, "gf")[0]
+    assert fill["t"] == 1 and fill["g"]["p"] == 3 and not _items(layer, "fl")
+    keys = fill["g"]["k"]["k"]
+    assert len(keys) >= 2 and all(len(key["s"]) == 3 * 4 + 3 * 2 for key in keys)
+    assert keys[0]["s"][:4] == [0, 1, 0, 0] and keys[-1]["s"][4:8] == [0.5, 0, 1, 0]
+    assert [mask["mode"] for mask in layer["masksProperties"]] == ["a"]
+    svg = tr.write(scene, tmp_path / "x.svg").read_text()
+    assert '<linearGradient id="run0-fill" gradientUnits="userSpaceOnUse" spreadMethod="pad"' in svg
+    assert svg.count("<stop ") == 3 and '<animate attributeName="stop-color"' in svg
+    assert 'fill="url(#run0-fill)"' in svg and '<g clip-path="url(#run0-clip-0)">' in svg
+    assert re.search(r'<clipPath id="run0-clip-0">\s*<path d="[^"]+" clip-rule="nonzero">\s*<animate attributeName="d"',
+                     svg)
+
+
+_SEVERAL = ('<clipPath id="c"><rect x="0" y="0" width="4" height="10"/><rect x="5" y="0" width="4" height="10"/>'
+            '</clipPath><clipPath id="d"><rect x="0" y="0" width="20" height="3"/><rect x="0" y="4" width="20" '
+            'height="6"/></clipPath>')
+
+
+@pytest.mark.parametrize("defs, paint, group, what", [
+    ((_TWO_STOPS.replace('id="g"', 'id="g" spreadMethod="repeat" x2="0.3"') + "</linearGradient>",) * 2,
+     'fill="url(#g)"', "", "spreads by repeat"),
+    ((_SEVERAL,) * 2, 'fill="#ff0000" clip-path="url(#c)"', 'clip-path="url(#d)"', "several clip paths")])
+def test_what_lottie_cannot_carry_is_refused_naming_the_element(tmp_path: Path, defs: tuple[str, str], paint: str,
+                                                                 group: str, what: str) -> None:
+    """Lottie gradients pad, and a clip path of several contours is a matte, of which a layer has one: the
+    library refuses naming the element, the command line too (exit 2, one line); the SVG carries both."""
+    scene = _box_drawings(tmp_path, defs, paint, group)
+    with pytest.raises(OptionError, match=f"'box'.*{what}"):
+        tr.write(scene, tmp_path / "x.json")
+    assert not (tmp_path / "x.json").exists()
+    done = run_module("render", tmp_path / "a.svg", tmp_path / "b.svg", "-o", tmp_path / "x.json", "-q", cwd=tmp_path)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == 2 and len(lines) == 1 and "'box'" in lines[0] and what in lines[0]
+    assert not (tmp_path / "x.json").exists()
+    svg = tr.write(scene, tmp_path / "x.svg").read_text()
+    assert ('spreadMethod="repeat"' in svg) if "repeat" in what else svg.count("<clipPath ") == 2
 
 
 @pytest.mark.parametrize("ease, handles", [("ease-in-out", (0.42, 0.0, 0.58, 1.0)),

@@ -5,7 +5,8 @@ a group, shown only over its frames (``visibility``, discrete) and faded by the 
 ``opacity``, holding one ``<path>``: all its contours as subpaths, so holes follow the fill rule.
 ``<animate>`` moves ``d`` through the path keyframes (``calcMode="spline"`` with the easing's
 ``keySplines`` for an exact segment) and ``fill``, ``fill-opacity``, ``stroke``,
-``stroke-opacity``, ``stroke-width`` through the paint keyframes. Frame ``f`` is at
+``stroke-opacity``, ``stroke-width`` through the paint keyframes; gradient fills and clip paths as
+:mod:`.svg_paint` writes them. Frame ``f`` is at
 ``keyTime f / F`` of ``dur = F / fps`` seconds; every animation freezes at its end.
 """
 
@@ -15,7 +16,9 @@ from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
 from .atomic import replacing
-from .vector_data import STRAIGHT, Array, Handles, VectorClip, VectorRun
+from .smil import animate, hex_colour, number, path_data
+from .svg_paint import clip_elements, gradient_element
+from .vector_data import Array, VectorClip, VectorRun
 
 __all__ = ["svg_document", "write_animated_svg"]
 
@@ -33,56 +36,21 @@ def write_animated_svg(clip: VectorClip, target: Path) -> Path:
 def svg_document(clip: VectorClip, title: str = "tweenrender") -> str:
     """The SVG text of ``clip``."""
     width, height = clip.size
-    duration = f"{_number(clip.frames / clip.fps, 6)}s"
+    duration = f"{number(clip.frames / clip.fps, 6)}s"
     lines = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
              f'viewBox="0 0 {width} {height}">', f"<title>{escape(title)}</title>"]
     r, g, b, a = clip.background
     if a > 0:
-        lines.append(f'<rect width="{width}" height="{height}" fill="{_hex((r / 255, g / 255, b / 255))}"'
-                     + (f' fill-opacity="{_number(a / 255, 4)}"' if a < 255 else "") + "/>")
-    for run in clip.runs:
-        lines.extend(_run(run, clip.frames, duration))
+        lines.append(f'<rect width="{width}" height="{height}" fill="{hex_colour((r / 255, g / 255, b / 255))}"'
+                     + (f' fill-opacity="{number(a / 255, 4)}"' if a < 255 else "") + "/>")
+    for index, run in enumerate(clip.runs):
+        lines.extend(_run(run, f"run{index}", clip.frames, duration))
     lines.append("</svg>")
     return "\n".join(lines) + "\n"
 
 
-def _number(value: float, digits: int = 3) -> str:
-    text = f"{value:.{digits}f}".rstrip("0").rstrip(".")
-    return "0" if text in ("", "-0") else text
-
-
-def _hex(rgb: Array | tuple[float, float, float]) -> str:
-    return "#" + "".join(f"{int(round(float(v) * 255)):02x}" for v in rgb)
-
-
-def _d(paths: list[Array], closed: tuple[bool, ...]) -> str:
-    """One path's ``d``: ``M x,y L x,y … Z`` per contour (``(L, 2)`` pixels each)."""
-    parts = []
-    for points, shut in zip(paths, closed):
-        coords = [f"{_number(x)},{_number(y)}" for x, y in points.tolist()]
-        parts.append("M" + coords[0] + " L" + " ".join(coords[1:]) + (" Z" if shut else ""))
-    return " ".join(parts)
-
-
-def _animate(name: str, frames: tuple[int, ...], values: list[str], total: int, duration: str,
-             ease: Handles = STRAIGHT) -> str:
-    """An ``<animate>`` of ``name`` through ``values`` at clip ``frames``, held before the first and
-    after the last (keyTimes run from 0 to 1); ``""`` when the value never changes."""
-    if all(v == values[0] for v in values[1:]):
-        return ""
-    times = [f / total for f in frames]
-    splines = [ease] * (len(frames) - 1)
-    held = STRAIGHT
-    if frames[0] > 0:
-        times, values, splines = [0.0, *times], [values[0], *values], [held, *splines]
-    times, values, splines = [*times, 1.0], [*values, values[-1]], [*splines, held]
-    spline = "" if ease == STRAIGHT else ' calcMode="spline" keySplines="' + ";".join(
-        " ".join(_number(v, 4) for v in s) for s in splines) + '"'
-    return (f'<animate attributeName="{name}" dur="{duration}" fill="freeze" '
-            f'keyTimes="{";".join(_number(t, 9) for t in times)}" values={quoteattr(";".join(values))}{spline}/>')
-
-
-def _run(run: VectorRun, total: int, duration: str) -> list[str]:
+def _run(run: VectorRun, ident: str, total: int, duration: str) -> list[str]:
+    """The run as a group; ``ident`` names its gradient (``ident-fill``) and clip paths (``ident-clip-0``, …)."""
     lines = [f"<g id={quoteattr(f'{run.element}-{run.first}')}"
              + (' visibility="hidden"' if run.first > 0 else "") + _static_opacity(run) + ">"]
     if run.first > 0 or run.stop < total:
@@ -92,41 +60,52 @@ def _run(run: VectorRun, total: int, duration: str) -> list[str]:
         if run.stop < total:
             values, times = [*values, "hidden"], [*times, (run.stop - _EARLY) / total]
         lines.append(f'<animate attributeName="visibility" dur="{duration}" fill="freeze" calcMode="discrete" '
-                     f'keyTimes="{";".join(_number(t, 9) for t in times)}" values="{";".join(values)}"/>')
-    lines.append(_animate("opacity", run.paint_frames, [_number(o, 4) for o in run.opacity], total, duration))
+                     f'keyTimes="{";".join(number(t, 9) for t in times)}" values="{";".join(values)}"/>')
+    lines.append(animate("opacity", run.paint_frames, [number(o, 4) for o in run.opacity], total, duration))
+    gradient = gradient_element(run, f"{ident}-fill", total, duration)
+    clips, opening, closing = clip_elements(run, f"{ident}-clip", total, duration)
+    if gradient or clips:
+        lines += ["<defs>", *gradient, *clips, "</defs>"]
+    lines += opening
+    fill = f"url(#{ident}-fill)" if gradient else None
     groups = run.stroke_groups() if run.stroke is not None else []
     if len(groups) <= 1:
-        lines += _path(run, list(range(len(run.paths))), True, groups[0][1] if groups else None, total, duration)
+        lines += _path(run, list(range(len(run.paths))), True, groups[0][1] if groups else None, total, duration,
+                       fill)
     else:  # contours growing from a point stroke with their share of the width: the fill, then each stroke
-        lines += _path(run, list(range(len(run.paths))), True, None, total, duration)
+        lines += _path(run, list(range(len(run.paths))), True, None, total, duration, fill)
         for members, widths in groups:
             lines += _path(run, members, False, widths, total, duration)
-    lines.append("</g>")
+    lines += [*closing, "</g>"]
     return [line for line in lines if line]
 
 
 def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None, total: int,
-          duration: str) -> list[str]:
-    """One ``<path>`` of the contours ``members``: filled (or not), stroked ``widths (P,)`` wide (``None``: not)."""
+          duration: str, gradient: str | None = None) -> list[str]:
+    """One ``<path>`` of the contours ``members``: filled (or not; by the paint server ``gradient`` if given),
+    stroked ``widths (P,)`` wide (``None``: not)."""
     shapes = [[run.paths[i][k] for i in members] for k in range(len(run.path_frames))]
-    d_values = [_d(s, tuple(run.closed[i] for i in members)) for s in shapes]
+    d_values = [path_data(s, tuple(run.closed[i] for i in members)) for s in shapes]
     attributes = [f'd="{d_values[0]}"', f'fill-rule="{run.fill_rule}"']
-    inner = [_animate("d", run.path_frames, d_values, total, duration, run.ease)]
+    inner = [animate("d", run.path_frames, d_values, total, duration, run.ease)]
     for name, colours in (("fill", run.fill if filled else None), ("stroke", run.stroke if widths is not None
                                                                           else None)):
+        if name == "fill" and filled and gradient is not None:
+            attributes.append(f'fill="{gradient}"')
+            continue
         if colours is None:
             attributes.append(f'{name}="none"')
             continue
-        hexes = [_hex(c[:3]) for c in colours]
-        alphas = [_number(c[3], 4) for c in colours]
+        hexes = [hex_colour(c[:3]) for c in colours]
+        alphas = [number(c[3], 4) for c in colours]
         attributes += [f'{name}="{hexes[0]}"', f'{name}-opacity="{alphas[0]}"']
-        inner += [_animate(name, run.paint_frames, hexes, total, duration),
-                  _animate(f"{name}-opacity", run.paint_frames, alphas, total, duration)]
+        inner += [animate(name, run.paint_frames, hexes, total, duration),
+                  animate(f"{name}-opacity", run.paint_frames, alphas, total, duration)]
     if widths is not None and run.stroke is not None:
-        numbers = [_number(w, 4) for w in widths]
+        numbers = [number(w, 4) for w in widths]
         attributes += [f'stroke-width="{numbers[0]}"', f'stroke-linecap="{run.cap}"',
-                       f'stroke-linejoin="{run.join}"', f'stroke-miterlimit="{_number(run.miter_limit, 4)}"']
-        inner.append(_animate("stroke-width", run.paint_frames, numbers, total, duration))
+                       f'stroke-linejoin="{run.join}"', f'stroke-miterlimit="{number(run.miter_limit, 4)}"']
+        inner.append(animate("stroke-width", run.paint_frames, numbers, total, duration))
     inner = [line for line in inner if line]
     if not inner:
         return ["<path " + " ".join(attributes) + "/>"]
@@ -135,5 +114,5 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
 
 def _static_opacity(run: VectorRun) -> str:
     opacity = float(run.opacity[0])
-    return "" if opacity == 1.0 else f' opacity="{_number(opacity, 4)}"'
+    return "" if opacity == 1.0 else f' opacity="{number(opacity, 4)}"'
 

@@ -6,7 +6,8 @@ the list on top; in it one group: a ``sh`` path per contour (straight edges: in 
 zero; holes are sibling paths), the stroke (``st``) above the fill (``fl``, ``r`` 1 nonzero,
 2 even-odd), and the group's transform (contours growing from a point: a group per stroke width
 above one of the fill). The layer's opacity is the paint's, so fill and stroke fade together as
-one picture. A full-size rectangle layer at the bottom is the background.
+one picture; gradient fills and clip paths (the layer's masks, or a matte layer just above it) as
+:mod:`.lottie_paint` writes them. A full-size rectangle layer at the bottom is the background.
 """
 
 from __future__ import annotations
@@ -15,14 +16,13 @@ import json
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from .atomic import replacing
+from .lottie_paint import gradient_fill, masks, matte, refuse_unsupported, stretched_fill
+from .lottie_values import animated, contour, percent, scalar, static, transform
 from .vector_data import STRAIGHT, Array, Handles, VectorClip, VectorRun
 
 __all__ = ["lottie_document", "write_lottie"]
 
-_DIGITS = 3  # pixels are written to a thousandth
 _CAPS = {"butt": 1, "round": 2, "square": 3}
 _JOINS = {"miter": 1, "round": 2, "bevel": 3}
 _FILL_RULES = {"nonzero": 1, "evenodd": 2}
@@ -44,111 +44,94 @@ def write_lottie(clip: VectorClip, target: Path) -> Path:
 def lottie_document(clip: VectorClip, name: str = "tweenrender") -> dict[str, Any]:
     """The Lottie animation of ``clip`` as a JSON-ready dict: ``w``, ``h``, ``fr``, ``ip = 0``, ``op = F``."""
     width, height = clip.size
-    layers = [_layer(run, index + 1, clip.frames) for index, run in enumerate(reversed(clip.runs))]
+    for run in clip.runs:
+        refuse_unsupported(run)
+    layers = [layer for run in reversed(clip.runs) for layer in _layers(run, clip)]
     if clip.background[3] > 0:
-        layers.append(_background(clip, len(layers) + 1))
+        layers.append(_background(clip))
+    for index, layer in enumerate(layers):
+        layer["ind"] = index + 1
     return {"v": "5.7.0", "nm": name, "fr": clip.fps, "ip": 0, "op": clip.frames, "w": width, "h": height,
             "ddd": 0, "assets": [], "layers": layers}
 
 
-def _static(value: Any) -> dict[str, Any]:
-    return {"a": 0, "k": value}
-
-
-def _transform(opacity: dict[str, Any]) -> dict[str, Any]:
-    return {"o": opacity, "r": _static(0), "p": _static([0, 0, 0]), "a": _static([0, 0, 0]),
-            "s": _static([100, 100, 100])}
-
-
-def _animated(frames: tuple[int, ...], values: list[Any], handles: Handles) -> dict[str, Any]:
-    """A property keyed at ``frames``, each key eased to the next by ``handles`` (CSS cubic-bezier)."""
-    if len(frames) == 1 or all(v == values[0] for v in values[1:]):
-        return _static(values[0])
-    x1, y1, x2, y2 = handles
-    keys: list[dict[str, Any]] = []
-    for index, (frame, value) in enumerate(zip(frames, values)):
-        key: dict[str, Any] = {"t": frame, "s": value}
-        if index < len(frames) - 1:
-            key["o"] = {"x": [x1], "y": [y1]}
-            key["i"] = {"x": [x2], "y": [y2]}
-        keys.append(key)
-    return {"a": 1, "k": keys}
-
-
-def _shape_value(points: Array, closed: bool) -> list[dict[str, Any]]:
-    vertices = np.round(points, _DIGITS).tolist()
-    zero = [[0, 0]] * len(vertices)
-    return [{"c": closed, "v": vertices, "i": zero, "o": zero}]
-
-
-def _path(frames: tuple[int, ...], points: Array, closed: bool, handles: Handles,
-          index: int) -> dict[str, Any]:
+def _path(frames: tuple[int, ...], points: Array, closed: bool, handles: Handles, index: int) -> dict[str, Any]:
     """One contour: ``points (K, L, 2)`` at ``frames``."""
-    values = [_shape_value(p, closed) for p in points]
-    prop = _animated(frames, values, handles)
-    if prop["a"] == 0:
-        prop = _static(values[0][0])
-    return {"ty": "sh", "nm": f"contour {index}", "ind": index, "ks": prop}
-
-
-def _percent(values: Array) -> list[float]:
-    return [round(float(v) * 100.0, 3) for v in values]
+    return {"ty": "sh", "nm": f"contour {index}", "ind": index, "ks": contour(frames, points, closed, handles)}
 
 
 def _colour_prop(frames: tuple[int, ...], colours: Array) -> tuple[dict[str, Any], dict[str, Any]]:
     """A colour ``(P, 4)`` as Lottie's ``c`` (RGB in [0, 1]) and ``o`` (alpha in percent)."""
     rgb = [[round(float(v), 5) for v in c[:3]] + [1] for c in colours]
-    alpha = [[a] for a in _percent(colours[:, 3])]
-    return _animated(frames, rgb, STRAIGHT), _scalar(_animated(frames, alpha, STRAIGHT))
+    alpha = [[a] for a in percent(colours[:, 3])]
+    return animated(frames, rgb, STRAIGHT), scalar(animated(frames, alpha, STRAIGHT))
 
 
-def _scalar(prop: dict[str, Any]) -> dict[str, Any]:
-    """Lottie keeps one-dimensional static values as plain numbers."""
-    if prop["a"] == 0 and isinstance(prop["k"], list):
-        return _static(prop["k"][0])
-    return prop
-
-
-def _layer(run: VectorRun, index: int, frames: int) -> dict[str, Any]:
+def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
+    """The run's layer, below the matte of its clip path of several contours if it has one."""
+    frames = clip.frames
     paths = [_path(run.path_frames, p, shut, run.ease, i) for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
     groups = run.stroke_groups() if run.stroke is not None else []
+    gradient = run.gradient
+    stretched = gradient is not None and not (gradient.kind == "linear" or gradient.circular)
     shapes: list[dict[str, Any]] = []
-    if len(groups) == 1:  # one group: the paths, the stroke above the fill
-        items = [*paths, _stroke(run, groups[0][1]), *_fill(run), {"ty": "tr", **_transform(_static(100))}]
+    if len(groups) == 1 and not stretched:  # one group: the paths, the stroke above the fill
+        items = [*paths, _stroke(run, groups[0][1]), *_fill(run), {"ty": "tr", **transform(static(100))}]
         shapes.append({"ty": "gr", "nm": run.element, "it": items})
-    else:  # contours growing from a point stroke with their share of the width: strokes apart, above the fill
+    else:  # strokes apart, above the fill: contours growing from a point with their share of the width, or
+        # a fill in the frame of its elliptical gradient
         for members, widths in groups:
-            items = [*(paths[i] for i in members), _stroke(run, widths), {"ty": "tr", **_transform(_static(100))}]
+            items = [*(paths[i] for i in members), _stroke(run, widths), {"ty": "tr", **transform(static(100))}]
             shapes.append({"ty": "gr", "nm": f"{run.element} stroke", "it": items})
-        shapes.append({"ty": "gr", "nm": run.element,
-                       "it": [*paths, *_fill(run), {"ty": "tr", **_transform(_static(100))}]})
-    opacity = _scalar(_animated(run.paint_frames, [[v] for v in _percent(run.opacity)], STRAIGHT))
-    return {"ddd": 0, "ind": index, "ty": 4, "nm": run.element, "sr": 1, "ks": _transform(opacity), "ao": 0,
-            "ip": run.first - _EARLY_IN if run.first > 0 else 0,
-            "op": run.stop - _EARLY_OUT if run.stop < frames else frames,
-            "st": 0, "bm": 0, "shapes": shapes}
+        if gradient is not None and stretched:
+            shapes.append(stretched_fill(run, gradient, _FILL_RULES[run.fill_rule], clip.max_error))
+        else:
+            shapes.append({"ty": "gr", "nm": run.element,
+                           "it": [*paths, *_fill(run), {"ty": "tr", **transform(static(100))}]})
+    opacity = scalar(animated(run.paint_frames, [[v] for v in percent(run.opacity)], STRAIGHT))
+    layer = _shape_layer(run.element, opacity, shapes,
+                         run.first - _EARLY_IN if run.first > 0 else 0, run.stop - _EARLY_OUT if run.stop < frames
+                         else frames)
+    if run.clips is None:
+        return [layer]
+    clipping = masks(run.clips)
+    if clipping:
+        layer.update(hasMask=True, masksProperties=clipping)
+    region = matte(run.clips)
+    if region is None:
+        return [layer]
+    layer["tt"] = 1
+    return [dict(_shape_layer(f"{run.element} clip", static(100), [region], layer["ip"], layer["op"]), td=1), layer]
+
+
+def _shape_layer(name: str, opacity: dict[str, Any], shapes: list[dict[str, Any]], start: float,
+                 stop: float) -> dict[str, Any]:
+    """A shape layer (its ``ind`` is set when the layers are listed)."""
+    return {"ddd": 0, "ind": 0, "ty": 4, "nm": name, "sr": 1, "ks": transform(opacity), "ao": 0, "ip": start,
+            "op": stop, "st": 0, "bm": 0, "shapes": shapes}
 
 
 def _stroke(run: VectorRun, widths: Array) -> dict[str, Any]:
     colour, alpha = _colour_prop(run.paint_frames, run.stroke)  # type: ignore[arg-type]
-    width = _scalar(_animated(run.paint_frames, [[round(float(w), 4)] for w in widths], STRAIGHT))
+    width = scalar(animated(run.paint_frames, [[round(float(w), 4)] for w in widths], STRAIGHT))
     return {"ty": "st", "nm": "stroke", "c": colour, "o": alpha, "w": width, "lc": _CAPS[run.cap],
             "lj": _JOINS[run.join], "ml": run.miter_limit}
 
 
 def _fill(run: VectorRun) -> list[dict[str, Any]]:
+    if run.gradient is not None:
+        return [gradient_fill(run.paint_frames, run.gradient, _FILL_RULES[run.fill_rule])]
     if run.fill is None:
         return []
     colour, alpha = _colour_prop(run.paint_frames, run.fill)
     return [{"ty": "fl", "nm": "fill", "c": colour, "o": alpha, "r": _FILL_RULES[run.fill_rule]}]
 
 
-def _background(clip: VectorClip, index: int) -> dict[str, Any]:
+def _background(clip: VectorClip) -> dict[str, Any]:
     width, height = clip.size
     r, g, b, a = clip.background
-    rect = {"ty": "rc", "nm": "background", "d": 1, "s": _static([width, height]),
-            "p": _static([width / 2, height / 2]), "r": _static(0)}
-    fill = {"ty": "fl", "c": _static([r / 255, g / 255, b / 255, 1]), "o": _static(round(a / 2.55, 3)), "r": 1}
-    return {"ddd": 0, "ind": index, "ty": 4, "nm": "background", "sr": 1, "ks": _transform(_static(100)), "ao": 0,
-            "ip": 0, "op": clip.frames, "st": 0, "bm": 0,
-            "shapes": [{"ty": "gr", "nm": "background", "it": [rect, fill, {"ty": "tr", **_transform(_static(100))}]}]}
+    rect = {"ty": "rc", "nm": "background", "d": 1, "s": static([width, height]),
+            "p": static([width / 2, height / 2]), "r": static(0)}
+    fill = {"ty": "fl", "c": static([r / 255, g / 255, b / 255, 1]), "o": static(round(a / 2.55, 3)), "r": 1}
+    return _shape_layer("background", static(100), [{"ty": "gr", "nm": "background", "it": [
+        rect, fill, {"ty": "tr", **transform(static(100))}]}], 0, clip.frames)

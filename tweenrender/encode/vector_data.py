@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from ..model import Color
 
-__all__ = ["Handles", "STRAIGHT", "EASE_HANDLES", "VectorRun", "VectorClip"]
+__all__ = ["Handles", "STRAIGHT", "EASE_HANDLES", "GradientKeys", "ClipKeys", "VectorRun", "VectorClip"]
 
 Array = NDArray[np.float64]
 
@@ -33,6 +33,42 @@ EASE_HANDLES: dict[str, Handles] = {
 
 
 @dataclass(frozen=True)
+class GradientKeys:
+    """A run's gradient fill at each of its paint keyframes, in output pixels (y down), as the raster draws it.
+
+    ``kind`` ``linear`` or ``radial``; ``spread`` ``pad``, ``reflect`` or ``repeat``; ``offsets (S,)`` the
+    stops' offsets, common to every keyframe; ``colours (P, S, 4)`` their straight RGBA in [0, 1] (a
+    plain fill is a gradient of its one colour). ``start``/``end (P, 2)``: a linear gradient's points at
+    offsets 0 and 1; a radial one's centre and the end of its first axis. A radial gradient is a circle
+    of radius ``|end - start|`` in its own frame, which ``pixel = start + R(angle) · diag(1, ratio) · u``
+    places: ``angle (P,)`` degrees (clockwise on screen, unwrapped), ``ratio (P,)`` the second axis's radius
+    over the first, ``focal (P, 2)`` the focal point in that frame (``(0, 0)``: the centre). Linear
+    gradients hold ratio 1, angle and focal 0. ``circular``: every frame's ellipse is a circle within the
+    clip's tolerance.
+    """
+
+    kind: str
+    spread: str
+    offsets: Array
+    colours: Array
+    start: Array
+    end: Array
+    angle: Array
+    ratio: Array
+    focal: Array
+    circular: bool
+
+
+@dataclass(frozen=True)
+class ClipKeys:
+    """A run's clip paths as keyframes: at clip ``frames (K,)``, ``regions``, each a tuple of closed contours
+    ``(K, N, 2)`` in output pixels filled nonzero; what is drawn is the intersection of the regions."""
+
+    frames: tuple[int, ...]
+    regions: tuple[tuple[Array, ...], ...]
+
+
+@dataclass(frozen=True)
 class VectorRun:
     """One element drawn over clip frames ``first .. stop - 1``, as keyframes.
 
@@ -44,6 +80,8 @@ class VectorRun:
     contour's exact pixels at every frame of the run, side by side, ``(stop - first, sum L_i, 2)``,
     kept for measuring. ``contour_widths (P, C)``: each contour's stroke width where some contour grows
     from (or shrinks to) a point and is stroked with its share of the width (``None``: all ``width``).
+    ``gradient``: the fill as a gradient at the paint keyframes (``fill`` is then ``None``); ``clips``:
+    the clip paths the run is drawn through (``None``: not clipped).
     """
 
     element: str
@@ -64,6 +102,8 @@ class VectorRun:
     miter_limit: float
     exact_frames: Array
     contour_widths: Array | None = None
+    gradient: GradientKeys | None = None
+    clips: ClipKeys | None = None
 
     def stroke_groups(self) -> list[tuple[list[int], Array]]:
         """The contours stroked alike and their width at each paint keyframe: ``[(contour indices, (P,))]``

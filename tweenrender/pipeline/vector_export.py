@@ -6,8 +6,8 @@ of one segment on which it is drawn. A run keeps one list of contours (the segme
 every contour keeps one vertex count) and becomes a layer (Lottie, with ``ip``/``op``) or a path
 element shown over those frames (SVG). Keyframes come from :mod:`..core.keyframes`: a ``linear``
 segment whose keys fall on whole frames is exact with two keyframes and the segment's easing;
-every other run is baked within ``max_error`` pixels; paint within 1/255 (width within
-``max_error``).
+every other run is baked within ``max_error`` pixels; paint within 1/255 (width, a gradient's geometry
+and clip paths within ``max_error``; see :mod:`.vector_paint`).
 """
 
 from __future__ import annotations
@@ -27,6 +27,7 @@ from ..raster.view import Viewport
 from ..core.stacking import order_at
 from .job import RenderJob, scene_view, stacking_of, tracks_of
 from .options import RenderOptions
+from .vector_paint import clip_keys, clip_make, gradient_look, gradient_samples
 
 __all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR"]
 
@@ -107,15 +108,19 @@ def _stacking(scene: Scene, tracks: tuple[Track, ...], times: Array) -> tuple[li
 def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
              phases: NDArray[np.intp]) -> list[tuple[int, int]]:
     """Maximal ranges of frames of one segment and one paint order on which ``shape`` is drawn with finite
-    contours, the same windings and the same key's fill rule and stroke ends."""
+    contours, the same windings, the same key's fill rule and stroke ends, the same kind of gradient fill
+    and clip paths of the same make."""
     drawn = []
     for at in shapes:
-        _refuse_unsupported(shape, at)
-        drawn.append(at.visible and all(np.all(np.isfinite(c)) for c in at.contours))
+        _refuse_cross_fade(shape, at)
+        drawn.append(at.visible and all(np.all(np.isfinite(c)) for c in at.contours)
+                     and all(at.clips))  # a clip region with no contours hides everything
+    gradients = _gradient_looks(shapes, segments)
 
     def look(f: int) -> tuple[object, ...]:
         at = shapes[f]
-        return (int(segments[f]), int(phases[f]), len(at.contours), at.reversed, _style(shape, at))
+        return (int(segments[f]), int(phases[f]), len(at.contours), at.reversed, _style(shape, at), gradients[f],
+                clip_make(at))
 
     out: list[tuple[int, int]] = []
     start = None
@@ -129,18 +134,30 @@ def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
     return out
 
 
-def _refuse_unsupported(shape: Shape, at: ShapeAt) -> None:
-    """A vector file cannot carry cross-fading contours, gradients or clip paths (yet): refuse, naming the element."""
-    what = None
+def _refuse_cross_fade(shape: Shape, at: ShapeAt) -> None:
+    """A vector file cannot carry cross-fading contours: refuse, naming the element."""
     if at.fade is not None:
-        what = "its contours cross-fade (unmatched = \"fade\")"
-    elif at.paint.gradient is not None:
-        what = "it is painted with a gradient"
-    elif at.clips:
-        what = "it is clipped (clip-path or mask)"
-    if what is not None:
-        raise OptionError(f"element {shape.name!r}: {what}, which the vector formats do not carry yet; "
-                          "render a video or PNG frames", "format")
+        raise OptionError(f"element {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which the "
+                          "vector formats do not carry; render a video or PNG frames", "format")
+
+
+def _gradient_looks(shapes: list[ShapeAt], segments: NDArray[np.intp]) -> list[tuple[str, str] | None]:
+    """Per frame, the kind and spread of its gradient fill; a frame without one takes the nearest frame's of its
+    segment, so a key filled plainly stays in the run of the gradient it blends with."""
+    looks = [gradient_look(at.paint) for at in shapes]
+    count = len(looks)
+    nearest: list[list[int]] = [[] for _ in range(count)]  # the frames of the segment with a look, either side
+    for order in (range(count), range(count - 1, -1, -1)):
+        last, previous = None, None
+        for f in order:
+            if previous is not None and segments[f] != segments[previous]:
+                last = None
+            if looks[f] is not None:
+                last = f
+            if last is not None:
+                nearest[f].append(last)
+            previous = f
+    return [looks[min(near, key=lambda i: abs(i - f))] if near else None for f, near in enumerate(nearest)]
 
 
 def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int,
@@ -238,7 +255,11 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         paths = tuple(s[keys] for s in samples)
         ease = STRAIGHT
     scale = viewport.scale if shape.stroke_scales else 1.0
-    fill, stroke, width, opacity = _paint_arrays([at.paint for at in shapes], scale)
+    paints = [at.paint for at in shapes]
+    fill, stroke, width, opacity = _paint_arrays(paints, scale)
+    gradient = gradient_samples(paints, viewport, max_error)
+    if gradient is not None:
+        fill = None  # filled by the gradient, a plain key as a gradient of its one colour
     channels = paint_channels(_or_clear(fill, len(shapes)), _or_clear(stroke, len(shapes)), width, opacity,
                               max_error)
     shares = np.array([[at.widths[i] if at.widths else 1.0 for i in keep] for at in shapes]).reshape(len(shapes), -1)
@@ -246,13 +267,18 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
     if stroke is not None and np.any(shares != 1.0):
         contour_widths = width[:, None] * shares  # (F, C)
         channels = np.concatenate([channels, contour_widths[:, :, None] / max_error], axis=1)
+    channels = np.pad(channels, ((0, 0), (0, 0), (0, 1)))  # (F, C, 2), beside the gradient's points
+    if gradient is not None:
+        channels = np.concatenate([channels, gradient.channels()], axis=1)
     paint_keys = greedy_keyframes(channels, 1.0)
     pick = np.array(paint_keys)
     rule, cap, join, miter = _style(shape, shapes[0])
     return VectorRun(shape.name, first, stop, path_frames, paths, closed, ease, tuple(first + k for k in paint_keys),
                      None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
                      opacity[pick], rule, cap, join, miter, joined,
-                     None if contour_widths is None else contour_widths[pick])
+                     None if contour_widths is None else contour_widths[pick],
+                     None if gradient is None else gradient.keys(pick),
+                     clip_keys(shapes, first, viewport, max_error))
 
 
 def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:

@@ -4,24 +4,25 @@ from __future__ import annotations
 
 import numpy as np
 import skia
+from numpy.typing import NDArray
 
 from ..model import Gradient
 from .view import Viewport
 
-__all__ = ["gradient_shader"]
+__all__ = ["gradient_shader", "pixel_affine"]
 
 _TILES = {"pad": skia.TileMode.kClamp, "reflect": skia.TileMode.kMirror, "repeat": skia.TileMode.kRepeat}
 
 
-def _pixel_matrix(gradient: Gradient, viewport: Viewport) -> skia.Matrix:
-    """Gradient space → canvas pixels: the gradient's own matrix, then the viewport's (y flipped)."""
-    x0, y0, x1, y1 = viewport.view
-    s = viewport.scale
-    ox = 0.5 * (viewport.width - s * (x1 - x0))
-    oy = 0.5 * (viewport.height - s * (y1 - y0))
-    view = np.array([[s, 0.0, ox - s * x0], [0.0, -s, viewport.height - oy + s * y0], [0.0, 0.0, 1.0]])
+def pixel_affine(gradient: Gradient, viewport: Viewport) -> NDArray[np.float64]:
+    """Gradient space → canvas pixels as a ``(3, 3)`` affine matrix: the gradient's own matrix, then the
+    viewport's (y flipped)."""
     a, b, c, d, e, f = gradient.matrix
-    full = view @ np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]])
+    return viewport.matrix @ np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]])
+
+
+def _pixel_matrix(gradient: Gradient, viewport: Viewport) -> skia.Matrix:
+    full = pixel_affine(gradient, viewport)
     return skia.Matrix.MakeAll(*(float(v) for v in full[0]), *(float(v) for v in full[1]), 0.0, 0.0, 1.0)
 
 

@@ -42,6 +42,15 @@ class Viewport:
         with np.errstate(over="ignore", divide="ignore"):
             return float(min(self.width / (x1 - x0), self.height / (y1 - y0), _MAX_SCALE))
 
+    @property
+    def matrix(self) -> NDArray[np.float64]:
+        """World → pixel as a ``(3, 3)`` affine matrix (what :meth:`to_pixels` does, without its clamp)."""
+        x0, y0, x1, y1 = self.view
+        s = self.scale
+        ox = 0.5 * (self.width - s * (x1 - x0))
+        oy = 0.5 * (self.height - s * (y1 - y0))
+        return np.array([[s, 0.0, ox - s * x0], [0.0, -s, self.height - oy + s * y0], [0.0, 0.0, 1.0]])
+
     def to_pixels(self, points: NDArray[np.float64]) -> NDArray[np.float64]:
         """World ``(..., 2)`` → pixel ``(..., 2)`` (origin top-left, y down), each within ±1e300.
 

@@ -1,0 +1,152 @@
+"""Gradient fills and clip paths in Lottie.
+
+A linear gradient, and a radial one that stays a circle, is a gradient fill (``gf``, type 1 or 2) beside
+the paths: start ``s`` and end ``e`` in pixels, a radial one's focal point as its highlight (``h``, percent
+of the radius, at angle ``a`` from ``s → e``), the stops as ``g`` (``p`` colour stops ``offset, r, g, b``
+then as many opacity stops ``offset, alpha``), all keyed at the paint keyframes. Lottie's gradients are
+circles: an elliptical one is drawn in its own group whose transform (position, rotation, scale) turns
+the circle into the ellipse, with the paths written in that group's frame, from the exact paths at every
+frame through the transform the player computes there, keyframed within the tolerance. Lottie gradients
+pad: a gradient that repeats or reflects is refused.
+
+Clip paths of one contour are the layer's masks (in pixels; a layer is not transformed), intersected
+(``a``, then ``i``): masks are combined one after the other by rlottie but each with all that follow it
+by ThorVG, which agree for intersections only, and rlottie loses spans when it adds, subtracts or
+excludes masks. A clip path of several contours (its nonzero fill, holes and all) is a matte: a layer
+just above the run's, drawing it in white, which the run's layer shows through (alpha matte). A second
+clip path of several contours is refused.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..core.keyframes import greedy_keyframes
+from ..errors import OptionError
+from .lottie_values import animated, contour, percent, scalar, static, transform
+from .vector_data import STRAIGHT, Array, ClipKeys, GradientKeys, Handles, VectorRun
+
+__all__ = ["gradient_fill", "stretched_fill", "masks", "matte", "refuse_unsupported"]
+
+_DECIMALS = 5
+
+
+def refuse_unsupported(run: VectorRun) -> None:
+    """Refuse, naming the element, what Lottie cannot carry: a gradient that does not pad, a clip of
+    regions masks cannot combine."""
+    gradient = run.gradient
+    if gradient is not None and gradient.spread != "pad":
+        raise OptionError(f"element {run.element!r}: its gradient spreads by {gradient.spread}, which Lottie "
+                          "cannot carry (its gradients pad); write an animated SVG, or pad the gradient", "format")
+    if run.clips is not None and sum(len(region) > 1 for region in run.clips.regions) > 1:
+        raise OptionError(f"element {run.element!r}: it is clipped by several clip paths of several contours each, "
+                          "which Lottie cannot carry (one is a matte, the others masks of one contour); write an "
+                          "animated SVG", "format")
+
+
+def gradient_fill(frames: tuple[int, ...], gradient: GradientKeys, rule: int, stretched: bool = False
+                  ) -> dict[str, Any]:
+    """A gradient fill (``gf``) keyed at ``frames`` with fill rule ``rule``; ``stretched``: in the frame of
+    :func:`stretched_fill`'s group, where it is a circle about the origin."""
+    radius = np.linalg.norm(gradient.end - gradient.start, axis=1)  # (P,)
+    if stretched:
+        start = np.zeros_like(gradient.start)
+        end = np.stack([radius, np.zeros_like(radius)], axis=1)
+    else:
+        start, end = gradient.start, gradient.end
+    item: dict[str, Any] = {"ty": "gf", "nm": "fill", "o": static(100), "r": rule,
+                            "t": 1 if gradient.kind == "linear" else 2,
+                            "s": animated(frames, _points(start)), "e": animated(frames, _points(end)),
+                            "g": {"p": len(gradient.offsets), "k": animated(frames, _stops(gradient))}}
+    if gradient.kind == "radial":
+        length = np.linalg.norm(gradient.focal, axis=1) / np.maximum(radius, 1e-12)
+        turn = np.degrees(np.unwrap(np.arctan2(gradient.focal[:, 1], gradient.focal[:, 0])))
+        item["h"] = scalar(animated(frames, [[v] for v in percent(length)]))
+        item["a"] = scalar(animated(frames, [[round(float(v), 3)] for v in turn]))
+    return item
+
+
+def _points(points: Array) -> list[list[float]]:
+    return np.round(points, 3).tolist()
+
+
+def _stops(gradient: GradientKeys) -> list[list[float]]:
+    """Per keyframe, Lottie's flat stop list: ``offset, r, g, b`` per stop, then ``offset, alpha`` per stop."""
+    out = []
+    for colours in gradient.colours:  # (S, 4)
+        values: list[float] = []
+        for offset, colour in zip(gradient.offsets, colours):
+            values += [float(offset), *(float(v) for v in colour[:3])]
+        for offset, colour in zip(gradient.offsets, colours):
+            values += [float(offset), float(colour[3])]
+        out.append([round(v, _DECIMALS) for v in values])
+    return out
+
+
+def stretched_fill(run: VectorRun, gradient: GradientKeys, rule: int, tolerance: float) -> dict[str, Any]:
+    """A group filling the run's contours with its elliptical ``gradient``: its transform places the
+    gradient's own frame (``pixel = start + R(angle) · diag(1, ratio) · u``), the paths are written in it."""
+    frames = run.paint_frames
+    position = animated(frames, _points(gradient.start))
+    rotation = scalar(animated(frames, [[round(float(a), 4)] for a in gradient.angle]))
+    scale = animated(frames, [[100.0, round(float(100.0 * r), 4)] for r in gradient.ratio])
+    path_frames, local = _local_paths(run, gradient, tolerance)
+    paths = [{"ty": "sh", "nm": f"contour {i}", "ind": i, "ks": contour(path_frames, points, shut, ease)}
+             for i, (points, shut, ease) in enumerate(local)]
+    items = [*paths, gradient_fill(frames, gradient, rule, stretched=True),
+             {"ty": "tr", **transform(static(100), position, rotation, scale)}]
+    return {"ty": "gr", "nm": run.element, "it": items}
+
+
+def _local_paths(run: VectorRun, gradient: GradientKeys, tolerance: float
+                 ) -> tuple[tuple[int, ...], list[tuple[Array, bool, Handles]]]:
+    """The run's contours in the gradient's own frame, as the player places that frame at each frame:
+    ``(frames, [(points (K, L_i, 2), closed, easing)])``. Where the frame never moves, the run's own
+    keyframes mapped into it (an affine map keeps straight lines straight); else the exact paths at every
+    frame of the run mapped through the player's transform there, keyframed so that, mapped back, they
+    stay within ``tolerance`` pixels."""
+    keys = np.array(run.paint_frames, dtype=np.float64)
+    still = all(np.array_equal(a[:1].repeat(len(a), 0), a) for a in (gradient.start, gradient.angle, gradient.ratio))
+    if still:
+        local = [_into(p, gradient.start[0], gradient.angle[0], gradient.ratio[0]) for p in run.paths]
+        return run.path_frames, [(p, shut, run.ease) for p, shut in zip(local, run.closed)]
+    frames = np.arange(run.first, run.stop, dtype=np.float64)
+    centre = np.stack([np.interp(frames, keys, gradient.start[:, k]) for k in range(2)], axis=1)  # (F, 2)
+    angle, ratio = np.interp(frames, keys, gradient.angle), np.interp(frames, keys, gradient.ratio)
+    exact = run.exact_frames  # (F, sum L_i, 2)
+    local = np.stack([_into(exact[f], centre[f], angle[f], ratio[f]) for f in range(len(frames))])
+    stretch = max(1.0, float(ratio.max()))  # the transform lengthens no distance more than this
+    picked = greedy_keyframes(local * stretch, tolerance)
+    bounds = np.cumsum([0] + [p.shape[1] for p in run.paths])
+    return (tuple(run.first + k for k in picked),
+            [(local[picked, a:b], shut, STRAIGHT) for a, b, shut in zip(bounds, bounds[1:], run.closed)])
+
+
+def _into(points: Array, centre: Array, angle: float, ratio: float) -> Array:
+    """Pixels ``(..., 2)`` in the frame ``pixel = centre + R(angle) · diag(1, ratio) · u`` (angle in degrees)."""
+    theta = np.radians(angle)
+    c, s = np.cos(theta), np.sin(theta)
+    d = points - centre
+    return np.stack([c * d[..., 0] + s * d[..., 1], (-s * d[..., 0] + c * d[..., 1]) / ratio], axis=-1)
+
+
+def masks(clips: ClipKeys) -> list[dict[str, Any]]:
+    """A layer's masks: the clip paths of one contour each, intersected (none when there are none)."""
+    singles = [region[0] for region in clips.regions if len(region) == 1]
+    return [{"nm": f"clip {index}", "mode": "i" if index else "a", "inv": False, "o": static(100), "x": static(0),
+             "pt": contour(clips.frames, points, True)} for index, points in enumerate(singles)]
+
+
+def matte(clips: ClipKeys) -> dict[str, Any] | None:
+    """The shapes of a matte layer (``td``) drawing the clip path of several contours (nonzero), for a
+    layer to show through (``tt`` 1, alpha); ``None`` when there is none."""
+    several = [region for region in clips.regions if len(region) > 1]
+    if not several:
+        return None
+    paths = [{"ty": "sh", "nm": f"clip {i}", "ind": i, "ks": contour(clips.frames, points, True)}
+             for i, points in enumerate(several[0])]
+    return {"ty": "gr", "nm": "clip", "it": [*paths, {"ty": "fl", "nm": "clip", "c": static([1, 1, 1, 1]),
+                                                      "o": static(100), "r": 1},
+                                             {"ty": "tr", **transform(static(100))}]}

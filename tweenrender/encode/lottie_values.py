@@ -1,0 +1,69 @@
+"""Lottie property values: static and keyframed properties, transforms and straight-edged paths."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from .vector_data import STRAIGHT, Array, Handles
+
+__all__ = ["DIGITS", "static", "animated", "scalar", "percent", "transform", "contour"]
+
+DIGITS = 3  # pixels are written to a thousandth
+
+
+def static(value: Any) -> dict[str, Any]:
+    """A property that never changes."""
+    return {"a": 0, "k": value}
+
+
+def animated(frames: tuple[int, ...], values: list[Any], handles: Handles = STRAIGHT) -> dict[str, Any]:
+    """A property keyed at ``frames``, each key eased to the next by ``handles`` (CSS cubic-bezier); static
+    when every value is the first."""
+    if len(frames) == 1 or all(v == values[0] for v in values[1:]):
+        return static(values[0])
+    x1, y1, x2, y2 = handles
+    keys: list[dict[str, Any]] = []
+    for index, (frame, value) in enumerate(zip(frames, values)):
+        key: dict[str, Any] = {"t": frame, "s": value}
+        if index < len(frames) - 1:
+            key["o"] = {"x": [x1], "y": [y1]}
+            key["i"] = {"x": [x2], "y": [y2]}
+        keys.append(key)
+    return {"a": 1, "k": keys}
+
+
+def scalar(prop: dict[str, Any]) -> dict[str, Any]:
+    """Lottie keeps one-dimensional static values as plain numbers."""
+    if prop["a"] == 0 and isinstance(prop["k"], list):
+        return static(prop["k"][0])
+    return prop
+
+
+def percent(values: Array) -> list[float]:
+    """Fractions ``(P,)`` as percentages."""
+    return [round(float(v) * 100.0, 3) for v in values]
+
+
+def transform(opacity: dict[str, Any], position: dict[str, Any] | None = None, rotation: dict[str, Any] | None = None,
+              scale: dict[str, Any] | None = None) -> dict[str, Any]:
+    """A transform's properties: by default none moves, turns or scales."""
+    return {"o": opacity, "r": rotation or static(0), "p": position or static([0, 0, 0]), "a": static([0, 0, 0]),
+            "s": scale or static([100, 100, 100])}
+
+
+def _shape_value(points: Array, closed: bool) -> list[dict[str, Any]]:
+    vertices = np.round(points, DIGITS).tolist()
+    zero = [[0, 0]] * len(vertices)
+    return [{"c": closed, "v": vertices, "i": zero, "o": zero}]
+
+
+def contour(frames: tuple[int, ...], points: Array, closed: bool, handles: Handles = STRAIGHT) -> dict[str, Any]:
+    """A straight-edged path ``points (K, L, 2)`` at ``frames``, as a shape property (``ks`` of a path,
+    ``pt`` of a mask)."""
+    values = [_shape_value(p, closed) for p in points]
+    prop = animated(frames, values, handles)
+    if prop["a"] == 0:
+        prop = static(values[0][0])
+    return prop

@@ -73,7 +73,7 @@ def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
     paths = [_path(run.path_frames, p, shut, run.ease, i) for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
     groups = run.stroke_groups() if run.stroke is not None else []
     gradient = run.gradient
-    stretched = gradient is not None and not (gradient.kind == "linear" or gradient.circular)
+    stretched = run.gradient_paths is not None
     shapes: list[dict[str, Any]] = []
     if len(groups) == 1 and not stretched:  # one group: the paths, the stroke above the fill
         items = [*paths, _stroke(run, groups[0][1]), *_fill(run), {"ty": "tr", **transform(static(100))}]
@@ -84,7 +84,7 @@ def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
             items = [*(paths[i] for i in members), _stroke(run, widths), {"ty": "tr", **transform(static(100))}]
             shapes.append({"ty": "gr", "nm": f"{run.element} stroke", "it": items})
         if gradient is not None and stretched:
-            shapes.append(stretched_fill(run, gradient, _FILL_RULES[run.fill_rule], clip.max_error))
+            shapes.append(stretched_fill(run, gradient, _FILL_RULES[run.fill_rule]))
         else:
             shapes.append({"ty": "gr", "nm": run.element,
                            "it": [*paths, *_fill(run), {"ty": "tr", **transform(static(100))}]})

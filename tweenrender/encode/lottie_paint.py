@@ -23,10 +23,9 @@ from typing import Any
 
 import numpy as np
 
-from ..core.keyframes import greedy_keyframes
 from ..errors import OptionError
 from .lottie_values import animated, contour, percent, scalar, static, transform
-from .vector_data import STRAIGHT, Array, ClipKeys, GradientKeys, Handles, VectorRun
+from .vector_data import Array, ClipKeys, GradientKeys, VectorRun
 
 __all__ = ["gradient_fill", "stretched_fill", "masks", "matte", "refuse_unsupported"]
 
@@ -85,51 +84,20 @@ def _stops(gradient: GradientKeys) -> list[list[float]]:
     return out
 
 
-def stretched_fill(run: VectorRun, gradient: GradientKeys, rule: int, tolerance: float) -> dict[str, Any]:
+def stretched_fill(run: VectorRun, gradient: GradientKeys, rule: int) -> dict[str, Any]:
     """A group filling the run's contours with its elliptical ``gradient``: its transform places the
     gradient's own frame (``pixel = start + R(angle) · diag(1, ratio) · u``), the paths are written in it."""
     frames = run.paint_frames
     position = animated(frames, _points(gradient.start))
     rotation = scalar(animated(frames, [[round(float(a), 4)] for a in gradient.angle]))
     scale = animated(frames, [[100.0, round(float(100.0 * r), 4)] for r in gradient.ratio])
-    path_frames, local = _local_paths(run, gradient, tolerance)
+    assert run.gradient_paths is not None, "an elliptical gradient's run carries its paths in the gradient's frame"
+    path_frames, local, ease = run.gradient_paths
     paths = [{"ty": "sh", "nm": f"contour {i}", "ind": i, "ks": contour(path_frames, points, shut, ease)}
-             for i, (points, shut, ease) in enumerate(local)]
+             for i, (points, shut) in enumerate(zip(local, run.closed))]
     items = [*paths, gradient_fill(frames, gradient, rule, stretched=True),
              {"ty": "tr", **transform(static(100), position, rotation, scale)}]
     return {"ty": "gr", "nm": run.element, "it": items}
-
-
-def _local_paths(run: VectorRun, gradient: GradientKeys, tolerance: float
-                 ) -> tuple[tuple[int, ...], list[tuple[Array, bool, Handles]]]:
-    """The run's contours in the gradient's own frame, as the player places that frame at each frame:
-    ``(frames, [(points (K, L_i, 2), closed, easing)])``. Where the frame never moves, the run's own
-    keyframes mapped into it (an affine map keeps straight lines straight); else the exact paths at every
-    frame of the run mapped through the player's transform there, keyframed so that, mapped back, they
-    stay within ``tolerance`` pixels."""
-    keys = np.array(run.paint_frames, dtype=np.float64)
-    still = all(np.array_equal(a[:1].repeat(len(a), 0), a) for a in (gradient.start, gradient.angle, gradient.ratio))
-    if still:
-        local = [_into(p, gradient.start[0], gradient.angle[0], gradient.ratio[0]) for p in run.paths]
-        return run.path_frames, [(p, shut, run.ease) for p, shut in zip(local, run.closed)]
-    frames = np.arange(run.first, run.stop, dtype=np.float64)
-    centre = np.stack([np.interp(frames, keys, gradient.start[:, k]) for k in range(2)], axis=1)  # (F, 2)
-    angle, ratio = np.interp(frames, keys, gradient.angle), np.interp(frames, keys, gradient.ratio)
-    exact = run.exact_frames  # (F, sum L_i, 2)
-    local = np.stack([_into(exact[f], centre[f], angle[f], ratio[f]) for f in range(len(frames))])
-    stretch = max(1.0, float(ratio.max()))  # the transform lengthens no distance more than this
-    picked = greedy_keyframes(local * stretch, tolerance)
-    bounds = np.cumsum([0] + [p.shape[1] for p in run.paths])
-    return (tuple(run.first + k for k in picked),
-            [(local[picked, a:b], shut, STRAIGHT) for a, b, shut in zip(bounds, bounds[1:], run.closed)])
-
-
-def _into(points: Array, centre: Array, angle: float, ratio: float) -> Array:
-    """Pixels ``(..., 2)`` in the frame ``pixel = centre + R(angle) · diag(1, ratio) · u`` (angle in degrees)."""
-    theta = np.radians(angle)
-    c, s = np.cos(theta), np.sin(theta)
-    d = points - centre
-    return np.stack([c * d[..., 0] + s * d[..., 1], (-s * d[..., 0] + c * d[..., 1]) / ratio], axis=-1)
 
 
 def masks(clips: ClipKeys) -> list[dict[str, Any]]:

@@ -81,7 +81,9 @@ class VectorRun:
     kept for measuring. ``contour_widths (P, C)``: each contour's stroke width where some contour grows
     from (or shrinks to) a point and is stroked with its share of the width (``None``: all ``width``).
     ``gradient``: the fill as a gradient at the paint keyframes (``fill`` is then ``None``); ``clips``:
-    the clip paths the run is drawn through (``None``: not clipped).
+    the clip paths the run is drawn through (``None``: not clipped). ``gradient_paths``: for an elliptical
+    radial gradient, the contours in the gradient's own frame (a Lottie group's transform places that
+    frame), as ``(frames (K',), ((K', L_i, 2) per contour), ease)``.
     """
 
     element: str
@@ -104,6 +106,7 @@ class VectorRun:
     contour_widths: Array | None = None
     gradient: GradientKeys | None = None
     clips: ClipKeys | None = None
+    gradient_paths: tuple[tuple[int, ...], tuple[Array, ...], Handles] | None = None
 
     def stroke_groups(self) -> list[tuple[list[int], Array]]:
         """The contours stroked alike and their width at each paint keyframe: ``[(contour indices, (P,))]``

@@ -27,7 +27,7 @@ from ..raster.view import Viewport
 from ..core.stacking import order_at
 from .job import RenderJob, scene_view, stacking_of, tracks_of
 from .options import RenderOptions
-from .vector_paint import clip_keys, clip_make, gradient_look, gradient_samples
+from .vector_paint import clip_keys, clip_make, gradient_frame_paths, gradient_look, gradient_samples
 
 __all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR"]
 
@@ -273,12 +273,13 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
     paint_keys = greedy_keyframes(channels, 1.0)
     pick = np.array(paint_keys)
     rule, cap, join, miter = _style(shape, shapes[0])
-    return VectorRun(shape.name, first, stop, path_frames, paths, closed, ease, tuple(first + k for k in paint_keys),
-                     None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
-                     opacity[pick], rule, cap, join, miter, joined,
-                     None if contour_widths is None else contour_widths[pick],
-                     None if gradient is None else gradient.keys(pick),
-                     clip_keys(shapes, first, viewport, max_error))
+    run = VectorRun(shape.name, first, stop, path_frames, paths, closed, ease, tuple(first + k for k in paint_keys),
+                    None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
+                    opacity[pick], rule, cap, join, miter, joined,
+                    None if contour_widths is None else contour_widths[pick],
+                    None if gradient is None else gradient.keys(pick),
+                    clip_keys(shapes, first, viewport, max_error))
+    return replace(run, gradient_paths=gradient_frame_paths(run, max_error))
 
 
 def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:

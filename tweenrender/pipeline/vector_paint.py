@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 
 from ..core.keyframes import greedy_keyframes
 from ..core.timeline import ShapeAt
-from ..encode.vector_data import ClipKeys, GradientKeys
+from ..encode.vector_data import STRAIGHT, ClipKeys, GradientKeys, Handles, VectorRun
 from ..model import Gradient, Paint
 from ..raster.gradients import pixel_affine
 from ..raster.view import Viewport
@@ -271,3 +271,38 @@ def clip_keys(shapes: list[ShapeAt], first: int, viewport: Viewport, tolerance: 
                for r, region in enumerate(make)]  # (F, N, 2) each
     keys = greedy_keyframes(np.concatenate([c for region in regions for c in region], axis=1), tolerance)
     return ClipKeys(tuple(first + k for k in keys), tuple(tuple(c[keys] for c in region) for region in regions))
+
+
+def gradient_frame_paths(run: VectorRun, tolerance: float
+                         ) -> tuple[tuple[int, ...], tuple[Array, ...], Handles] | None:
+    """The run's contours in its elliptical radial gradient's own frame, as the player places that frame at
+    each frame: ``(frames, ((K, L_i, 2) per contour), ease)``; ``None`` for a linear or circular gradient
+    (or none). Where the frame never moves, the run's own keyframes mapped into it (an affine map keeps
+    straight lines straight); else the exact paths at every frame of the run mapped through the player's
+    transform there, keyframed so that, mapped back, they stay within ``tolerance`` pixels."""
+    gradient = run.gradient
+    if gradient is None or gradient.kind == "linear" or gradient.circular:
+        return None
+    keys = np.array(run.paint_frames, dtype=np.float64)
+    still = all(np.array_equal(a[:1].repeat(len(a), 0), a) for a in (gradient.start, gradient.angle, gradient.ratio))
+    if still:
+        local = tuple(_into(p, gradient.start[0], gradient.angle[0], gradient.ratio[0]) for p in run.paths)
+        return run.path_frames, local, run.ease
+    frames = np.arange(run.first, run.stop, dtype=np.float64)
+    centre = np.stack([np.interp(frames, keys, gradient.start[:, k]) for k in range(2)], axis=1)  # (F, 2)
+    angle, ratio = np.interp(frames, keys, gradient.angle), np.interp(frames, keys, gradient.ratio)
+    exact = run.exact_frames  # (F, sum L_i, 2)
+    placed = np.stack([_into(exact[f], centre[f], angle[f], ratio[f]) for f in range(len(frames))])
+    stretch = max(1.0, float(ratio.max()))  # the transform lengthens no distance more than this
+    picked = greedy_keyframes(placed * stretch, tolerance)
+    bounds = np.cumsum([0] + [p.shape[1] for p in run.paths])
+    return (tuple(run.first + k for k in picked), tuple(placed[picked, a:b] for a, b in zip(bounds, bounds[1:])),
+            STRAIGHT)
+
+
+def _into(points: Array, centre: Array, angle: float, ratio: float) -> Array:
+    """Pixels ``(..., 2)`` in the frame ``pixel = centre + R(angle) · diag(1, ratio) · u`` (angle in degrees)."""
+    theta = np.radians(angle)
+    c, s = np.cos(theta), np.sin(theta)
+    d = points - centre
+    return np.stack([c * d[..., 0] + s * d[..., 1], (-s * d[..., 0] + c * d[..., 1]) / ratio], axis=-1)

@@ -3,8 +3,8 @@
 A full-size rectangle is the background; each run (an element over the frames of one segment) is
 a group, shown only over its frames (``visibility``, discrete) and faded by the paint's
 ``opacity``, holding one ``<path>``: all its contours as subpaths, so holes follow the fill rule.
-``<animate>`` moves ``d`` through the path keyframes (``calcMode="spline"`` with the easing's
-``keySplines`` for an exact segment) and ``fill``, ``fill-opacity``, ``stroke``,
+``<animate>`` moves ``d`` through the path keyframes (``calcMode="spline"`` with each span's
+``keySplines`` where some span is not straight) and ``fill``, ``fill-opacity``, ``stroke``,
 ``stroke-opacity``, ``stroke-width`` through the paint keyframes. Frame ``f`` is at
 ``keyTime f / F`` of ``dur = F / fps`` seconds; every animation freezes at its end.
 """
@@ -65,19 +65,20 @@ def _d(paths: list[Array], closed: tuple[bool, ...]) -> str:
 
 
 def _animate(name: str, frames: tuple[int, ...], values: list[str], total: int, duration: str,
-             ease: Handles = STRAIGHT) -> str:
-    """An ``<animate>`` of ``name`` through ``values`` at clip ``frames``, held before the first and
-    after the last (keyTimes run from 0 to 1); ``""`` when the value never changes."""
+             eases: tuple[Handles, ...] = ()) -> str:
+    """An ``<animate>`` of ``name`` through ``values`` at clip ``frames``, each span timed by its
+    ``eases`` (none: straight), held before the first and after the last (keyTimes run from 0 to 1);
+    ``""`` when the value never changes."""
     if all(v == values[0] for v in values[1:]):
         return ""
     times = [f / total for f in frames]
-    splines = [ease] * (len(frames) - 1)
+    splines = list(eases) or [STRAIGHT] * (len(frames) - 1)
     held = STRAIGHT
     if frames[0] > 0:
         times, values, splines = [0.0, *times], [values[0], *values], [held, *splines]
     times, values, splines = [*times, 1.0], [*values, values[-1]], [*splines, held]
-    spline = "" if ease == STRAIGHT else ' calcMode="spline" keySplines="' + ";".join(
-        " ".join(_number(v, 4) for v in s) for s in splines) + '"'
+    spline = "" if all(s == STRAIGHT for s in splines) else ' calcMode="spline" keySplines="' + ";".join(
+        " ".join(_number(v, 6) for v in s) for s in splines) + '"'
     return (f'<animate attributeName="{name}" dur="{duration}" fill="freeze" '
             f'keyTimes="{";".join(_number(t, 9) for t in times)}" values={quoteattr(";".join(values))}{spline}/>')
 
@@ -111,7 +112,7 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
     shapes = [[run.paths[i][k] for i in members] for k in range(len(run.path_frames))]
     d_values = [_d(s, tuple(run.closed[i] for i in members)) for s in shapes]
     attributes = [f'd="{d_values[0]}"', f'fill-rule="{run.fill_rule}"']
-    inner = [_animate("d", run.path_frames, d_values, total, duration, run.ease)]
+    inner = [_animate("d", run.path_frames, d_values, total, duration, run.eases)]
     for name, colours in (("fill", run.fill if filled else None), ("stroke", run.stroke if widths is not None
                                                                           else None)):
         if colours is None:

@@ -60,15 +60,16 @@ def _transform(opacity: dict[str, Any]) -> dict[str, Any]:
             "s": _static([100, 100, 100])}
 
 
-def _animated(frames: tuple[int, ...], values: list[Any], handles: Handles) -> dict[str, Any]:
-    """A property keyed at ``frames``, each key eased to the next by ``handles`` (CSS cubic-bezier)."""
+def _animated(frames: tuple[int, ...], values: list[Any], eases: tuple[Handles, ...] = ()) -> dict[str, Any]:
+    """A property keyed at ``frames``, each key eased to the next by its ``eases`` (CSS cubic-bezier;
+    none: straight)."""
     if len(frames) == 1 or all(v == values[0] for v in values[1:]):
         return _static(values[0])
-    x1, y1, x2, y2 = handles
     keys: list[dict[str, Any]] = []
     for index, (frame, value) in enumerate(zip(frames, values)):
         key: dict[str, Any] = {"t": frame, "s": value}
         if index < len(frames) - 1:
+            x1, y1, x2, y2 = eases[index] if eases else STRAIGHT
             key["o"] = {"x": [x1], "y": [y1]}
             key["i"] = {"x": [x2], "y": [y2]}
         keys.append(key)
@@ -81,11 +82,11 @@ def _shape_value(points: Array, closed: bool) -> list[dict[str, Any]]:
     return [{"c": closed, "v": vertices, "i": zero, "o": zero}]
 
 
-def _path(frames: tuple[int, ...], points: Array, closed: bool, handles: Handles,
+def _path(frames: tuple[int, ...], points: Array, closed: bool, eases: tuple[Handles, ...],
           index: int) -> dict[str, Any]:
-    """One contour: ``points (K, L, 2)`` at ``frames``."""
+    """One contour: ``points (K, L, 2)`` at ``frames``, each span timed by its ``eases``."""
     values = [_shape_value(p, closed) for p in points]
-    prop = _animated(frames, values, handles)
+    prop = _animated(frames, values, eases)
     if prop["a"] == 0:
         prop = _static(values[0][0])
     return {"ty": "sh", "nm": f"contour {index}", "ind": index, "ks": prop}
@@ -99,7 +100,7 @@ def _colour_prop(frames: tuple[int, ...], colours: Array) -> tuple[dict[str, Any
     """A colour ``(P, 4)`` as Lottie's ``c`` (RGB in [0, 1]) and ``o`` (alpha in percent)."""
     rgb = [[round(float(v), 5) for v in c[:3]] + [1] for c in colours]
     alpha = [[a] for a in _percent(colours[:, 3])]
-    return _animated(frames, rgb, STRAIGHT), _scalar(_animated(frames, alpha, STRAIGHT))
+    return _animated(frames, rgb), _scalar(_animated(frames, alpha))
 
 
 def _scalar(prop: dict[str, Any]) -> dict[str, Any]:
@@ -110,7 +111,7 @@ def _scalar(prop: dict[str, Any]) -> dict[str, Any]:
 
 
 def _layer(run: VectorRun, index: int, frames: int) -> dict[str, Any]:
-    paths = [_path(run.path_frames, p, shut, run.ease, i) for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
+    paths = [_path(run.path_frames, p, shut, run.eases, i) for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
     groups = run.stroke_groups() if run.stroke is not None else []
     shapes: list[dict[str, Any]] = []
     if len(groups) == 1:  # one group: the paths, the stroke above the fill
@@ -122,7 +123,7 @@ def _layer(run: VectorRun, index: int, frames: int) -> dict[str, Any]:
             shapes.append({"ty": "gr", "nm": f"{run.element} stroke", "it": items})
         shapes.append({"ty": "gr", "nm": run.element,
                        "it": [*paths, *_fill(run), {"ty": "tr", **_transform(_static(100))}]})
-    opacity = _scalar(_animated(run.paint_frames, [[v] for v in _percent(run.opacity)], STRAIGHT))
+    opacity = _scalar(_animated(run.paint_frames, [[v] for v in _percent(run.opacity)]))
     return {"ddd": 0, "ind": index, "ty": 4, "nm": run.element, "sr": 1, "ks": _transform(opacity), "ao": 0,
             "ip": run.first - _EARLY_IN if run.first > 0 else 0,
             "op": run.stop - _EARLY_OUT if run.stop < frames else frames,
@@ -131,7 +132,7 @@ def _layer(run: VectorRun, index: int, frames: int) -> dict[str, Any]:
 
 def _stroke(run: VectorRun, widths: Array) -> dict[str, Any]:
     colour, alpha = _colour_prop(run.paint_frames, run.stroke)  # type: ignore[arg-type]
-    width = _scalar(_animated(run.paint_frames, [[round(float(w), 4)] for w in widths], STRAIGHT))
+    width = _scalar(_animated(run.paint_frames, [[round(float(w), 4)] for w in widths]))
     return {"ty": "st", "nm": "stroke", "c": colour, "o": alpha, "w": width, "lc": _CAPS[run.cap],
             "lj": _JOINS[run.join], "ml": run.miter_limit}
 

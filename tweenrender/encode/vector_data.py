@@ -38,7 +38,7 @@ class VectorRun:
 
     ``path_frames (K,)`` are clip frame indices (increasing; they may reach past the run, to the keys
     it moves between), ``paths`` one ``(K, L_i, 2)`` pixel array per contour, ``closed`` per contour;
-    ``ease`` the cubic-bezier timing between consecutive path keyframes (:data:`STRAIGHT` when baked).
+    ``eases`` the cubic-bezier timing of each span between consecutive path keyframes (K - 1).
     ``paint_frames (P,)`` with ``fill``/``stroke (P, 4)`` straight RGBA in [0, 1] (``None``: never
     drawn), ``width (P,)`` pixels, ``opacity (P,)``, keyed straight. ``exact_frames``: every
     contour's exact pixels at every frame of the run, side by side, ``(stop - first, sum L_i, 2)``,
@@ -52,7 +52,7 @@ class VectorRun:
     path_frames: tuple[int, ...]
     paths: tuple[Array, ...]
     closed: tuple[bool, ...]
-    ease: Handles
+    eases: tuple[Handles, ...]
     paint_frames: tuple[int, ...]
     fill: Array | None
     stroke: Array | None

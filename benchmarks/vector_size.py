@@ -3,9 +3,10 @@
 For every shipped scene and a few icon pairs, per method, at the default bound (0.25 output
 pixels): path keyframes against frames drawn (summed over every layer: a run of frames of one
 element in one segment), the Lottie and SVG bytes against the same files with a keyframe at every
-frame, and the worst deviation measured at any frame and vertex between the played keyframes
-(straight lines, or the easing for an exact ``linear`` segment) and the exact inbetween.
-Curved methods should export at least 2× fewer path keyframes than frames.
+frame, and the worst deviation measured at any frame and vertex between the played keyframes (as
+the files hold them, rounded to a thousandth of a pixel; straight lines through each span's
+cubic-bezier timing, found here by bisection) and the exact inbetween. Curved methods should export
+at least 2× fewer path keyframes than frames.
 
 Run: ``python benchmarks/vector_size.py [--methods linear,rigid] [--quick]``
 """
@@ -26,7 +27,7 @@ sys.path.insert(0, str(ROOT))
 import tweenrender as tr  # noqa: E402
 from tweenrender.encode.animated_svg import svg_document  # noqa: E402
 from tweenrender.encode.lottie import lottie_document  # noqa: E402
-from tweenrender.encode.vector_data import STRAIGHT, Handles, VectorClip, VectorRun  # noqa: E402
+from tweenrender.encode.vector_data import STRAIGHT, VectorClip, VectorRun  # noqa: E402
 from tweenrender.core.methods import METHODS  # noqa: E402
 from tweenrender.pipeline.library import render_job  # noqa: E402
 from tweenrender.pipeline.options import RenderOptions  # noqa: E402
@@ -37,11 +38,11 @@ ICON_PAIRS = [("mdi/alpha-a.svg", "mdi/alpha-b.svg"), ("feather/heart.svg", "fea
               ("twemoji/1f600.svg", "twemoji/1f60e.svg"), ("lucide/moon.svg", "lucide/sun.svg")]
 
 
-def bezier_timing(x: np.ndarray, handles: Handles) -> np.ndarray:
-    """CSS cubic-bezier timing at ``x (T,)``: y(u) where x(u) = x, u found by bisection."""
-    x1, y1, x2, y2 = handles
+def bezier_timing(x: np.ndarray, handles: np.ndarray) -> np.ndarray:
+    """CSS cubic-bezier timing at ``x (T,)`` for ``handles (T, 4)``: y(u) where x(u) = x, u found by bisection."""
+    x1, y1, x2, y2 = handles.T
 
-    def curve(u: np.ndarray, p1: float, p2: float) -> np.ndarray:
+    def curve(u: np.ndarray, p1: np.ndarray, p2: np.ndarray) -> np.ndarray:
         return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
 
     low, high = np.zeros_like(x), np.ones_like(x)
@@ -53,14 +54,16 @@ def bezier_timing(x: np.ndarray, handles: Handles) -> np.ndarray:
 
 
 def played(run: VectorRun) -> np.ndarray:
-    """What a player draws at every frame of ``run``: ``(stop - first, sum L_i, 2)``."""
+    """What a player draws at every frame of ``run`` from its keyframes as written (pixels to a
+    thousandth): ``(stop - first, sum L_i, 2)``."""
     keys = np.array(run.path_frames)
-    values = np.concatenate(run.paths, axis=1)  # (K, sum L, 2)
+    values = np.round(np.concatenate(run.paths, axis=1), 3)  # (K, sum L, 2)
     frames = np.arange(run.first, run.stop)
     index = np.clip(np.searchsorted(keys, frames, side="right") - 1, 0, len(keys) - 1)
     following = np.minimum(index + 1, len(keys) - 1)
     span = np.maximum(keys[following] - keys[index], 1)
-    s = bezier_timing(np.clip((frames - keys[index]) / span, 0.0, 1.0), run.ease)
+    eases = np.array([*run.eases, STRAIGHT])[index]  # (T, 4): each frame's span
+    s = bezier_timing(np.clip((frames - keys[index]) / span, 0.0, 1.0), eases)
     return values[index] + s[:, None, None] * (values[following] - values[index])
 
 
@@ -70,7 +73,8 @@ def every_frame(clip: VectorClip) -> VectorClip:
     for run in clip.runs:
         cuts = np.cumsum([p.shape[1] for p in run.paths])[:-1]
         paths = tuple(np.split(run.exact_frames, cuts, axis=1))
-        runs.append(replace(run, path_frames=tuple(range(run.first, run.stop)), paths=paths, ease=STRAIGHT))
+        runs.append(replace(run, path_frames=tuple(range(run.first, run.stop)), paths=paths,
+                            eases=(STRAIGHT,) * (run.stop - run.first - 1)))
     return replace(clip, runs=tuple(runs))
 
 
@@ -114,7 +118,7 @@ def main() -> int:
         for index, (name, scene) in enumerate(subjects):
             row = measure(scene, method)
             ratio = row["frames"] / max(row["keys"], 1)
-            print(f"{name:32} {method:17} {row['keys']:5d} {row['frames']:6d} {ratio:6.2f} {row['worst']:8.4f} "
+            print(f"{name:32} {method:17} {row['keys']:5d} {row['frames']:6d} {ratio:6.2f} {row['worst']:8.5f} "
                   f"{row['lottie']:9d} {row['lottie_all']:9d} {row['svg']:8d} {row['svg_all']:9d}")
             if index < shipped:
                 totals["keys"] += row["keys"]
@@ -124,7 +128,7 @@ def main() -> int:
         verdict = "" if method == "linear" else ("  (≥ 2× fewer: yes)" if ratio >= 2 else "  (≥ 2× fewer: NO)")
         failed |= method != "linear" and ratio < 2
         print(f"{'shipped scenes, all':32} {method:17} {totals['keys']:5d} {totals['frames']:6d} {ratio:6.2f} "
-              f"{totals['worst']:8.4f}{verdict}")
+              f"{totals['worst']:8.5f}{verdict}")
         print()
     return 1 if failed else 0
 

@@ -1,8 +1,9 @@
 """Vector output (Lottie JSON, animated SVG): what the files hold, read back independently of the writer.
 
-The bound is checked by playing the keyframes as a player does (np.interp per coordinate) against
-the exact outlines ``tr.outlines`` gives, mapped to pixels by hand (each scene's view fills its
-frame exactly, so a scene unit is a known number of pixels, y flipped).
+The bound is checked by playing the keyframes as a player does (straight between keyframes, through
+each keyframe's cubic-bezier timing, solved here by bisection) against the exact outlines
+``tr.outlines`` gives, mapped to pixels by hand (each scene's view fills its frame exactly, so a
+scene unit is a known number of pixels, y flipped).
 """
 
 from __future__ import annotations
@@ -55,17 +56,39 @@ def _items(layer: dict, kind: str) -> list[dict]:
     return [item for item in layer["shapes"][0]["it"] if item["ty"] == kind]
 
 
+def _bezier(u: float, p1: float, p2: float) -> float:
+    return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
+
+
+def _timing(x: float, handles: tuple[float, ...]) -> float:
+    """CSS ``cubic-bezier(x1, y1, x2, y2)`` at ``x``: y(u) where x(u) = x, u by bisection."""
+    x1, y1, x2, y2 = handles
+    low, high = 0.0, 1.0
+    for _ in range(60):
+        mid = (low + high) / 2
+        low, high = (mid, high) if _bezier(mid, x1, x2) < x else (low, mid)
+    return _bezier(low, y1, y2)
+
+
+def _played_between(times: list[float], values: np.ndarray, splines: list[tuple[float, ...]],
+                    at: float) -> np.ndarray:
+    """``values (K, L, 2)`` at keyframe ``times`` played at ``at``: straight from one keyframe to the next
+    through that span's cubic-bezier ``splines``, held outside."""
+    if at <= times[0] or at >= times[-1]:
+        return values[0] if at <= times[0] else values[-1]
+    index = int(np.searchsorted(times, at, side="right")) - 1
+    s = _timing((at - times[index]) / (times[index + 1] - times[index]), splines[index])
+    return values[index] + s * (values[index + 1] - values[index])
+
+
 def _played(prop: dict, frame: int) -> np.ndarray:
-    """A path property's vertices at ``frame``, interpolated straight between keyframes (hold outside)."""
+    """A path property's vertices at ``frame``, played through each keyframe's ``o``/``i`` handles."""
     if prop["a"] == 0:
         return np.array(prop["k"]["v"], dtype=float)
     keys = prop["k"]
-    times = [k["t"] for k in keys]
     values = np.array([k["s"][0]["v"] for k in keys], dtype=float)  # (K, L, 2)
-    out = np.empty(values.shape[1:])
-    for index in np.ndindex(values.shape[1:]):
-        out[index] = np.interp(frame, times, values[(slice(None), *index)])
-    return out
+    splines = [(k["o"]["x"][0], k["o"]["y"][0], k["i"]["x"][0], k["i"]["y"][0]) for k in keys[:-1]]
+    return _played_between([k["t"] for k in keys], values, splines, frame)
 
 
 @pytest.mark.parametrize("method", ["rigid", "nonlinear", "arap"])
@@ -115,22 +138,17 @@ def test_linear_two_keys_export_one_keyframe_per_key_with_the_easing_as_handles(
         assert keys[0]["o"]["x"][0] == pytest.approx(x1) and keys[0]["o"]["y"][0] == pytest.approx(y1)
         assert keys[0]["i"]["x"][0] == pytest.approx(x2) and keys[0]["i"]["y"][0] == pytest.approx(y2)
     # the handles draw the easing: cubic-bezier(x1, y1, x2, y2) at x = 0.3 against the closed form
-    def bezier(u: float, p1: float, p2: float) -> float:
-        return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
-
-    low, high = 0.0, 1.0
-    for _ in range(60):  # bisection for x(u) = 0.3
-        mid = (low + high) / 2
-        low, high = (mid, high) if bezier(mid, x1, x2) < 0.3 else (low, mid)
-    y = bezier(low, y1, y2)
     x = 0.3
+    y = _timing(x, handles)
     closed_form = {"linear": x, "in-out": x * x * (3 - 2 * x), "in": x * x}[ease]
     assert y == pytest.approx(closed_form)
     svg = tr.write(scene, tmp_path / "lin.svg").read_text()
     d = re.search(r'<animate attributeName="d"[^>]*>', svg).group(0)
     assert len(re.search(r'values="([^"]*)"', d).group(1).split(";")) == 3  # the two keys, the last held to the end
     if ease != "linear":
-        assert 'calcMode="spline"' in d and " ".join(f"{v:.4f}".rstrip("0").rstrip(".") for v in handles) in d
+        assert 'calcMode="spline"' in d
+        splines = re.search(r'keySplines="([^"]*)"', d).group(1).split(";")
+        assert [float(v) for v in splines[0].split()] == pytest.approx(handles, abs=1e-6)
 
 
 def test_fill_rule_holes_and_paint(tmp_path: Path) -> None:
@@ -271,23 +289,32 @@ contours = [[[10, 13], [30, 13], [30, 17], [10, 17]], [[12, 14], [14, 14], [14, 
         assert np.linalg.norm(_played(outline["ks"], frame) - exact, axis=1).max() <= 0.251
 
 
-def test_svg_keytimes_played_by_hand_stay_within_the_bound(tmp_path: Path) -> None:
-    """The ``d`` animation read as SMIL plays it (calcMode linear): values at keyTimes, straight between;
-    frame f is at keyTime f / F."""
-    scene = _turn(tmp_path, "nonlinear")
-    svg = tr.write(scene, tmp_path / "turn.svg").read_text()
+def _d_animation(svg: str) -> tuple[str, list[float], np.ndarray, list[tuple[float, ...]]]:
+    """The first ``d`` animation of ``svg``: its tag, keyTimes, values ``(K, vertices, 2)`` and each span's
+    keySplines (straight ones where calcMode is linear)."""
     animate = re.search(r'<animate attributeName="d"[^>]*>', svg).group(0)
-    assert 'calcMode="spline"' not in animate
     times = [float(t) for t in re.search(r'keyTimes="([^"]*)"', animate).group(1).split(";")]
     values = [[[float(v) for v in pair.split(",")] for pair in re.findall(r"-?[\d.]+,-?[\d.]+", d)]
               for d in re.search(r'values="([^"]*)"', animate).group(1).split(";")]
+    splines = [(0.0, 0.0, 1.0, 1.0)] * (len(times) - 1)
+    if 'calcMode="spline"' in animate:
+        splines = [tuple(float(v) for v in s.split()) for s in
+                   re.search(r'keySplines="([^"]*)"', animate).group(1).split(";")]
+        assert len(splines) == len(times) - 1 and all(0 <= v <= 1 for s in splines for v in s)  # SMIL's range
+    return animate, times, np.array(values), splines
+
+
+def test_svg_keytimes_played_by_hand_stay_within_the_bound(tmp_path: Path) -> None:
+    """The ``d`` animation read as SMIL plays it: values at keyTimes, straight between through each span's
+    keySplines; frame f is at keyTime f / F."""
+    scene = _turn(tmp_path, "nonlinear")
+    svg = tr.write(scene, tmp_path / "turn.svg").read_text()
+    animate, times, coords, splines = _d_animation(svg)  # coords: (K, outline + hole vertices, 2)
     assert times[0] == 0 and times[-1] == 1 and times == sorted(times)
-    coords = np.array(values)  # (K, outline + hole vertices, 2)
     assert float(re.search(r'dur="([\d.]+)s"', animate).group(1)) == pytest.approx(41 / 20)
     worst = 0.0
     for frame in range(41):
-        played = np.array([[np.interp(frame / 41, times, coords[:, v, c]) for c in range(2)]
-                           for v in range(coords.shape[1])])
+        played = _played_between(times, coords, splines, frame / 41)
         exact = np.concatenate([_pixels(c) for c in tr.outlines(scene, frame / 20, method="nonlinear")])
         worst = max(worst, float(np.linalg.norm(played - exact, axis=1).max()))
     assert worst <= 0.251
@@ -412,18 +439,9 @@ def test_css_easings_export_exactly_as_handles(tmp_path: Path, ease: str, handle
     assert [k["t"] for k in outline] == [0, 40]
     got = (outline[0]["o"]["x"][0], outline[0]["o"]["y"][0], outline[0]["i"]["x"][0], outline[0]["i"]["y"][0])
     assert got == pytest.approx(handles)
-    x1, y1, x2, y2 = handles
     start, end = np.array(outline[0]["s"][0]["v"]), np.array(outline[1]["s"][0]["v"])
-
-    def bezier(u: float, p1: float, p2: float) -> float:
-        return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
-
     for frame in range(41):
-        low, high = 0.0, 1.0
-        for _ in range(60):
-            mid = (low + high) / 2
-            low, high = (mid, high) if bezier(mid, x1, x2) < frame / 40 else (low, mid)
-        played = start + bezier(low, y1, y2) * (end - start)
+        played = start + _timing(frame / 40, handles) * (end - start)
         exact = _pixels(tr.outlines(scene, frame / 20)[0])
         assert np.linalg.norm(played - exact, axis=1).max() <= 0.01
 
@@ -438,4 +456,8 @@ def test_an_overshooting_curve_is_baked_within_the_bound(tmp_path: Path) -> None
                 for f in range(41))
     assert worst <= 0.251
     svg = tr.write(scene, tmp_path / "over.svg").read_text()
-    assert "keySplines" not in svg
+    _, times, coords, splines = _d_animation(svg)  # keySplines, if any, within [0, 1]
+    assert len(times) > 3
+    worst = max(float(np.linalg.norm(_played_between(times, coords, splines, f / 41)[:4]
+                                     - _pixels(tr.outlines(scene, f / 20)[0]), axis=1).max()) for f in range(41))
+    assert worst <= 0.251

@@ -1,20 +1,82 @@
 """Keyframes for players that move every value on a straight line between them (maths §5.12).
 
 Lottie and SMIL interpolate each path vertex, colour channel and width linearly between
-keyframes. Given a value's exact samples at every frame, :func:`greedy_keyframes` picks keyframes
-greedily: from the last keyframe ``a`` it takes the farthest frame ``b`` such that the straight
-chord from ``a`` to ``b`` stays within the tolerance of every frame between them, at every vertex.
-:func:`chord_deviation` measures that distance.
+keyframes, through the keyframe's cubic-Bézier timing. Given a value's exact samples at every
+frame:
+
+* :func:`greedy_keyframes` picks keyframes through the exact samples greedily: from the last
+  keyframe ``a``, the farthest frame ``b`` whose straight chord stays within the tolerance of every
+  frame between them, at every vertex (:func:`chord_deviation` measures that distance). Paint uses it.
+* :func:`fit_keyframes` lets each keyframe's values move off the samples (within the tolerance of
+  its own frame) and gives each span its own timing, so one span covers more frames; the first and
+  last keyframes stay exact. Paths use it. :meth:`Keyframes.played` is what a player draws.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["chord_deviation", "greedy_keyframes", "max_deviation", "paint_channels"]
+__all__ = ["EASED_SHARE", "Keyframes", "STRAIGHT_EASE", "chord_deviation", "fit_keyframes", "greedy_keyframes",
+           "max_deviation", "paint_channels", "timing"]
 
 Array = NDArray[np.float64]
+
+STRAIGHT_EASE = (1 / 3, 2 / 3)
+"""The timing handles ``(p, q)`` of even timing: ``timing(u) = u``."""
+
+EASED_SHARE = 0.8
+"""The share of the tolerance a span with a timing of its own keeps to: its timing moves every vertex
+along its way alike, so its misses add up over the outline (a whole edge a little behind), which a
+player's coverage shows more than the same distance at a few vertices (maths §5.12)."""
+
+_COARSE = np.array([(p, q) for p in np.linspace(0.0, 1.0, 5) for q in np.linspace(0.0, 1.0, 5)])
+"""Where the search for a span's timing starts: ``(25, 2)`` handles ``(p, q)``."""
+
+_MOVES = np.array([(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)], dtype=np.float64)
+_FINEST = 1 / 256  # the search for a span's timing stops at this step
+_BISECTIONS = 30  # halvings in the search for a keyframe's values that miss by least
+_MEMORY = 1 << 21  # floats a batch of candidate spans may hold at once
+
+
+def timing(u: Array, ease: Array) -> Array:
+    """The fraction of the way along a span at time fraction ``u (..., M)`` for the timing handles
+    ``ease (..., 2)`` = ``(p, q)``: the CSS ``cubic-bezier(1/3, p, 2/3, q)``, whose x(u) is u, so
+    y(u) = 3u(1 - u)²·p + 3u²(1 - u)·q + u³ (in [0, 1] for p, q in [0, 1])."""
+    p, q = ease[..., 0:1], ease[..., 1:2]
+    return 3 * u * (1 - u) ** 2 * p + 3 * u * u * (1 - u) * q + u ** 3
+
+
+@dataclass(frozen=True)
+class Keyframes:
+    """Keyframes of a value: ``frames (K,)`` increasing frame indices, ``values (K, N, D)`` and
+    ``eases (K - 1, 2)`` each span's timing handles ``(p, q)`` (see :func:`timing`)."""
+
+    frames: tuple[int, ...]
+    values: Array
+    eases: Array
+
+    def handles(self) -> tuple[tuple[float, float, float, float], ...]:
+        """Each span's CSS ``cubic-bezier(x1, y1, x2, y2)``; even timing as ``(0, 0, 1, 1)``."""
+        return tuple((0.0, 0.0, 1.0, 1.0) if (p, q) == STRAIGHT_EASE else (1 / 3, p, 2 / 3, q)
+                     for p, q in self.eases.tolist())
+
+    def played(self, count: int) -> Array:
+        """What a player draws at frames ``0 .. count - 1``: ``(count, N, D)``, held before the first
+        keyframe and after the last."""
+        frames = np.asarray(self.frames)
+        at = np.arange(count)
+        index = np.clip(np.searchsorted(frames, at, side="right") - 1, 0, len(frames) - 1)
+        following = np.minimum(index + 1, len(frames) - 1)
+        span = np.maximum(frames[following] - frames[index], 1)
+        u = np.clip((at - frames[index]) / span, 0.0, 1.0)
+        eases = np.concatenate([self.eases, [STRAIGHT_EASE]])[index]  # (count, 2)
+        s = timing(u[:, None], eases)[:, :, None]  # (count, 1, 1)
+        start = self.values[index]
+        with np.errstate(invalid="ignore", over="ignore"):
+            return np.where(s == 0, start, start + s * (self.values[following] - start))  # a keyframe: its own
 
 
 def chord_deviation(values: Array, a: int, b: int) -> float:
@@ -27,11 +89,16 @@ def chord_deviation(values: Array, a: int, b: int) -> float:
     return float(np.sqrt(np.max(np.sum((values[a:b + 1] - chord) ** 2, axis=-1))))
 
 
-def max_deviation(values: Array, keys: list[int] | NDArray[np.intp]) -> float:
-    """The largest distance between ``values (F, N, D)`` and the straight interpolation through
-    frames ``keys`` (increasing, the first 0, the last F - 1), over every frame and vertex."""
-    keys = [int(k) for k in keys]
-    return max((chord_deviation(values, a, b) for a, b in zip(keys, keys[1:])), default=0.0)
+def max_deviation(values: Array, keys: Keyframes | list[int] | NDArray[np.intp]) -> float:
+    """The largest distance between ``values (F, N, D)`` and what ``keys`` play (frame indices: straight
+    through the exact values there), over every frame and vertex where both are finite."""
+    values = _flat(values)
+    if not isinstance(keys, Keyframes):
+        keys = _interpolating(values, [int(k) for k in keys])
+    with np.errstate(invalid="ignore", over="ignore"):
+        distance = np.linalg.norm(keys.played(len(values)) - values, axis=-1)
+    distance = distance[np.isfinite(distance)]
+    return float(distance.max()) if distance.size else 0.0
 
 
 def greedy_keyframes(values: Array, tolerance: float) -> list[int]:
@@ -43,12 +110,11 @@ def greedy_keyframes(values: Array, tolerance: float) -> list[int]:
     at every frame ``a..b`` (``a + 1`` always is). Non-finite values are never within tolerance of
     anything but the same frame, so they become keyframes of their own.
     """
-    values = np.asarray(values, dtype=np.float64)
-    frames = len(values)
+    flat = _flat(values)
+    frames = len(flat)
     if frames == 0:
         return []
-    flat = values.reshape(frames, -1, values.shape[-1]) if values.ndim >= 2 else values.reshape(frames, 1, 1)
-    if frames == 1 or np.array_equal(flat, np.broadcast_to(flat[:1], flat.shape)):
+    if _still(flat):
         return [0]
     keys = [0]
     a = 0
@@ -56,6 +122,20 @@ def greedy_keyframes(values: Array, tolerance: float) -> list[int]:
         a = _farthest(flat, a, tolerance)
         keys.append(a)
     return keys
+
+
+def _flat(values: Array) -> Array:
+    """``values`` as ``(F, N, D)`` floats."""
+    values = np.asarray(values, dtype=np.float64)
+    frames = len(values)
+    if values.ndim < 2:
+        return values.reshape(frames, 1, 1)
+    return values.reshape(frames, int(np.prod(values.shape[1:-1])), values.shape[-1])
+
+
+def _still(values: Array) -> bool:
+    """Whether every frame of ``values (F, N, D)`` is the first."""
+    return len(values) == 1 or bool(np.array_equal(values, np.broadcast_to(values[:1], values.shape)))
 
 
 def _farthest(values: Array, a: int, tolerance: float) -> int:
@@ -90,6 +170,202 @@ def _within(values: Array, a: int, b: int, limit: float) -> bool:
         return bool(np.all(np.sum((values[a + 1:b] - chord) ** 2, axis=-1) <= limit))
 
 
+def fit_keyframes(values: Array, tolerance: float, eased: bool = True) -> Keyframes:
+    """Keyframes of ``values (F, N, D)`` whose played values (:meth:`Keyframes.played`) stay within
+    ``tolerance`` of every frame at every vertex: frames increasing from 0 to F - 1 (one keyframe
+    when every frame is the first), the first and last keyframes' values exact.
+
+    From the last keyframe ``a`` (values ``z_a``) a span grows frame by frame while some end values
+    ``z_b``, within the tolerance of frame ``b``, put every frame between within the tolerance
+    (:func:`_room`), evenly timed, or else (with ``eased``) within :data:`EASED_SHARE` of it under
+    some :func:`timing` (searched); it stops before the first end that fails. ``z_b`` is then the end
+    that misses the span's frames by least (:func:`_knot`). Non-finite values are keyframes of their
+    own, exact, as are the frames after them. Should rounding ever let the result stray past the
+    tolerance, :func:`greedy_keyframes` answers instead.
+    """
+    flat = _flat(values)
+    frames = len(flat)
+    if frames == 0:
+        return Keyframes((), flat, np.zeros((0, 2)))
+    if _still(flat):
+        return Keyframes((0,), flat[:1], np.zeros((0, 2)))
+    limit = tolerance * (1 - 1e-9)
+    finite = np.all(np.isfinite(flat), axis=(1, 2))
+    keys, knots, eases = [0], [flat[0]], []
+    while keys[-1] < frames - 1:
+        b, knot, ease = _span(flat, finite, keys[-1], knots[-1], limit, eased)
+        keys.append(b)
+        knots.append(knot)
+        eases.append(ease)
+    fitted = Keyframes(tuple(keys), np.array(knots), np.array(eases))
+    if max_deviation(flat, fitted) <= tolerance:
+        return fitted
+    return _interpolating(flat, greedy_keyframes(flat, tolerance))
+
+
+def _interpolating(values: Array, keys: list[int]) -> Keyframes:
+    """Keyframes at frames ``keys`` through the exact ``values (F, N, D)``, evenly timed."""
+    return Keyframes(tuple(keys), values[keys], np.tile(STRAIGHT_EASE, (max(len(keys) - 1, 0), 1)))
+
+
+@dataclass(frozen=True)
+class _Room:
+    """Spans from one keyframe to ``C`` ends: the end values ``x_b + λ·unit`` with λ in
+    ``[lo, hi] (C, N)`` keep every frame between within the limit (none when lo > hi); ``unit
+    (C, N, D)`` is the direction of the least-squares end correction and ``least (C, N)`` its size."""
+
+    lo: Array
+    hi: Array
+    unit: Array
+    least: Array
+
+
+def _room(values: Array, a: int, start: Array, ends: NDArray[np.intp], eases: Array,
+          limit: float | Array) -> _Room:
+    """The room of spans from frame ``a`` (values ``start (N, D)``) to each of ``ends (C,)``, timed by
+    ``eases (C, 2)``, in ``values (F, N, D)``, for ``limit`` (or one per vertex, ``(N,)``).
+
+    At a frame between, at fraction s of the way (timed), the end correction λ·unit moves the played
+    point by s·λ·unit from the chord's point c: it is within the limit r of x when
+    |s·λ·unit - (x - c)|² ≤ r², an interval of λ (a quadratic); the room is their intersection with
+    the end's own [-r, r].
+    """
+    between = a + 1 + np.arange(int(ends.max()) - a - 1)  # (M,)
+    u = (between[None, :] - a) / (ends[:, None] - a)  # (C, M)
+    inside = u < 1.0
+    s = np.where(inside, timing(np.minimum(u, 1.0), eases), 0.0)  # (C, M), > 0 inside
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+        gap = values[between][None] - start - s[:, :, None, None] * (values[ends][:, None] - start)  # (C, M, N, D)
+        gap = np.where(inside[:, :, None, None], gap, 0.0)
+        least = np.einsum("cm,cmnd->cnd", s, gap) / np.sum(s * s, axis=1)[:, None, None]  # (C, N, D)
+        size = np.linalg.norm(least, axis=-1)  # (C, N)
+        unit = np.zeros_like(least)
+        unit[..., 0] = 1.0
+        unit = np.where(size[..., None] > 0, least / np.where(size > 0, size, 1.0)[..., None], unit)
+        along = np.einsum("cmnd,cnd->cmn", gap, unit)  # (C, M, N)
+        disc = along * along - np.sum(gap * gap, axis=-1) + limit * limit
+        root = np.sqrt(np.maximum(disc, 0.0))
+        scale = np.where(inside, s, 1.0)[:, :, None]
+        lo = np.where(disc >= 0, (along - root) / scale, np.inf)
+        hi = np.where(disc >= 0, (along + root) / scale, -np.inf)
+        lo = np.maximum(np.max(np.where(inside[:, :, None], lo, -np.inf), axis=1), -limit)
+        hi = np.minimum(np.min(np.where(inside[:, :, None], hi, np.inf), axis=1), limit)
+    return _Room(lo, hi, unit, size)
+
+
+def _shortfall(room: _Room, exact: NDArray[np.bool_]) -> Array:
+    """How far each span misses its room, ``(C,)`` (≤ 0: it fits): the largest lo - hi over vertices;
+    where ``exact (C,)``, the end must keep its values (λ = 0)."""
+    with np.errstate(invalid="ignore"):
+        missed = np.where(exact[:, None], np.maximum(room.lo, -room.hi), room.lo - room.hi)
+        return np.where(np.isnan(missed), np.inf, missed).max(axis=-1)
+
+
+def _knot(values: Array, a: int, start: Array, b: int, ease: tuple[float, float], limit: float) -> Array:
+    """The end values ``(N, D)`` at frame ``b`` of a span that fits within ``limit`` from frame ``a``
+    (values ``start``), timed by ``ease``: per vertex, the least-squares end in the room of the smallest
+    limit that still has one (bisection), so the span misses each vertex's frames by as little as it
+    can; the exact values at the last frame."""
+    if b == len(values) - 1:
+        return values[b]
+    ends, eases = np.array([b]), np.array([ease])
+    low, high = np.zeros(values.shape[1]), np.full(values.shape[1], limit)  # (N,): no room at low, room at high
+    for _ in range(_BISECTIONS):
+        middle = (low + high) / 2
+        room = _room(values, a, start, ends, eases, middle)
+        fits = room.lo[0] <= room.hi[0]
+        low, high = np.where(fits, low, middle), np.where(fits, middle, high)
+    room = _room(values, a, start, ends, eases, high)
+    offset = np.clip(room.least[0], room.lo[0], room.hi[0])  # (N,)
+    return values[b] + offset[:, None] * room.unit[0]
+
+
+def _outward(values: Array, b: int, limit: float) -> Array:
+    """Frame ``b``'s values ``(N, D)`` moved by ``limit`` against their second difference, away from the
+    side a chord over the frames around bends to: the start that lets the next span reach furthest
+    on a steady bend."""
+    bend = values[b - 1] - 2 * values[b] + values[b + 1]  # (N, D)
+    size = np.linalg.norm(bend, axis=-1, keepdims=True)
+    return values[b] - limit * bend / np.where(size > 0, size, np.inf)
+
+
+def _span(values: Array, finite: NDArray[np.bool_], a: int, start: Array, limit: float, eased: bool,
+          ahead: bool = True) -> tuple[int, Array, tuple[float, float]]:
+    """The keyframe after frame ``a`` (values ``start (N, D)``) in ``values (F, N, D)`` (``finite (F,)``
+    where every value is): its frame, values ``(N, D)`` (:func:`_knot`) and the span's timing handles
+    ``(p, q)``. A span of one frame ends at the exact values, or (looking ``ahead``) at
+    :func:`_outward`'s where the next span then reaches further."""
+    frames = len(values)
+    if a + 2 > frames - 1 or not (finite[a] and finite[a + 1] and np.all(np.isfinite(start))):
+        return a + 1, values[a + 1], STRAIGHT_EASE
+    stop = a + 2 + int(np.argmin(np.append(finite[a + 2:], False)))  # the first non-finite frame after a + 1
+    end, ease = a + 1, STRAIGHT_EASE
+    first, batch = a + 2, 4
+    while first < stop:  # evenly timed, a batch of ends at a time, each batch twice the last (memory allowing)
+        ends = np.arange(first, min(stop, first + batch))
+        first, batch = first + batch, max(1, min(2 * batch, _MEMORY // max(1, values[0].size * (ends[-1] - a))))
+        room = _room(values, a, start, ends, np.tile(STRAIGHT_EASE, (len(ends), 1)), limit)
+        fits = np.append(_shortfall(room, ends == frames - 1) <= 0, False)
+        last = int(np.argmin(fits)) - 1  # the last end before the first that fails
+        end = int(ends[last]) if last >= 0 else end
+        if last < len(ends) - 1:
+            break
+    for b in range(end + 1, stop if eased else 0):  # then with a timing of its own, an end at a time
+        found = _eased(values, a, start, b, limit * EASED_SHARE)
+        if found is None:
+            break
+        end, ease = b, found
+    if end > a + 1:
+        return end, _knot(values, a, start, end, ease, limit if ease == STRAIGHT_EASE else limit * EASED_SHARE), ease
+    knot = values[a + 1]
+    if ahead and stop > a + 2:
+        outward = _outward(values, a + 1, limit)
+        if (_span(values, finite, a + 1, outward, limit, eased, False)[0]
+                > _span(values, finite, a + 1, knot, limit, eased, False)[0]):
+            knot = outward
+    return a + 1, knot, STRAIGHT_EASE
+
+
+def _near(values: Array, a: int, start: Array, b: int, limit: float) -> bool:
+    """Whether every frame between ``a`` (values ``start``) and ``b`` is within twice ``limit`` of the
+    segment from ``start`` to frame ``b``'s values, at every vertex: whatever the timing (in [0, 1]) and
+    the end values (within ``limit`` of frame ``b``), a span's played points are within ``limit`` of
+    that segment, so a span that fits passes."""
+    chord = values[b] - start  # (N, D)
+    offset = values[a + 1:b] - start  # (M, N, D)
+    along = np.clip(np.sum(offset * chord, axis=-1) / np.maximum(np.sum(chord * chord, axis=-1), 1e-300), 0.0, 1.0)
+    return bool(np.all(np.sum((offset - along[..., None] * chord) ** 2, axis=-1) <= 4 * limit * limit))
+
+
+def _eased(values: Array, a: int, start: Array, b: int, limit: float) -> tuple[float, float] | None:
+    """A timing ``(p, q)`` in [0, 1]² under which the span from frame ``a`` (values ``start``) to ``b``
+    fits its room; ``None`` if the search finds none. The search starts from the best of even timing
+    and a 5 × 5 grid, then moves to the best of the eight neighbours at a step while that misses by
+    less, else halves the step, down to 1/256."""
+    if not _near(values, a, start, b, limit):
+        return None
+    exact = b == len(values) - 1
+
+    def shortfall(eases: Array) -> Array:
+        room = _room(values, a, start, np.full(len(eases), b), eases, limit)
+        return _shortfall(room, np.full(len(eases), exact))
+
+    candidates = np.vstack([[STRAIGHT_EASE], _COARSE])
+    short = shortfall(candidates)
+    centre, missed = candidates[int(np.argmin(short))], float(short.min())
+    step = 1 / 8
+    while missed > 0:
+        if step < _FINEST:
+            return None
+        near = np.clip(centre + step * _MOVES, 0.0, 1.0)
+        short = shortfall(near)
+        if short.min() < missed:
+            centre, missed = near[int(np.argmin(short))], float(short.min())
+        else:
+            step /= 2
+    return float(centre[0]), float(centre[1])
+
+
 def paint_channels(fill: Array, stroke: Array, width: Array, opacity: Array, width_tolerance: float) -> Array:
     """Paint per frame as ``(F, 10, 1)`` channels in units of their tolerance, for
     :func:`greedy_keyframes` with tolerance 1: ``fill``/``stroke (F, 4)`` straight RGBA and
@@ -98,4 +374,3 @@ def paint_channels(fill: Array, stroke: Array, width: Array, opacity: Array, wid
     channels = np.concatenate([fill * 255.0, stroke * 255.0, opacity[:, None] * 255.0,
                                width[:, None] / width_tolerance], axis=1)
     return channels[:, :, None]
-

@@ -87,7 +87,7 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
     shapes = [[run.paths[i][k] for i in members] for k in range(len(run.path_frames))]
     d_values = [path_data(s, tuple(run.closed[i] for i in members)) for s in shapes]
     attributes = [f'd="{d_values[0]}"', f'fill-rule="{run.fill_rule}"']
-    inner = [animate("d", run.path_frames, d_values, total, duration, run.ease)]
+    inner = [animate("d", run.path_frames, d_values, total, duration, run.eases)]
     for name, colours in (("fill", run.fill if filled else None), ("stroke", run.stroke if widths is not None
                                                                           else None)):
         if name == "fill" and filled and gradient is not None:

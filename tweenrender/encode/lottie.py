@@ -19,7 +19,7 @@ from typing import Any
 from .atomic import replacing
 from .lottie_paint import gradient_fill, masks, matte, refuse_unsupported, stretched_fill
 from .lottie_values import animated, contour, percent, scalar, static, transform
-from .vector_data import STRAIGHT, Array, Handles, VectorClip, VectorRun
+from .vector_data import Array, Handles, VectorClip, VectorRun
 
 __all__ = ["lottie_document", "write_lottie"]
 
@@ -55,22 +55,23 @@ def lottie_document(clip: VectorClip, name: str = "tweenrender") -> dict[str, An
             "ddd": 0, "assets": [], "layers": layers}
 
 
-def _path(frames: tuple[int, ...], points: Array, closed: bool, handles: Handles, index: int) -> dict[str, Any]:
-    """One contour: ``points (K, L, 2)`` at ``frames``."""
-    return {"ty": "sh", "nm": f"contour {index}", "ind": index, "ks": contour(frames, points, closed, handles)}
+def _path(frames: tuple[int, ...], points: Array, closed: bool, eases: tuple[Handles, ...],
+          index: int) -> dict[str, Any]:
+    """One contour: ``points (K, L, 2)`` at ``frames``, each span timed by its ``eases``."""
+    return {"ty": "sh", "nm": f"contour {index}", "ind": index, "ks": contour(frames, points, closed, eases)}
 
 
 def _colour_prop(frames: tuple[int, ...], colours: Array) -> tuple[dict[str, Any], dict[str, Any]]:
     """A colour ``(P, 4)`` as Lottie's ``c`` (RGB in [0, 1]) and ``o`` (alpha in percent)."""
     rgb = [[round(float(v), 5) for v in c[:3]] + [1] for c in colours]
     alpha = [[a] for a in percent(colours[:, 3])]
-    return animated(frames, rgb, STRAIGHT), scalar(animated(frames, alpha, STRAIGHT))
+    return animated(frames, rgb), scalar(animated(frames, alpha))
 
 
 def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
     """The run's layer, below the matte of its clip path of several contours if it has one."""
     frames = clip.frames
-    paths = [_path(run.path_frames, p, shut, run.ease, i) for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
+    paths = [_path(run.path_frames, p, shut, run.eases, i) for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
     groups = run.stroke_groups() if run.stroke is not None else []
     gradient = run.gradient
     stretched = run.gradient_paths is not None
@@ -88,7 +89,7 @@ def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
         else:
             shapes.append({"ty": "gr", "nm": run.element,
                            "it": [*paths, *_fill(run), {"ty": "tr", **transform(static(100))}]})
-    opacity = scalar(animated(run.paint_frames, [[v] for v in percent(run.opacity)], STRAIGHT))
+    opacity = scalar(animated(run.paint_frames, [[v] for v in percent(run.opacity)]))
     layer = _shape_layer(run.element, opacity, shapes,
                          run.first - _EARLY_IN if run.first > 0 else 0, run.stop - _EARLY_OUT if run.stop < frames
                          else frames)
@@ -113,7 +114,7 @@ def _shape_layer(name: str, opacity: dict[str, Any], shapes: list[dict[str, Any]
 
 def _stroke(run: VectorRun, widths: Array) -> dict[str, Any]:
     colour, alpha = _colour_prop(run.paint_frames, run.stroke)  # type: ignore[arg-type]
-    width = scalar(animated(run.paint_frames, [[round(float(w), 4)] for w in widths], STRAIGHT))
+    width = scalar(animated(run.paint_frames, [[round(float(w), 4)] for w in widths]))
     return {"ty": "st", "nm": "stroke", "c": colour, "o": alpha, "w": width, "lc": _CAPS[run.cap],
             "lj": _JOINS[run.join], "ml": run.miter_limit}
 

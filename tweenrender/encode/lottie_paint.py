@@ -92,8 +92,8 @@ def stretched_fill(run: VectorRun, gradient: GradientKeys, rule: int) -> dict[st
     rotation = scalar(animated(frames, [[round(float(a), 4)] for a in gradient.angle]))
     scale = animated(frames, [[100.0, round(float(100.0 * r), 4)] for r in gradient.ratio])
     assert run.gradient_paths is not None, "an elliptical gradient's run carries its paths in the gradient's frame"
-    path_frames, local, ease = run.gradient_paths
-    paths = [{"ty": "sh", "nm": f"contour {i}", "ind": i, "ks": contour(path_frames, points, shut, ease)}
+    path_frames, local, eases = run.gradient_paths
+    paths = [{"ty": "sh", "nm": f"contour {i}", "ind": i, "ks": contour(path_frames, points, shut, eases)}
              for i, (points, shut) in enumerate(zip(local, run.closed))]
     items = [*paths, gradient_fill(frames, gradient, rule, stretched=True),
              {"ty": "tr", **transform(static(100), position, rotation, scale)}]

@@ -18,16 +18,16 @@ def static(value: Any) -> dict[str, Any]:
     return {"a": 0, "k": value}
 
 
-def animated(frames: tuple[int, ...], values: list[Any], handles: Handles = STRAIGHT) -> dict[str, Any]:
-    """A property keyed at ``frames``, each key eased to the next by ``handles`` (CSS cubic-bezier); static
-    when every value is the first."""
+def animated(frames: tuple[int, ...], values: list[Any], eases: tuple[Handles, ...] = ()) -> dict[str, Any]:
+    """A property keyed at ``frames``, each key eased to the next by its ``eases`` (CSS cubic-bezier, one a
+    span; none: straight); static when every value is the first."""
     if len(frames) == 1 or all(v == values[0] for v in values[1:]):
         return static(values[0])
-    x1, y1, x2, y2 = handles
     keys: list[dict[str, Any]] = []
     for index, (frame, value) in enumerate(zip(frames, values)):
         key: dict[str, Any] = {"t": frame, "s": value}
         if index < len(frames) - 1:
+            x1, y1, x2, y2 = eases[index] if eases else STRAIGHT
             key["o"] = {"x": [x1], "y": [y1]}
             key["i"] = {"x": [x2], "y": [y2]}
         keys.append(key)
@@ -59,11 +59,11 @@ def _shape_value(points: Array, closed: bool) -> list[dict[str, Any]]:
     return [{"c": closed, "v": vertices, "i": zero, "o": zero}]
 
 
-def contour(frames: tuple[int, ...], points: Array, closed: bool, handles: Handles = STRAIGHT) -> dict[str, Any]:
-    """A straight-edged path ``points (K, L, 2)`` at ``frames``, as a shape property (``ks`` of a path,
-    ``pt`` of a mask)."""
+def contour(frames: tuple[int, ...], points: Array, closed: bool, eases: tuple[Handles, ...] = ()) -> dict[str, Any]:
+    """A straight-edged path ``points (K, L, 2)`` at ``frames``, each span timed by its ``eases`` (none:
+    straight), as a shape property (``ks`` of a path, ``pt`` of a mask)."""
     values = [_shape_value(p, closed) for p in points]
-    prop = animated(frames, values, handles)
+    prop = animated(frames, values, eases)
     if prop["a"] == 0:
         prop = static(values[0][0])
     return prop

@@ -21,21 +21,22 @@ def hex_colour(rgb: Array | tuple[float, float, float]) -> str:
 
 
 def animate(name: str, frames: tuple[int, ...], values: list[str], total: int, duration: str,
-            ease: Handles = STRAIGHT, transform: str | None = None, additive: bool = False) -> str:
-    """An ``<animate>`` of ``name`` through ``values`` at clip ``frames``, held before the first and after the
-    last (keyTimes run from 0 to 1); ``""`` when the value never changes. ``transform``: an
+            eases: tuple[Handles, ...] = (), transform: str | None = None, additive: bool = False) -> str:
+    """An ``<animate>`` of ``name`` through ``values`` at clip ``frames``, each span timed by its ``eases``
+    (none: straight), held before the first and after the last (keyTimes run from 0 to 1); ``""`` when the
+    value never changes. ``transform``: an
     ``<animateTransform>`` of that type instead (always written), ``additive``: added to the transforms
     before it."""
     if transform is None and all(v == values[0] for v in values[1:]):
         return ""
     times = [f / total for f in frames]
-    splines = [ease] * (len(frames) - 1)
+    splines = list(eases) or [STRAIGHT] * (len(frames) - 1)
     held = STRAIGHT
     if frames[0] > 0:
         times, values, splines = [0.0, *times], [values[0], *values], [held, *splines]
     times, values, splines = [*times, 1.0], [*values, values[-1]], [*splines, held]
-    spline = "" if ease == STRAIGHT else ' calcMode="spline" keySplines="' + ";".join(
-        " ".join(number(v, 4) for v in s) for s in splines) + '"'
+    spline = "" if all(s == STRAIGHT for s in splines) else ' calcMode="spline" keySplines="' + ";".join(
+        " ".join(number(v, 6) for v in s) for s in splines) + '"'
     tag = "animate" if transform is None else f'animateTransform type="{transform}"'
     return (f'<{tag} attributeName="{name}" dur="{duration}" fill="freeze" '
             + ('additive="sum" ' if additive else "")

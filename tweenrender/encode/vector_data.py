@@ -74,7 +74,7 @@ class VectorRun:
 
     ``path_frames (K,)`` are clip frame indices (increasing; they may reach past the run, to the keys
     it moves between), ``paths`` one ``(K, L_i, 2)`` pixel array per contour, ``closed`` per contour;
-    ``ease`` the cubic-bezier timing between consecutive path keyframes (:data:`STRAIGHT` when baked).
+    ``eases`` the cubic-bezier timing of each span between consecutive path keyframes (K - 1).
     ``paint_frames (P,)`` with ``fill``/``stroke (P, 4)`` straight RGBA in [0, 1] (``None``: never
     drawn), ``width (P,)`` pixels, ``opacity (P,)``, keyed straight. ``exact_frames``: every
     contour's exact pixels at every frame of the run, side by side, ``(stop - first, sum L_i, 2)``,
@@ -83,7 +83,7 @@ class VectorRun:
     ``gradient``: the fill as a gradient at the paint keyframes (``fill`` is then ``None``); ``clips``:
     the clip paths the run is drawn through (``None``: not clipped). ``gradient_paths``: for an elliptical
     radial gradient, the contours in the gradient's own frame (a Lottie group's transform places that
-    frame), as ``(frames (K',), ((K', L_i, 2) per contour), ease)``.
+    frame), as ``(frames (K',), ((K', L_i, 2) per contour), eases (K' - 1,))``.
     """
 
     element: str
@@ -92,7 +92,7 @@ class VectorRun:
     path_frames: tuple[int, ...]
     paths: tuple[Array, ...]
     closed: tuple[bool, ...]
-    ease: Handles
+    eases: tuple[Handles, ...]
     paint_frames: tuple[int, ...]
     fill: Array | None
     stroke: Array | None
@@ -106,7 +106,7 @@ class VectorRun:
     contour_widths: Array | None = None
     gradient: GradientKeys | None = None
     clips: ClipKeys | None = None
-    gradient_paths: tuple[tuple[int, ...], tuple[Array, ...], Handles] | None = None
+    gradient_paths: tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None = None
 
     def stroke_groups(self) -> list[tuple[list[int], Array]]:
         """The contours stroked alike and their width at each paint keyframe: ``[(contour indices, (P,))]``

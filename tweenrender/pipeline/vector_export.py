@@ -6,8 +6,9 @@ of one segment on which it is drawn. A run keeps one list of contours (the segme
 every contour keeps one vertex count) and becomes a layer (Lottie, with ``ip``/``op``) or a path
 element shown over those frames (SVG). Keyframes come from :mod:`..core.keyframes`: a ``linear``
 segment whose keys fall on whole frames is exact with two keyframes and the segment's easing;
-every other run is baked within ``max_error`` pixels; paint within 1/255 (width, a gradient's geometry
-and clip paths within ``max_error``; see :mod:`.vector_paint`).
+every other run's paths are fitted within ``max_error`` pixels (keyframe values free within it, each
+span with its own timing; the run's first and last keyframes exact); paint within 1/255 (width, a
+gradient's geometry and clip paths within ``max_error``; see :mod:`.vector_paint`).
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.keyframes import greedy_keyframes, paint_channels
+from ..core.keyframes import fit_keyframes, greedy_keyframes, paint_channels
 from ..core.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
 from ..encode.vector_data import EASE_HANDLES, STRAIGHT, Handles, VectorClip, VectorRun
 from ..errors import OptionError
@@ -36,6 +37,8 @@ DEFAULT_MAX_ERROR = 0.25
 """Output pixels a baked path may stray from the exact inbetween at a frame time."""
 
 _ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
+_ROUNDING = 0.5e-3 * np.sqrt(2.0)
+"""How far a vertex moves when the files round its pixels to a thousandth: kept out of the bound."""
 
 
 RASTER_ONLY = ("compare", "paths", "onion", "strip", "workers", "cluster")
@@ -241,6 +244,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         paths = tuple(np.stack([_drawn(viewport, ends[i][0], flips[i]), _drawn(viewport, ends[i][1], flips[i])])
                       for i in keep)
         ease = _timing(segment) or STRAIGHT
+        eases: tuple[Handles, ...] = (ease,)
         # the eased chord must be what is drawn at every frame (a contour may grow otherwise than straight)
         t = segment.local_t(run_times)
         k0 = np.concatenate([p[0] for p in paths]) if paths else np.zeros((0, 2))
@@ -250,10 +254,12 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
             paths = ()
             exact = None
     if exact is None or not every_pair:
-        keys = greedy_keyframes(np.concatenate(samples, axis=1), max_error) if samples else [0]
-        path_frames = tuple(first + k for k in keys)
-        paths = tuple(s[keys] for s in samples)
-        ease = STRAIGHT
+        path_frames, paths, eases = (first,), (), ()
+        if samples:
+            keyed = fit_keyframes(np.concatenate(samples, axis=1), max(max_error - _ROUNDING, max_error / 2))
+            path_frames = tuple(first + k for k in keyed.frames)
+            paths = tuple(np.split(keyed.values, np.cumsum([s.shape[1] for s in samples])[:-1], axis=1))
+            eases = keyed.handles()
     scale = viewport.scale if shape.stroke_scales else 1.0
     paints = [at.paint for at in shapes]
     fill, stroke, width, opacity = _paint_arrays(paints, scale)
@@ -273,7 +279,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
     paint_keys = greedy_keyframes(channels, 1.0)
     pick = np.array(paint_keys)
     rule, cap, join, miter = _style(shape, shapes[0])
-    run = VectorRun(shape.name, first, stop, path_frames, paths, closed, ease, tuple(first + k for k in paint_keys),
+    run = VectorRun(shape.name, first, stop, path_frames, paths, closed, eases, tuple(first + k for k in paint_keys),
                     None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
                     opacity[pick], rule, cap, join, miter, joined,
                     None if contour_widths is None else contour_widths[pick],

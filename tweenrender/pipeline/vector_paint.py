@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 
 from ..core.keyframes import greedy_keyframes
 from ..core.timeline import ShapeAt
-from ..encode.vector_data import STRAIGHT, ClipKeys, GradientKeys, Handles, VectorRun
+from ..encode.vector_data import ClipKeys, GradientKeys, Handles, VectorRun
 from ..model import Gradient, Paint
 from ..raster.gradients import pixel_affine
 from ..raster.view import Viewport
@@ -274,9 +274,9 @@ def clip_keys(shapes: list[ShapeAt], first: int, viewport: Viewport, tolerance: 
 
 
 def gradient_frame_paths(run: VectorRun, tolerance: float
-                         ) -> tuple[tuple[int, ...], tuple[Array, ...], Handles] | None:
+                         ) -> tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None:
     """The run's contours in its elliptical radial gradient's own frame, as the player places that frame at
-    each frame: ``(frames, ((K, L_i, 2) per contour), ease)``; ``None`` for a linear or circular gradient
+    each frame: ``(frames, ((K, L_i, 2) per contour), eases (K - 1,))``; ``None`` for a linear or circular gradient
     (or none). Where the frame never moves, the run's own keyframes mapped into it (an affine map keeps
     straight lines straight); else the exact paths at every frame of the run mapped through the player's
     transform there, keyframed so that, mapped back, they stay within ``tolerance`` pixels."""
@@ -287,7 +287,7 @@ def gradient_frame_paths(run: VectorRun, tolerance: float
     still = all(np.array_equal(a[:1].repeat(len(a), 0), a) for a in (gradient.start, gradient.angle, gradient.ratio))
     if still:
         local = tuple(_into(p, gradient.start[0], gradient.angle[0], gradient.ratio[0]) for p in run.paths)
-        return run.path_frames, local, run.ease
+        return run.path_frames, local, run.eases
     frames = np.arange(run.first, run.stop, dtype=np.float64)
     centre = np.stack([np.interp(frames, keys, gradient.start[:, k]) for k in range(2)], axis=1)  # (F, 2)
     angle, ratio = np.interp(frames, keys, gradient.angle), np.interp(frames, keys, gradient.ratio)
@@ -297,7 +297,7 @@ def gradient_frame_paths(run: VectorRun, tolerance: float
     picked = greedy_keyframes(placed * stretch, tolerance)
     bounds = np.cumsum([0] + [p.shape[1] for p in run.paths])
     return (tuple(run.first + k for k in picked), tuple(placed[picked, a:b] for a, b in zip(bounds, bounds[1:])),
-            STRAIGHT)
+            ())
 
 
 def _into(points: Array, centre: Array, angle: float, ratio: float) -> Array:

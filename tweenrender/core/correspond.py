@@ -213,7 +213,12 @@ def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> C
     else:
         m = matching
         tables = kernels.sg_tables(a, walked_b, m.ks, m.cs, m.es, m.kb, m.eb, m.mb, m.pb)
-        _, nodes = kernels.sg_search(*tables)
+        if exhaustive:
+            _, nodes = kernels.sg_every_start_search(*tables)
+        else:
+            from ._sg_search import sg_search
+
+            nodes = sg_search(*tables).nodes
     pairs = _pairs_from_nodes(nodes, len(a), walk)
     pairs.flags.writeable = False
     return Correspondence(pairs, _aligned_work(a, b, pairs, matching), backwards)

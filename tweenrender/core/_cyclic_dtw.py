@@ -425,26 +425,29 @@ def sg_tables(a: np.ndarray, b: np.ndarray, ks: float, cs: float, es: float,
 
 @_jit
 def sg_forward(stretch: np.ndarray, bend: np.ndarray, first: int, width: int, closing: int,
-               lo: np.ndarray, hi: np.ndarray, energy: np.ndarray, choice: np.ndarray, least: np.ndarray) -> float:
-    """Least energy of a path from a start ``(0, s)``, ``first ≤ s < first + width``, to ``(m, s' + n)``.
+               lo: np.ndarray, hi: np.ndarray, energy: np.ndarray, choice: np.ndarray, least: np.ndarray,
+               tilt: float = 0.0) -> float:
+    """Least energy of a path from a start ``(0, s)``, ``first ≤ s < first + width``, to ``(m, t + n)``.
 
     Columns are offsets ``k = c - first``; row ``i`` is solved in columns ``lo[i]..hi[i]`` only
     (``(m + 1,)`` each; no step comes from outside them). State: (node, step that entered it);
     a node's bending is added when it is left, so a start's bending is paid once, with the step
     that entered it as the closing step.
 
-    * ``closing ≥ 0`` (``width`` 1): the closed paths from ``(0, first)`` whose closing step is
-      ``closing``: the start counts as entered by it, and the energy of ``(m, first + n)`` entered
-      by it is returned;
-    * ``closing < 0``: a relaxation of every start of the span at once: a start may count as
-      entered by any step, and the path may end at any ``s' + n`` of the span, entered by any
-      step; the least such energy is returned. Its sums are the closed paths', in the same
-      order, so it is at most each start's energy, as rounded too.
+    With ``width`` 1 and ``closing ≥ 0`` this is the closed paths' energy from ``(0, first)`` whose
+    closing step is ``closing``: the start counts as entered by it, and ``(m, first + n)`` must be.
+    Otherwise it *relaxes* the closed paths of every start of the span at once: a path may end at
+    any ``t + n`` of the span (``t ≠ s`` too), its start and end counting as entered by
+    ``closing`` (or, when ``closing < 0``, each by any step), and it pays ``tilt·(s - t)`` more
+    (0 for a closed path, so any ``tilt`` keeps the relaxation a lower bound; one near a column's
+    energy keeps paths from gaining by ending early or late). The sums are the closed paths'
+    own, in the same order, so with ``tilt`` 0 the relaxation is at most each start's energy as
+    rounded too.
 
-    ``energy (2, C, 3)``, ``C ≥ n + width``, holds two rows of state energies in turn (row
-    ``m``'s at ``m % 2`` on return). Unless they have a single row, ``choice (m + 1, C, 3)``
-    receives the step that entered each state's predecessor, for :func:`sg_trace`, and
-    ``least (m + 1, C)`` each node's least state energy.
+    ``energy (2, C, 3)``, ``C ≥ n + width``, holds two rows of state energies in turn (row ``m``'s
+    at ``m % 2`` on return). Unless they have a single row, ``choice (m + 1, C, 3)`` receives the
+    step that entered each state's predecessor, for :func:`sg_trace`, and ``least (m + 1, C)``
+    each node's least state energy.
     """
     m, n = stretch.shape[0], stretch.shape[1]
     keep_choice = choice.shape[0] == m + 1
@@ -472,16 +475,16 @@ def sg_forward(stretch: np.ndarray, bend: np.ndarray, first: int, width: int, cl
                     choice[i, k, step] = best_into
             if i == 0 and k < width:  # a start: entered by the closing step, at no cost yet
                 for step in range(3):
-                    if (closing < 0 or step == closing) and not here[k, step] < 0.0:
-                        here[k, step] = 0.0
+                    if (closing < 0 or step == closing) and not here[k, step] < tilt * k:
+                        here[k, step] = tilt * k
             if keep_least:
                 least[i, k] = min(here[k, 0], here[k, 1], here[k, 2])
     last = energy[m % 2]
     lowest = np.inf
     for k in range(max(n, lo[m]), min(n + width - 1, hi[m]) + 1):
         for step in range(3):
-            if (closing < 0 or step == closing) and last[k, step] < lowest:
-                lowest = last[k, step]
+            if (closing < 0 or step == closing) and last[k, step] - tilt * (k - n) < lowest:
+                lowest = last[k, step] - tilt * (k - n)
     return lowest
 
 
@@ -489,7 +492,11 @@ def sg_forward(stretch: np.ndarray, bend: np.ndarray, first: int, width: int, cl
 def sg_trace(choice: np.ndarray, first: int, width: int, end: int, closing: int) -> np.ndarray:
     """The nodes ``(L + 1, 2)`` in unrolled coordinates, end first, of the path that :func:`sg_forward`
     solved into ``choice`` and that ends at ``(m, first + end)`` entered by ``closing``: back to the
-    first node of row 0 whose offset is below ``width`` (a start)."""
+    first node of row 0 whose offset is below ``width`` (a start).
+
+    Where every path costs +inf the steps kept are arbitrary: a step from outside the grid is then
+    replaced by one along its edge, so that the path still runs back to a start.
+    """
     m = choice.shape[0] - 1
     nodes = np.empty((m + end + 1, 2), np.int64)
     i, k, step = m, end, closing
@@ -500,6 +507,10 @@ def sg_trace(choice: np.ndarray, first: int, width: int, end: int, closing: int)
         count += 1
         if i == 0 and k < width:
             break
+        if i == 0:
+            step = STEP_B
+        elif k == 0:
+            step = STEP_A
         into = choice[i, k, step]
         if step != STEP_A:
             k -= 1

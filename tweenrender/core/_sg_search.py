@@ -34,9 +34,9 @@ class SgSearch(NamedTuple):
     nodes: NDArray[np.int64]
     """``(L + 1, 2)`` in unrolled coordinates, end first, as ``sg_every_start_search`` returns them."""
     solved: int
-    """Starts solved exactly (each for its three closing steps); the every-start search solves n."""
+    """(start, closing step) pairs solved exactly; the every-start search solves all 3n."""
     bounded: int
-    """Spans of starts bounded by a relaxation."""
+    """Relaxations solved (each for a span of starts and a closing step, or the first for all of them)."""
 
 
 def sg_search(stretch: NDArray[np.float64], bend: NDArray[np.float64]) -> SgSearch:
@@ -44,13 +44,18 @@ def sg_search(stretch: NDArray[np.float64], bend: NDArray[np.float64]) -> SgSear
     and ``bend (m, n, 3, 3)`` of ``_cyclic_dtw.sg_tables``: the result of ``sg_every_start_search``.
 
     Tables with a negative or NaN entry (constants outside the scene file's range) are searched
-    start by start: the bands' rounding margin assumes non-negative energies.
+    start by start: the rounding allowances below assume non-negative energies.
     """
     m, n = stretch.shape[0], stretch.shape[1]
     if not (np.all(stretch >= 0.0) and np.all(bend >= 0.0)):
         work, nodes = sg_every_start_search(stretch, bend)
-        return SgSearch(float(work), nodes, n, 0)
+        return SgSearch(float(work), nodes, 3 * n, 0)
     return _BranchAndBound(stretch, bend).run()
+
+
+_Node = tuple[float, int, int, int, NDArray[np.int64], NDArray[np.int64]]
+"""A span of starts to search: (lower bound, first start, closing step or -1 for any, width, lo, hi),
+``lo, hi (m + 1,)`` each row's columns (offsets from the first start) that its paths may use."""
 
 
 class _BranchAndBound:
@@ -60,89 +65,129 @@ class _BranchAndBound:
         self.stretch, self.bend = stretch, bend
         m, n = self.m, self.n = stretch.shape[0], stretch.shape[1]
         self.energy = np.empty((2, 2 * n, 3))
-        self.least = np.empty((m + 1, 2 * n))  # each node's least energy in a span's relaxation
-        self.choice = np.zeros((m + 1, 2 * n, 3), np.int8)  # the first relaxation's, then the answer's steps
         self.back = np.empty((2, 2 * n, 3))
+        self.least = np.empty((m + 1, 2 * n))  # each node's least energy in a relaxation, for its band
+        self.choice = np.zeros((m + 1, 2 * n, 3), np.int8)  # the first relaxation's steps, then the answer's
         self.no_choice, self.no_least = np.zeros((1, 1, 3), np.int8), np.zeros((1, 1))
         # Relative rounding of a path's energy summed forwards, or forwards to a node and backwards
         # from it: at most 2(m + n) u each way for m + n steps of two non-negative terms (u = eps/2).
-        self.slack = 1.0 + 8.0 * (m + n + 2) * float(np.finfo(np.float64).eps)
-        self.best, self.best_start, self.best_closing = np.inf, 0, STEP_AB
-        self.solved: set[int] = set()
+        self.rounding = 8.0 * (m + n + 2) * float(np.finfo(np.float64).eps)
+        self.tilt = 0.0
+        self.best, self.best_start, self.best_closing = np.inf, 0, STEP_AB  # as sg_every_start_search
+        self.solved: set[tuple[int, int]] = set()
         self.bounded = 0
 
     def run(self) -> SgSearch:
         m, n = self.m, self.n
-        heap: list[tuple[float, int, int, NDArray[np.int64], NDArray[np.int64]]] = [
-            (-np.inf, 0, n, np.zeros(m + 1, np.int64), np.full(m + 1, 2 * n - 1, np.int64))]
-        while heap:  # live spans are disjoint, so (bound, first) orders them without ties
-            bound, first, width, lo, hi = heapq.heappop(heap)
-            if self._promising(bound, first):
-                for child in self._branch(first, width, lo, hi):
+        heap: list[_Node] = [(-np.inf, 0, -1, n, np.zeros(m + 1, np.int64), np.full(m + 1, 2 * n - 1, np.int64))]
+        while heap:  # live nodes hold disjoint (start, closing) pairs: (bound, first, closing) has no ties
+            node = heapq.heappop(heap)
+            if self._promising(*node[:3]):
+                for child in self._branch(*node[1:]):
                     heapq.heappush(heap, child)
-        lo, hi = _full_band(m, n)
         start, closing = self.best_start, self.best_closing
-        sg_forward(self.stretch, self.bend, start, 1, closing, lo, hi, self.energy, self.choice, self.no_least)
-        nodes = sg_trace(self.choice, start, 1, n, closing)
-        return SgSearch(float(self.best), nodes, len(self.solved), self.bounded)
+        sg_forward(self.stretch, self.bend, start, 1, closing, *_whole(m, n), self.energy, self.choice, self.no_least)
+        return SgSearch(float(self.best), sg_trace(self.choice, start, 1, n, closing), len(self.solved),
+                        self.bounded)
 
-    def _promising(self, bound: float, first: int) -> bool:
-        """Whether a span from ``first`` whose energies are at least ``bound`` may hold the answer:
-        a lower energy, or an equal one at an earlier start (the every-start search keeps the first)."""
-        return bound < self.best or (bound == self.best < np.inf and first < self.best_start)
+    def _promising(self, bound: float, first: int, closing: int) -> bool:
+        """Whether a node from ``first`` whose energies are at least ``bound`` may hold the answer:
+        a lower energy, or an equal one earlier (the every-start search keeps the first start,
+        then the first closing step)."""
+        return bound < self.best or (bound == self.best < np.inf
+                                     and (first, max(closing, 0)) < (self.best_start, self.best_closing))
 
-    def _solve(self, start: int, lo: NDArray[np.int64], hi: NDArray[np.int64]) -> None:
-        """Solve ``start`` for each closing step in columns ``lo..hi`` (offsets from it)."""
-        if start in self.solved:
+    def _solve(self, start: int, closing: int, lo: NDArray[np.int64], hi: NDArray[np.int64]) -> None:
+        """Solve one closed path's energy in columns ``lo..hi`` and keep it if it is the best so far."""
+        if (start, closing) in self.solved:
             return
-        self.solved.add(start)
-        for closing in range(3):
-            value = sg_forward(self.stretch, self.bend, start, 1, closing, lo, hi, self.energy,
-                               self.no_choice, self.no_least)
-            if value < self.best or (value == self.best < np.inf and start < self.best_start):
-                self.best, self.best_start, self.best_closing = value, start, closing
+        self.solved.add((start, closing))
+        value = sg_forward(self.stretch, self.bend, start, 1, closing, lo, hi, self.energy,
+                           self.no_choice, self.no_least)
+        if value < self.best or (value == self.best < np.inf
+                                 and (start, closing) < (self.best_start, self.best_closing)):
+            self.best, self.best_start, self.best_closing = value, start, closing
 
-    def _branch(self, first: int, width: int, lo: NDArray[np.int64], hi: NDArray[np.int64]
-                ) -> list[tuple[float, int, int, NDArray[np.int64], NDArray[np.int64]]]:
-        """Solve a single start, or bound the span and return its two halves with their bands."""
-        if width == 1:
-            self._solve(first, lo, hi)
+    def _branch(self, first: int, closing: int, width: int, lo: NDArray[np.int64], hi: NDArray[np.int64]
+                ) -> list[_Node]:
+        """Solve a node that is one closed path, or bound it and return its children."""
+        if width == 1 and closing >= 0:
+            self._solve(first, closing, lo, hi)
             return []
-        s, b, m, n = self.stretch, self.bend, self.m, self.n
+        s, b, m, n, tilt = self.stretch, self.bend, self.m, self.n, self.tilt
         guess = self.best == np.inf  # no closed path yet: the relaxation's own start is solved first
         choice = self.choice if guess else self.no_choice
-        bound = sg_forward(s, b, first, width, -1, lo, hi, self.energy, choice, self.least)
+        bound = sg_forward(s, b, first, width, closing, lo, hi, self.energy, choice, self.least, tilt)
         self.bounded += 1
         if guess and bound < np.inf:
-            first_end = max(n, int(lo[m]))
-            ends = self.energy[m % 2, first_end:min(n + width - 1, int(hi[m])) + 1]  # inside the band
-            end, closing = np.unravel_index(int(np.argmin(ends)), ends.shape)
-            path = sg_trace(choice, first, width, first_end + int(end), int(closing))
-            self._solve(int(path[-1, 1]), *_full_band(m, n))
-        if not self._promising(bound, first):
+            self._guess(first, width, lo, hi)
+        allowance = self.rounding * (self.best + 2.0 * abs(tilt) * width)  # rounding, and the tilt's
+        bound -= allowance
+        if not self._promising(bound, first, closing):
             return []
         narrow_lo, narrow_hi = lo.copy(), hi.copy()
-        if not _band(s, b, first, width, lo, hi, self.least, self.best * self.slack, self.back, narrow_lo, narrow_hi):
+        if not _band(s, b, first, width, closing, lo, hi, self.least, self.best + allowance, tilt, self.back,
+                     narrow_lo, narrow_hi):
             return []
+        if closing < 0:  # the first relaxation: then each closing step on its own
+            return [(bound, first, step, width, narrow_lo, narrow_hi) for step in range(3)]
         children = []
         half = width // 2
         for child, child_width in ((first, half), (first + half, width - half)):
-            shift = child - first
-            child_lo = np.maximum(narrow_lo - shift, 0)
-            child_hi = np.minimum(narrow_hi - shift, n + child_width - 1)
+            child_lo = np.maximum(narrow_lo - (child - first), 0)
+            child_hi = np.minimum(narrow_hi - (child - first), n + child_width - 1)
             if np.all(child_lo <= child_hi):
-                children.append((bound, child, child_width, child_lo, child_hi))
+                children.append((bound, child, closing, child_width, child_lo, child_hi))
         return children
 
+    def _guess(self, first: int, width: int, lo: NDArray[np.int64], hi: NDArray[np.int64]) -> None:
+        """Solve the start of the least path of the relaxation just solved (its steps in ``choice``),
+        then set the tilt from that start's relaxed paths."""
+        m, n = self.m, self.n
+        first_end = max(n, int(lo[m]))
+        ends = self.energy[m % 2, first_end:min(n + width - 1, int(hi[m])) + 1]  # inside the band
+        end, into = np.unravel_index(int(np.argmin(ends)), ends.shape)
+        start = int(sg_trace(self.choice, first, width, first_end + int(end), int(into))[-1, 1])
+        for closing in range(3):
+            self._solve(start, closing, *_whole(m, n))
+        reach = min(n - 1, max(4, n // 32))
+        wide_lo, wide_hi = _whole(m, n)
+        wide_hi += reach
+        sg_forward(self.stretch, self.bend, start, 1, -1, wide_lo, wide_hi, self.energy, self.no_choice, self.no_least)
+        self.tilt = _tilt(self.energy[m % 2, n - reach:n + reach + 1].min(axis=1))
 
-def _full_band(m: int, n: int) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+
+def _whole(m: int, n: int) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
     """Every column of a single start's grid: ``lo, hi (m + 1,)``."""
     return np.zeros(m + 1, np.int64), np.full(m + 1, n, np.int64)
 
 
+def _tilt(ends: NDArray[np.float64]) -> float:
+    """The tilt under which one start's relaxed paths gain least by ending early or late.
+
+    ``ends (2r + 1,)``: the least energies from the start to the ends ``d = -r..r`` columns from
+    its own. Returns the ``t`` that maximises ``min_d (ends[d] - t·d)`` (the slope of the lower
+    convex hull of the ends at ``d = 0``; the middle one where several do), 0 without two finite ends.
+    """
+    reach = len(ends) // 2
+    offsets = np.arange(-reach, reach + 1, dtype=np.float64)
+    finite = np.isfinite(ends)
+    offsets, ends = offsets[finite], ends[finite]
+    before, after = np.meshgrid(np.flatnonzero(offsets <= 0), np.flatnonzero(offsets >= 0), indexing="ij")
+    pairs = offsets[before] != offsets[after]
+    if not pairs.any():
+        return 0.0
+    i, j = before[pairs], after[pairs]
+    slopes = (ends[j] - ends[i]) / (offsets[j] - offsets[i])
+    worst = (ends[None, :] - slopes[:, None] * offsets[None, :]).min(axis=1)
+    best = slopes[worst >= worst.max()]
+    return float(np.median(best))
+
+
 @_jit
-def _band(stretch: np.ndarray, bend: np.ndarray, first: int, width: int, lo: np.ndarray, hi: np.ndarray,
-          least: np.ndarray, limit: float, back: np.ndarray, new_lo: np.ndarray, new_hi: np.ndarray) -> bool:
+def _band(stretch: np.ndarray, bend: np.ndarray, first: int, width: int, closing: int, lo: np.ndarray,
+          hi: np.ndarray, least: np.ndarray, limit: float, tilt: float, back: np.ndarray,
+          new_lo: np.ndarray, new_hi: np.ndarray) -> bool:
     """Each row's first and last column, into ``new_lo, new_hi (m + 1,)``, of the nodes on some path
     of a span's relaxation whose energy is at most ``limit``; False when a row has none.
 
@@ -168,8 +213,8 @@ def _band(stretch: np.ndarray, bend: np.ndarray, first: int, width: int, lo: np.
                     value = bend[node_i, j, into, step] + stretch[node_i, j, step] + back[ni % 2, nk, step]
                     if value < best:
                         best = value
-                if i == m and n <= k < n + width:  # an end
-                    best = min(best, 0.0)
+                if i == m and n <= k < n + width and (closing < 0 or into == closing):  # an end
+                    best = min(best, -tilt * (k - n))
                 here[k, into] = best
                 lowest = min(lowest, best)
             if least[i, k] + lowest <= limit:

@@ -1,16 +1,17 @@
 """The Sederberg–Greenwood closed search by branch and bound over spans of starts (maths §2.1).
 
-Grid, steps, energies and tie rules are those of ``_cyclic_dtw`` (``sg_forward``); the
-result is, path for path, that of ``_cyclic_dtw.sg_every_start_search``, which solves all
-n starts (O(27 m n²)). Here a *span* of starts ``first .. first + width - 1`` is first
-bounded from below by one relaxed dynamic program (``sg_forward`` with ``closing < 0``: any
-start of the span, any end of the span, the closing step free), whose sums are the exact
-search's, in the same order, so the bound holds as rounded too. Spans are taken cheapest
-bound first and halved; a span whose bound exceeds the best energy found cannot hold the
-answer and is dropped; a single start is solved exactly. The relaxation's forward and
-backward energies also confine each span's paths to the columns of every row that a path
-no dearer than the best found can use (its *band*), so that a span's descendants are solved
-in those columns only. docs/correspondence.md gives the argument and the measurements.
+Grid, steps, energies and tie rules are those of ``_cyclic_dtw``; the result is, path for path,
+that of ``_cyclic_dtw.sg_every_start_search``, which solves each of the n starts for each of the
+three closing steps (O(27 m n²)). Here a *span*, starts ``first .. first + width - 1`` with a
+closing step, is bounded from below by one relaxed dynamic program (``sg_forward``): the closed
+paths of all its starts at once, a path being allowed to end at another start of the span than
+its own. Spans are taken lowest bound first and halved; one whose bound exceeds the best energy
+found cannot hold the answer and is dropped; a span of one start is solved exactly. The
+relaxation's least energies forwards and backwards also confine a span's halves to the columns
+of each row that a path no dearer than the best found can use (its *band*). The first
+relaxation, over every start and closing step, gives the first closed path to solve (its own
+start) and the tilt. docs/correspondence.md gives the argument that the answer is exact, its
+rounding, and the measurements.
 """
 
 from __future__ import annotations
@@ -53,9 +54,9 @@ def sg_search(stretch: NDArray[np.float64], bend: NDArray[np.float64]) -> SgSear
     return _BranchAndBound(stretch, bend).run()
 
 
-_Node = tuple[float, int, int, int, NDArray[np.int64], NDArray[np.int64]]
-"""A span of starts to search: (lower bound, first start, closing step or -1 for any, width, lo, hi),
-``lo, hi (m + 1,)`` each row's columns (offsets from the first start) that its paths may use."""
+_Span = tuple[float, int, int, int, NDArray[np.int64], NDArray[np.int64]]
+"""(lower bound, first start, closing step or -1 for any, width, lo, hi): ``lo, hi (m + 1,)`` are each
+row's first and last column (offsets from the first start) that the span's paths may use."""
 
 
 class _BranchAndBound:
@@ -79,11 +80,11 @@ class _BranchAndBound:
 
     def run(self) -> SgSearch:
         m, n = self.m, self.n
-        heap: list[_Node] = [(-np.inf, 0, -1, n, np.zeros(m + 1, np.int64), np.full(m + 1, 2 * n - 1, np.int64))]
-        while heap:  # live nodes hold disjoint (start, closing) pairs: (bound, first, closing) has no ties
-            node = heapq.heappop(heap)
-            if self._promising(*node[:3]):
-                for child in self._branch(*node[1:]):
+        heap: list[_Span] = [(-np.inf, 0, -1, n, np.zeros(m + 1, np.int64), np.full(m + 1, 2 * n - 1, np.int64))]
+        while heap:  # live spans hold disjoint (start, closing) pairs: (bound, first, closing) has no ties
+            span = heapq.heappop(heap)
+            if self._promising(*span[:3]):
+                for child in self._branch(*span[1:]):
                     heapq.heappush(heap, child)
         start, closing = self.best_start, self.best_closing
         sg_forward(self.stretch, self.bend, start, 1, closing, *_whole(m, n), self.energy, self.choice, self.no_least)
@@ -91,7 +92,7 @@ class _BranchAndBound:
                         self.bounded)
 
     def _promising(self, bound: float, first: int, closing: int) -> bool:
-        """Whether a node from ``first`` whose energies are at least ``bound`` may hold the answer:
+        """Whether a span from ``first`` whose energies are at least ``bound`` may hold the answer:
         a lower energy, or an equal one earlier (the every-start search keeps the first start,
         then the first closing step)."""
         return bound < self.best or (bound == self.best < np.inf
@@ -109,8 +110,8 @@ class _BranchAndBound:
             self.best, self.best_start, self.best_closing = value, start, closing
 
     def _branch(self, first: int, closing: int, width: int, lo: NDArray[np.int64], hi: NDArray[np.int64]
-                ) -> list[_Node]:
-        """Solve a node that is one closed path, or bound it and return its children."""
+                ) -> list[_Span]:
+        """Solve a span of one start and closing step, or bound it and return its parts."""
         if width == 1 and closing >= 0:
             self._solve(first, closing, lo, hi)
             return []
@@ -191,9 +192,10 @@ def _band(stretch: np.ndarray, bend: np.ndarray, first: int, width: int, closing
     """Each row's first and last column, into ``new_lo, new_hi (m + 1,)``, of the nodes on some path
     of a span's relaxation whose energy is at most ``limit``; False when a row has none.
 
-    ``least (m + 1, C)`` holds each node's least forward energy (``sg_forward``); each state's least
-    energy from it to an end is found backwards here, two rows at a time in ``back (2, C, 3)``,
-    and a node is kept when its least energies forwards and backwards add up to at most ``limit``.
+    ``least (m + 1, C)`` holds each node's least forward energy (``sg_forward``, with ``tilt``); each
+    state's least energy from it to an end (an end at offset ``k`` adding ``-tilt·(k - n)``) is found
+    backwards here, two rows at a time in ``back (2, C, 3)``, and a node is kept when its least
+    energies forwards and backwards add up to at most ``limit``.
     """
     m, n = stretch.shape[0], stretch.shape[1]
     for i in range(m, -1, -1):

@@ -48,7 +48,7 @@ def sg_search(stretch: NDArray[np.float64], bend: NDArray[np.float64]) -> SgSear
     start by start: the rounding allowances below assume non-negative energies.
     """
     m, n = stretch.shape[0], stretch.shape[1]
-    if not (np.all(stretch >= 0.0) and np.all(bend >= 0.0)):
+    if not (stretch.min() >= 0.0 and bend.min() >= 0.0):  # NaN fails too
         work, nodes = sg_every_start_search(stretch, bend)
         return SgSearch(float(work), nodes, 3 * n, 0)
     return _BranchAndBound(stretch, bend).run()
@@ -84,7 +84,7 @@ class _BranchAndBound:
         while heap:  # live spans hold disjoint (start, closing) pairs: (bound, first, closing) has no ties
             span = heapq.heappop(heap)
             if self._promising(*span[:3]):
-                for child in self._branch(*span[1:]):
+                for child in self._branch(*span):
                     heapq.heappush(heap, child)
         start, closing = self.best_start, self.best_closing
         sg_forward(self.stretch, self.bend, start, 1, closing, *_whole(m, n), self.energy, self.choice, self.no_least)
@@ -109,12 +109,15 @@ class _BranchAndBound:
                                  and (start, closing) < (self.best_start, self.best_closing)):
             self.best, self.best_start, self.best_closing = value, start, closing
 
-    def _branch(self, first: int, closing: int, width: int, lo: NDArray[np.int64], hi: NDArray[np.int64]
-                ) -> list[_Span]:
-        """Solve a span of one start and closing step, or bound it and return its parts."""
+    def _branch(self, bound: float, first: int, closing: int, width: int, lo: NDArray[np.int64],
+                hi: NDArray[np.int64]) -> list[_Span]:
+        """Solve a span of one start and closing step, or return the parts of a span (bounded first,
+        unless it has two starts: bounding them costs as much as solving them)."""
         if width == 1 and closing >= 0:
             self._solve(first, closing, lo, hi)
             return []
+        if width == 2 and closing >= 0:
+            return self._halves(bound, first, closing, width, lo, hi)
         s, b, m, n, tilt = self.stretch, self.bend, self.m, self.n, self.tilt
         guess = self.best == np.inf  # no closed path yet: the relaxation's own start is solved first
         choice = self.choice if guess else self.no_choice
@@ -132,14 +135,19 @@ class _BranchAndBound:
             return []
         if closing < 0:  # the first relaxation: then each closing step on its own
             return [(bound, first, step, width, narrow_lo, narrow_hi) for step in range(3)]
-        children = []
+        return self._halves(bound, first, closing, width, narrow_lo, narrow_hi)
+
+    def _halves(self, bound: float, first: int, closing: int, width: int, lo: NDArray[np.int64],
+                hi: NDArray[np.int64]) -> list[_Span]:
+        """The span's two halves, each with the columns of ``lo..hi`` it can use."""
+        halves = []
         half = width // 2
         for child, child_width in ((first, half), (first + half, width - half)):
-            child_lo = np.maximum(narrow_lo - (child - first), 0)
-            child_hi = np.minimum(narrow_hi - (child - first), n + child_width - 1)
+            child_lo = np.maximum(lo - (child - first), 0)
+            child_hi = np.minimum(hi - (child - first), self.n + child_width - 1)
             if np.all(child_lo <= child_hi):
-                children.append((bound, child, closing, child_width, child_lo, child_hi))
-        return children
+                halves.append((bound, child, closing, child_width, child_lo, child_hi))
+        return halves
 
     def _guess(self, first: int, width: int, lo: NDArray[np.int64], hi: NDArray[np.int64]) -> None:
         """Solve the start of the least path of the relaxation just solved (its steps in ``choice``),

@@ -32,6 +32,7 @@ class SgSearch(NamedTuple):
     """What :func:`sg_search` found and what it cost."""
 
     work: float
+    """The least energy, as ``sg_every_start_search`` sums it."""
     nodes: NDArray[np.int64]
     """``(L + 1, 2)`` in unrolled coordinates, end first, as ``sg_every_start_search`` returns them."""
     solved: int

@@ -24,7 +24,8 @@ from .jit import cached_jit as _jit
 __all__ = [
     "STEP_B", "STEP_AB", "STEP_A",
     "distance_matrix", "maes_search", "every_start_search",
-    "sg_tables", "sg_search", "sg_path_energy", "stretch_work", "bend_work", "angle_change", "open_search",
+    "sg_tables", "sg_forward", "sg_trace", "sg_every_start_search", "sg_path_energy",
+    "stretch_work", "bend_work", "angle_change", "open_search",
 ]
 
 STEP_B, STEP_AB, STEP_A = 0, 1, 2
@@ -423,76 +424,125 @@ def sg_tables(a: np.ndarray, b: np.ndarray, ks: float, cs: float, es: float,
 
 
 @_jit
-def _sg_solve(stretch: np.ndarray, bend: np.ndarray, s: int, closing: int,
-              energy: np.ndarray, choice: np.ndarray) -> float:
-    """Least energy of a closed path from ``(0, s)`` whose closing step is ``closing``.
+def sg_forward(stretch: np.ndarray, bend: np.ndarray, first: int, width: int, closing: int,
+               lo: np.ndarray, hi: np.ndarray, energy: np.ndarray, choice: np.ndarray, least: np.ndarray,
+               tilt: float = 0.0) -> float:
+    """Least energy of a path from a start ``(0, s)``, ``first ≤ s < first + width``, to ``(m, t + n)``.
 
-    State: (node, step that entered it); a node's bending is added when it is
-    left, so the start's bending uses ``closing`` and is paid once. Columns are
-    offsets ``k = c - s``; ``energy`` is a ``(2, n + 1, 3)`` rolling buffer and
-    ``choice[i, k, e]`` the entering step at the predecessor, for tracing back.
+    Columns are offsets ``k = c - first``; row ``i`` is solved in columns ``lo[i]..hi[i]`` only
+    (``(m + 1,)`` each; no step comes from outside them). State: (node, step that entered it);
+    a node's bending is added when it is left, so a start's bending is paid once, with the step
+    that entered it as the closing step.
+
+    With ``width`` 1 and ``closing ≥ 0`` this is the closed paths' energy from ``(0, first)`` whose
+    closing step is ``closing``: the start counts as entered by it, and ``(m, first + n)`` must be.
+    Otherwise it *relaxes* the closed paths of every start of the span at once: a path may end at
+    any ``t + n`` of the span (``t ≠ s`` too), its start and end counting as entered by
+    ``closing`` (or, when ``closing < 0``, each by any step), and it pays ``tilt·(s - t)`` more
+    (0 for a closed path, so any ``tilt`` keeps the relaxation a lower bound; one near a column's
+    energy keeps paths from gaining by ending early or late). The sums are the closed paths'
+    own, in the same order, so with ``tilt`` 0 the relaxation is at most each start's energy as
+    rounded too.
+
+    ``energy (2, C, 3)``, ``C ≥ n + width``, holds two rows of state energies in turn (row ``m``'s
+    at ``m % 2`` on return). Unless they have a single row, ``choice (m + 1, C, 3)`` receives the
+    step that entered each state's predecessor, for :func:`sg_trace`, and ``least (m + 1, C)``
+    each node's least state energy.
     """
     m, n = stretch.shape[0], stretch.shape[1]
+    keep_choice = choice.shape[0] == m + 1
+    keep_least = least.shape[0] == m + 1
     for i in range(m + 1):
-        here, above = energy[i % 2], energy[(i + 1) % 2]
+        here = energy[i % 2]
         node_i = i if i < m else 0
-        for k in range(n + 1):
-            if i == 0 and k == 0:
-                for step in range(3):
-                    here[0, step] = 0.0 if step == closing else np.inf
-                continue
+        for k in range(lo[i], hi[i] + 1):
             for step in range(3):
                 pi = i - 1 if step != STEP_B else i
                 pk = k - 1 if step != STEP_A else k
-                if pi < 0 or pk < 0:
+                if pi < 0 or pk < lo[pi] or pk > hi[pi]:
                     here[k, step] = np.inf
                     continue
-                source = here if pi == i else above
+                source = energy[pi % 2]
                 node_pi = node_i if pi == i else pi
-                pj = (s + pk) % n
+                pj = (first + pk) % n
                 best, best_into = np.inf, 0
                 for into in range(3):
                     value = source[pk, into] + bend[node_pi, pj, into, step]
                     if value < best:
                         best, best_into = value, into
                 here[k, step] = best + stretch[node_pi, pj, step]
-                choice[i, k, step] = best_into
-    return energy[m % 2][n, closing]
+                if keep_choice:
+                    choice[i, k, step] = best_into
+            if i == 0 and k < width:  # a start: entered by the closing step, at no cost yet
+                for step in range(3):
+                    if (closing < 0 or step == closing) and not here[k, step] < tilt * k:
+                        here[k, step] = tilt * k
+            if keep_least:
+                least[i, k] = min(here[k, 0], here[k, 1], here[k, 2])
+    last = energy[m % 2]
+    lowest = np.inf
+    for k in range(max(n, lo[m]), min(n + width - 1, hi[m]) + 1):
+        for step in range(3):
+            if (closing < 0 or step == closing) and last[k, step] - tilt * (k - n) < lowest:
+                lowest = last[k, step] - tilt * (k - n)
+    return lowest
 
 
 @_jit
-def sg_search(stretch: np.ndarray, bend: np.ndarray) -> tuple[float, np.ndarray]:
-    """Least-energy closed path over every start and closing step: O(27 m n²) time, O(mn) memory.
+def sg_trace(choice: np.ndarray, first: int, width: int, end: int, closing: int) -> np.ndarray:
+    """The nodes ``(L + 1, 2)`` in unrolled coordinates, end first, of the path that :func:`sg_forward`
+    solved into ``choice`` and that ends at ``(m, first + end)`` entered by ``closing``: back to the
+    first node of row 0 whose offset is below ``width`` (a start).
 
-    Returns the energy and the nodes ``(L + 1, 2)`` in unrolled coordinates, end first.
+    Where every path costs +inf the steps kept are arbitrary: a step from outside the grid is then
+    replaced by one along its edge, so that the path still runs back to a start.
     """
-    m, n = stretch.shape[0], stretch.shape[1]
-    energy = np.empty((2, n + 1, 3))
-    choice = np.zeros((m + 1, n + 1, 3), np.int8)
-    best, best_start, best_closing = np.inf, 0, STEP_AB
-    for s in range(n):
-        for closing in range(3):
-            value = _sg_solve(stretch, bend, s, closing, energy, choice)
-            if value < best:
-                best, best_start, best_closing = value, s, closing
-    _sg_solve(stretch, bend, best_start, best_closing, energy, choice)
-
-    nodes = np.empty((m + n + 1, 2), np.int64)
-    i, k, step = m, n, best_closing
+    m = choice.shape[0] - 1
+    nodes = np.empty((m + end + 1, 2), np.int64)
+    i, k, step = m, end, closing
     count = 0
     while True:
         nodes[count, 0] = i
-        nodes[count, 1] = best_start + k
+        nodes[count, 1] = first + k
         count += 1
-        if i == 0 and k == 0:
+        if i == 0 and k < width:
             break
+        if i == 0:
+            step = STEP_B
+        elif k == 0:
+            step = STEP_A
         into = choice[i, k, step]
         if step != STEP_A:
             k -= 1
         if step != STEP_B:
             i -= 1
         step = into
-    return best, _copy_nodes(nodes, np.empty((count, 2), np.int64), count)
+    return _copy_nodes(nodes, np.empty((count, 2), np.int64), count)
+
+
+@_jit
+def sg_every_start_search(stretch: np.ndarray, bend: np.ndarray) -> tuple[float, np.ndarray]:
+    """Least-energy closed path over every start and closing step: O(27 m n²) time, O(mn) memory.
+
+    The reference for ``_sg_search.sg_search``. Among equal energies the first start, then the
+    first closing step (STEP_B, STEP_AB, STEP_A) wins. Returns the energy and the nodes
+    ``(L + 1, 2)`` in unrolled coordinates, end first.
+    """
+    m, n = stretch.shape[0], stretch.shape[1]
+    energy = np.empty((2, n + 1, 3))
+    choice = np.zeros((m + 1, n + 1, 3), np.int8)
+    lo = np.zeros(m + 1, np.int64)
+    hi = np.full(m + 1, n, np.int64)
+    no_choice = np.zeros((1, 1, 3), np.int8)
+    no_least = np.zeros((1, 1))
+    best, best_start, best_closing = np.inf, 0, STEP_AB
+    for s in range(n):
+        for closing in range(3):
+            value = sg_forward(stretch, bend, s, 1, closing, lo, hi, energy, no_choice, no_least)
+            if value < best:
+                best, best_start, best_closing = value, s, closing
+    sg_forward(stretch, bend, best_start, 1, best_closing, lo, hi, energy, choice, no_least)
+    return best, sg_trace(choice, best_start, 1, n, best_closing)
 
 
 @_jit

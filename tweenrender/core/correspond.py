@@ -32,9 +32,10 @@ cyclically (``p[L] = p[0]``, ``p[-1] = p[L-1]``), after the alignment of
       the other end (``|Q1|`` if both vanish; no bending if all of Q vanish).
 
 Searches: ``distance`` uses Maes' divide and conquer over the start, exact in
-O(mn log n); ``sg`` tries every start and every closing step with a dynamic
-program over (node, entering step), exact in O(27·m·n²) time and O(mn)
-memory — fine for the hundred-odd vertices of hand-drawn keys.
+O(mn log n); ``sg`` a dynamic program over (node, entering step) for a start and
+closing step, inside a branch and bound over spans of starts (``_sg_search``):
+exact, the path of solving every start, in about n² log n time on drawn outlines
+(O(m n²) at worst) and O(mn) memory (docs/correspondence.md).
 """
 
 from __future__ import annotations
@@ -107,10 +108,8 @@ def correspond(a: Points, b: Points, matching: Matching = _DEFAULT) -> Correspon
 
 
 def naive_correspond(a: Points, b: Points, matching: Matching = _DEFAULT) -> Correspondence:
-    """Reference for ``correspond``: the full dynamic program for every start, O(m n²).
-
-    For ``sg`` this is the very search ``correspond`` runs.
-    """
+    """Reference for ``correspond``: the full dynamic program for every start, O(m n²)
+    (for ``sg``, every start and closing step: the search the branch and bound must agree with)."""
     return _correspond(a, b, matching, exhaustive=True)
 
 
@@ -213,7 +212,12 @@ def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> C
     else:
         m = matching
         tables = kernels.sg_tables(a, walked_b, m.ks, m.cs, m.es, m.kb, m.eb, m.mb, m.pb)
-        _, nodes = kernels.sg_search(*tables)
+        if exhaustive:
+            _, nodes = kernels.sg_every_start_search(*tables)
+        else:
+            from ._sg_search import sg_search
+
+            nodes = sg_search(*tables).nodes
     pairs = _pairs_from_nodes(nodes, len(a), walk)
     pairs.flags.writeable = False
     return Correspondence(pairs, _aligned_work(a, b, pairs, matching), backwards)

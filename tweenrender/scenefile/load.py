@@ -35,8 +35,10 @@ LIMITS = {
     "file_bytes": 16 << 20,
     "vertices_total": 1_000_000,  # [x, y] pairs in one file, every key together
     "vertices": 200_000,   # per key
-    # keys of different vertex counts m, n are matched in O(mn log n) (distance) or O(27 m n²) (sg)
-    # steps: these caps keep one segment's correspondence to seconds (about 1.5 s and 7 s here)
+    # keys of different vertex counts m, n are matched in O(mn log n) (distance) or, at worst,
+    # O(27 m n²) (sg) steps: these caps keep one segment's correspondence to seconds (about 1.5 s;
+    # for sg, 7 s to solve every start here, which its branch and bound spares drawn outlines but
+    # may exceed about 2.7 times where nothing can be pruned)
     "match_cells": 25_000_000,    # m·n, cost "distance"
     "match_sg": 100_000_000,      # m·n·max(m, n), cost "sg"
     # every key is a segment to match and every shape a track drawn each frame: 8 000 keys took 6.6 s

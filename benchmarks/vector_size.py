@@ -32,25 +32,11 @@ from tweenrender.core.methods import METHODS  # noqa: E402
 from tweenrender.pipeline.library import render_job  # noqa: E402
 from tweenrender.pipeline.options import RenderOptions  # noqa: E402
 from tweenrender.pipeline.vector_export import vector_clip  # noqa: E402
+from tests.vector_players import bezier_timing  # noqa: E402
 
 ICONS = ROOT / "tests" / "data" / "icons"
 ICON_PAIRS = [("mdi/alpha-a.svg", "mdi/alpha-b.svg"), ("feather/heart.svg", "feather/star.svg"),
               ("twemoji/1f600.svg", "twemoji/1f60e.svg"), ("lucide/moon.svg", "lucide/sun.svg")]
-
-
-def bezier_timing(x: np.ndarray, handles: np.ndarray) -> np.ndarray:
-    """CSS cubic-bezier timing at ``x (T,)`` for ``handles (T, 4)``: y(u) where x(u) = x, u found by bisection."""
-    x1, y1, x2, y2 = handles.T
-
-    def curve(u: np.ndarray, p1: np.ndarray, p2: np.ndarray) -> np.ndarray:
-        return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
-
-    low, high = np.zeros_like(x), np.ones_like(x)
-    for _ in range(60):
-        middle = (low + high) / 2
-        below = curve(middle, x1, x2) < x
-        low, high = np.where(below, middle, low), np.where(below, high, middle)
-    return curve((low + high) / 2, y1, y2)
 
 
 def played(run: VectorRun) -> np.ndarray:

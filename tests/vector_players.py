@@ -17,6 +17,22 @@ IOU, COLOUR = 0.98, 0.03
 _INK = 32  # a pixel is ink where a channel differs from the background by more than 32/255
 
 
+def bezier_timing(x: np.ndarray, handles: np.ndarray | tuple[float, float, float, float]) -> np.ndarray:
+    """CSS ``cubic-bezier(x1, y1, x2, y2)`` at ``x (T,)`` as players evaluate it: y(u) where x(u) = x, u found
+    by bisection; ``handles`` one ``(4,)`` for all or ``(T, 4)``, one for each x."""
+    x1, y1, x2, y2 = np.asarray(handles, dtype=np.float64).T
+
+    def curve(u: np.ndarray, p1: np.ndarray, p2: np.ndarray) -> np.ndarray:
+        return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
+
+    low, high = np.zeros_like(x), np.ones_like(x)
+    for _ in range(60):
+        middle = (low + high) / 2
+        below = curve(middle, x1, x2) < x
+        low, high = np.where(below, middle, low), np.where(below, high, middle)
+    return curve((low + high) / 2, y1, y2)
+
+
 def ink(picture: np.ndarray, background: tuple[int, int, int]) -> np.ndarray:
     """Where ``picture (H, W, ≥3)`` differs from the opaque ``background`` by more than 32/255: ``(H, W)`` bool."""
     return np.any(np.abs(picture[..., :3].astype(np.int16) - np.array(background, dtype=np.int16)) > _INK, axis=-1)

@@ -10,6 +10,7 @@ import pytest
 
 from tweenrender.core.keyframes import (EASED_SHARE, Keyframes, chord_deviation, fit_keyframes, greedy_keyframes,
                                         max_deviation, paint_channels, timing)
+from tests.vector_players import bezier_timing
 
 
 def _played(values: np.ndarray, keys: list[int]) -> np.ndarray:
@@ -125,28 +126,13 @@ def test_paint_channels_count_in_tolerance_units() -> None:
 
 # -- fitted keyframes: values free within the tolerance, each span timed by a cubic Bézier ---------------
 
-def _css_timing(x: np.ndarray, handles: tuple[float, float, float, float]) -> np.ndarray:
-    """CSS ``cubic-bezier(x1, y1, x2, y2)`` at ``x``: y(u) where x(u) = x, u by bisection (as players do)."""
-    x1, y1, x2, y2 = handles
-
-    def curve(u: np.ndarray, p1: float, p2: float) -> np.ndarray:
-        return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
-
-    low, high = np.zeros_like(x), np.ones_like(x)
-    for _ in range(60):
-        middle = (low + high) / 2
-        below = curve(middle, x1, x2) < x
-        low, high = np.where(below, middle, low), np.where(below, high, middle)
-    return curve((low + high) / 2, y1, y2)
-
-
 def _replayed(keys: Keyframes, frames: int) -> np.ndarray:
     """What a player draws from ``keys`` at every frame, frame by frame: the span's fraction of time
     through its CSS handles, then straight between the span's keyframe values."""
     out = np.empty((frames, *keys.values.shape[1:]))
     for (a, b), handles, start, end in zip(zip(keys.frames, keys.frames[1:]), keys.handles(), keys.values,
                                            keys.values[1:]):
-        s = _css_timing((np.arange(a, b + 1) - a) / (b - a), handles)
+        s = bezier_timing((np.arange(a, b + 1) - a) / (b - a), handles)
         out[a:b + 1] = start + s[:, None, None] * (end - start)
     out[list(keys.frames)] = keys.values  # at a keyframe, its own values (whatever the next holds)
     if len(keys.frames) == 1:
@@ -273,5 +259,5 @@ def test_timing_is_the_css_bezier_it_names() -> None:
     for p, q in [(0.0, 1 / 3), (1.0, 0.0), (0.2, 0.9), (1 / 3, 2 / 3)]:
         keys = Keyframes((0, 1), np.zeros((2, 1, 1)), np.array([[p, q]]))
         (handles,) = keys.handles()
-        assert timing(u, np.array([p, q])) == pytest.approx(_css_timing(u, handles), abs=1e-9)
+        assert timing(u, np.array([p, q])) == pytest.approx(bezier_timing(u, handles), abs=1e-9)
     assert Keyframes((0, 1), np.zeros((2, 1, 1)), np.array([[1 / 3, 2 / 3]])).handles() == ((0.0, 0.0, 1.0, 1.0),)

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import os
 import threading
+from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any, Callable, Iterator
 
 import pytest
 
@@ -32,18 +33,30 @@ class SlowArming:
                 yield set()
 
 
-def test_a_save_made_while_the_watch_is_armed_is_seen(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+@contextmanager
+def watching(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, on_change: Callable[[], None],
+             before_start: Callable[[Path], None] = lambda scene: None) -> Iterator[tuple[Path, SlowArming]]:
+    """A watcher of ``scene.toml`` (written "first") over a :class:`SlowArming` watch; ``before_start`` runs
+    between :meth:`FileWatcher.watch` and :meth:`FileWatcher.start`."""
     import watchfiles
 
     scene = tmp_path / "scene.toml"
     scene.write_text("first")
     fake = SlowArming()
     monkeypatch.setattr(watchfiles, "watch", fake)
-    seen = threading.Event()
-    watcher = FileWatcher(seen.set)
+    watcher = FileWatcher(on_change)
     watcher.watch([scene])
+    before_start(scene)
     watcher.start()
     try:
+        yield scene, fake
+    finally:
+        watcher.stop()
+
+
+def test_a_save_made_while_the_watch_is_armed_is_seen(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    seen = threading.Event()
+    with watching(tmp_path, monkeypatch, seen.set) as (scene, fake):
         assert fake.arming.wait(10)
         seen_before = seen.wait(1.0)  # longer than any fixed grace period the watcher might give arming
         part = tmp_path / ".scene.toml.part"
@@ -52,45 +65,21 @@ def test_a_save_made_while_the_watch_is_armed_is_seen(tmp_path: Path, monkeypatc
         fake.arm.set()
         assert not seen_before
         assert seen.wait(10), "a save made before the watch was armed was missed"
-    finally:
-        watcher.stop()
 
 
 def test_nothing_is_reported_when_nothing_changed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    import watchfiles
-
-    scene = tmp_path / "scene.toml"
-    scene.write_text("first")
-    fake = SlowArming()
-    monkeypatch.setattr(watchfiles, "watch", fake)
     calls: list[int] = []
-    watcher = FileWatcher(lambda: calls.append(1))
-    watcher.watch([scene])
-    watcher.start()
-    try:
+    with watching(tmp_path, monkeypatch, lambda: calls.append(1)) as (_, fake):
         assert fake.arming.wait(10)
         fake.arm.set()
         threading.Event().wait(0.5)
         assert calls == []
-    finally:
-        watcher.stop()
 
 
 def test_a_save_made_before_the_watch_thread_runs_is_seen(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The scene is read once ``watch`` is called; the watching thread may start (and import) much later."""
-    import watchfiles
-
-    scene = tmp_path / "scene.toml"
-    scene.write_text("first")
-    fake = SlowArming()
-    monkeypatch.setattr(watchfiles, "watch", fake)
     seen = threading.Event()
-    watcher = FileWatcher(seen.set)
-    watcher.watch([scene])
-    scene.write_text("second, written in place")
-    watcher.start()
-    try:
+    with watching(tmp_path, monkeypatch, seen.set,
+                  before_start=lambda scene: scene.write_text("second, written in place")) as (_, fake):
         fake.arm.set()
         assert seen.wait(10), "a save made before the watching thread ran was missed"
-    finally:
-        watcher.stop()

@@ -29,7 +29,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 SKIP = shutil.ignore_patterns(".venv", ".git", "output", "__pycache__", ".pytest_cache", ".hypothesis",
-                              "*.egg-info", "build", "dist", "docs", "benchmarks")
+                              "*.egg-info", "build", "dist", "benchmarks")
 
 
 @dataclass(frozen=True)

@@ -247,48 +247,46 @@ def stretch_work(l0: float, l1: float, ks: float, cs: float, es: float) -> float
 
 
 @_jit
-def _roots_inside(c0: float, c1: float, c2: float, out: np.ndarray, count: int) -> int:
-    """Append the roots in (0, 1) of ``c0(1-t)² + 2c1 t(1-t) + c2 t²`` to ``out``; returns the new count."""
+def _roots_inside(c0: float, c1: float, c2: float) -> tuple[float, float, int]:
+    """The roots in (0, 1) of ``c0(1-t)² + 2c1 t(1-t) + c2 t²``: ``(first, second, count)``, unused ones 2.0.
+
+    Scalars, not an array: this runs nine times a node, where allocating would cost more than the sums.
+    """
     qa = c0 - 2.0 * c1 + c2
     qb = 2.0 * (c1 - c0)
     qc = c0
+    count = 0
     if qa == 0.0:
         if qb != 0.0:
             t = -qc / qb
             if 0.0 < t < 1.0:
-                out[count] = t
-                count += 1
-        return count
+                return t, 2.0, 1
+        return 2.0, 2.0, 0
     disc = qb * qb - 4.0 * qa * qc
     if disc < 0.0:
-        return count
+        return 2.0, 2.0, 0
     # The cancellation-free pair of quadratic roots.
     q = -0.5 * (qb + math.copysign(math.sqrt(disc), qb))
     if q == 0.0:
-        return count  # a double root at t = 0
+        return 2.0, 2.0, 0  # a double root at t = 0
+    first, second = 2.0, 2.0
     t = q / qa
     if 0.0 < t < 1.0:
-        out[count] = t
+        first = t
         count += 1
     t = qc / q
     if 0.0 < t < 1.0:
-        out[count] = t
+        if count == 0:
+            first = t
+        else:
+            second = t
         count += 1
-    return count
+    return first, second, count
 
 
 @_jit
-def _sorted_small(values: np.ndarray, count: int) -> np.ndarray:
-    """``values[:count]`` in increasing order (insertion sort: a handful of values)."""
-    out = np.empty(count)
-    for k in range(count):
-        v = values[k]
-        p = k
-        while p > 0 and out[p - 1] > v:
-            out[p] = out[p - 1]
-            p -= 1
-        out[p] = v
-    return out
+def _order(x: float, y: float) -> tuple[float, float]:
+    return (x, y) if x <= y else (y, x)
 
 
 @_jit
@@ -310,27 +308,40 @@ def angle_change(q0x: float, q0y: float, q1x: float, q1y: float,
     of ``x(t)``, ``y(t)`` and ``d(t)`` the curve stays in one quadrant, where the
     angle between two of its points is their plain atan2 difference.
     """
-    splits = np.empty(8)
-    splits[0] = 0.0
-    count = 1
-    count = _roots_inside(q0x, q1x, q2x, splits, count)
-    count = _roots_inside(q0y, q1y, q2y, splits, count)
+    s0, s1, _ = _roots_inside(q0x, q1x, q2x)
+    s2, s3, _ = _roots_inside(q0y, q1y, q2y)
     d0 = q0x * q1y - q0y * q1x
     d1 = 0.5 * (q0x * q2y - q0y * q2x)
     d2 = q1x * q2y - q1y * q2x
-    count = _roots_inside(d0, d1, d2, splits, count)
-    splits[count] = 1.0
-    count += 1
-    ts = _sorted_small(splits, count)
+    s4, s5, _ = _roots_inside(d0, d1, d2)
+    # The six candidate splits in increasing order (2.0: none), by a sorting network of 12 exchanges.
+    s0, s5 = _order(s0, s5)
+    s1, s3 = _order(s1, s3)
+    s2, s4 = _order(s2, s4)
+    s1, s2 = _order(s1, s2)
+    s3, s4 = _order(s3, s4)
+    s0, s3 = _order(s0, s3)
+    s2, s5 = _order(s2, s5)
+    s0, s1 = _order(s0, s1)
+    s2, s3 = _order(s2, s3)
+    s4, s5 = _order(s4, s5)
+    s1, s2 = _order(s1, s2)
+    s3, s4 = _order(s3, s4)
+    ts = (s0, s1, s2, s3, s4, s5, 1.0)
 
     theta, low, high = 0.0, 0.0, 0.0
     px, py = q0x, q0y
-    for k in range(1, count):
-        x = _bezier(q0x, q1x, q2x, ts[k])
-        y = _bezier(q0y, q1y, q2y, ts[k])
+    for k in range(7):
+        t = ts[k]
+        if t > 1.0:
+            t = 1.0
+        x = _bezier(q0x, q1x, q2x, t)
+        y = _bezier(q0y, q1y, q2y, t)
         theta += math.atan2(px * y - py * x, px * x + py * y)
         low, high = min(low, theta), max(high, theta)
         px, py = x, y
+        if t == 1.0:
+            break
     sweep = abs(theta)
     overshoot = (high - max(0.0, theta)) + (min(0.0, theta) - low)
 
@@ -343,9 +354,10 @@ def angle_change(q0x: float, q0y: float, q1x: float, q1y: float,
             t = (q0x - q1x) / curvature
             through_zero = through_zero or (0.0 < t < 1.0 and _bezier(q0x, q1x, q2x, t) > 0.0)
     else:
-        roots = np.empty(2)
-        for k in range(_roots_inside(q0y, q1y, q2y, roots, 0)):
-            if _bezier(q0x, q1x, q2x, roots[k]) > 0.0:
+        # y's roots again, as found above (before sorting)
+        r1, r2, _ = _roots_inside(q0y, q1y, q2y)
+        for root in (r1, r2):
+            if root < 1.0 and _bezier(q0x, q1x, q2x, root) > 0.0:
                 through_zero = True
     return sweep, overshoot, through_zero
 

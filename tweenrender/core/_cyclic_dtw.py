@@ -23,7 +23,7 @@ from .jit import cached_jit as _jit
 
 __all__ = [
     "STEP_B", "STEP_AB", "STEP_A",
-    "distance_matrix", "maes_search", "every_start_search",
+    "distance_matrix", "maes_search", "maes_slots", "start_again", "middle_band", "push_halves", "every_start_search",
     "sg_tables", "sg_forward", "sg_trace", "sg_every_start_search", "sg_path_energy",
     "stretch_work", "bend_work", "angle_change", "open_search",
 ]
@@ -137,6 +137,55 @@ def _copy_nodes(source: np.ndarray, target: np.ndarray, count: int) -> np.ndarra
 
 
 @_jit
+def maes_slots(m: int, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Room for Maes' divide and conquer over ``n`` starts of ``m + 1`` rows: ``(row_first, row_last, stack)``.
+
+    Bounding paths live in slots: 0 for start 0, 1 for start n, 2 + d for the middle start solved at
+    recursion depth d (depth-first order never needs two live paths of the same depth); ``row_first``
+    and ``row_last (slots, m + 1)`` hold each row's first and last column of a slot's path. The
+    depth-first stack holds tasks (first start, last start, their slots, depth), the whole range first.
+    """
+    depth_limit = 2
+    while (1 << (depth_limit - 2)) < n:
+        depth_limit += 1
+    row_first = np.empty((depth_limit + 2, m + 1), np.int64)
+    row_last = np.empty((depth_limit + 2, m + 1), np.int64)
+    stack = np.empty((2 * depth_limit + 4, 5), np.int64)
+    stack[0, 0], stack[0, 1], stack[0, 2], stack[0, 3], stack[0, 4] = 0, n, 0, 1, 0
+    return row_first, row_last, stack
+
+
+@_jit
+def start_again(row_first: np.ndarray, row_last: np.ndarray, n: int) -> None:
+    """Slot 1 is start n: start 0's path (slot 0) one turn round b later."""
+    for i in range(row_first.shape[1]):
+        row_first[1, i] = row_first[0, i] + n
+        row_last[1, i] = row_last[0, i] + n
+
+
+@_jit
+def middle_band(row_first: np.ndarray, row_last: np.ndarray, slot_lo: int, slot_hi: int, mid: int, n: int,
+                lo: np.ndarray, hi: np.ndarray) -> None:
+    """``lo``, ``hi (m + 1,)``: the columns start ``mid`` may use, each row's hull of the bounding paths
+    in ``slot_lo`` and ``slot_hi``, within its own turn ``mid … mid + n``."""
+    for i in range(lo.shape[0]):
+        lo[i] = max(mid, min(row_first[slot_lo, i], row_first[slot_hi, i]))
+        hi[i] = min(mid + n, max(row_last[slot_lo, i], row_last[slot_hi, i]))
+
+
+@_jit
+def push_halves(stack: np.ndarray, top: int, s_lo: int, mid: int, s_hi: int, slot_lo: int, slot: int,
+                slot_hi: int, depth: int) -> int:
+    """Push the two halves of a task whose middle start ``mid`` is in ``slot``; returns the new top.
+    The lower half is pushed last so that it runs first (either order is correct)."""
+    stack[top, 0], stack[top, 1], stack[top, 2] = mid, s_hi, slot
+    stack[top, 3], stack[top, 4] = slot_hi, depth + 1
+    stack[top + 1, 0], stack[top + 1, 1], stack[top + 1, 2] = s_lo, mid, slot_lo
+    stack[top + 1, 3], stack[top + 1, 4] = slot, depth + 1
+    return top + 2
+
+
+@_jit
 def maes_search(w: np.ndarray) -> tuple[float, np.ndarray]:
     """Exact minimal closed path over every start, by Maes' divide and conquer: O(mn log n).
 
@@ -158,28 +207,14 @@ def maes_search(w: np.ndarray) -> tuple[float, np.ndarray]:
     hi = np.empty(m + 1, np.int64)
     nodes = np.empty((m + n + 1, 2), np.int64)
     best_nodes = np.empty((m + n + 1, 2), np.int64)
-
-    depth_limit = 2
-    while (1 << (depth_limit - 2)) < n:
-        depth_limit += 1
-    # Bounding paths live in slots: 0 for start 0, 1 for start n, 2 + d for the
-    # middle start solved at recursion depth d (depth-first order never needs
-    # two live paths of the same depth).
-    row_first = np.empty((depth_limit + 2, m + 1), np.int64)
-    row_last = np.empty((depth_limit + 2, m + 1), np.int64)
+    row_first, row_last, stack = maes_slots(m, n)
 
     for i in range(m + 1):
         lo[i], hi[i] = 0, n
     best = solve_start(w, lo, hi, moves, prev, cur)
     best_count = trace_back(moves, lo[0], n, row_first[0], row_last[0], best_nodes)
-    # Start n is start 0 again, one turn round b later.
-    for i in range(m + 1):
-        row_first[1, i] = row_first[0, i] + n
-        row_last[1, i] = row_last[0, i] + n
+    start_again(row_first, row_last, n)
 
-    # Depth-first stack of tasks: (first start, last start, their slots, depth).
-    stack = np.empty((2 * depth_limit + 4, 5), np.int64)
-    stack[0, 0], stack[0, 1], stack[0, 2], stack[0, 3], stack[0, 4] = 0, n, 0, 1, 0
     top = 1
     while top > 0:
         top -= 1
@@ -188,21 +223,14 @@ def maes_search(w: np.ndarray) -> tuple[float, np.ndarray]:
         if s_hi - s_lo < 2:
             continue
         mid = (s_lo + s_hi) // 2
-        for i in range(m + 1):
-            lo[i] = max(mid, min(row_first[slot_lo, i], row_first[slot_hi, i]))
-            hi[i] = min(mid + n, max(row_last[slot_lo, i], row_last[slot_hi, i]))
+        middle_band(row_first, row_last, slot_lo, slot_hi, mid, n, lo, hi)
         value = solve_start(w, lo, hi, moves, prev, cur)
         slot = 2 + depth
         count = trace_back(moves, mid, n, row_first[slot], row_last[slot], nodes)
         if value < best:
             best, best_count = value, count
             _copy_nodes(nodes, best_nodes, count)
-        # The lower half is pushed last so that it runs first (either order is correct).
-        stack[top, 0], stack[top, 1], stack[top, 2] = mid, s_hi, slot
-        stack[top, 3], stack[top, 4] = slot_hi, depth + 1
-        stack[top + 1, 0], stack[top + 1, 1], stack[top + 1, 2] = s_lo, mid, slot_lo
-        stack[top + 1, 3], stack[top + 1, 4] = slot, depth + 1
-        top += 2
+        top = push_halves(stack, top, s_lo, mid, s_hi, slot_lo, slot, slot_hi, depth)
     return best, _copy_nodes(best_nodes, np.empty((best_count, 2), np.int64), best_count)
 
 

@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from ._cyclic_dtw import STEP_A, STEP_AB, STEP_B, _copy_nodes
+from ._cyclic_dtw import STEP_A, STEP_AB, STEP_B, _copy_nodes, maes_slots, middle_band, push_halves, start_again
 from .jit import cached_jit as _jit
 
 __all__ = ["lean_maes_search", "checkpoint_rows"]
@@ -155,22 +155,14 @@ def lean_maes_search(a: np.ndarray, b: np.ndarray, every: int) -> tuple[float, n
     hi = np.empty(m + 1, np.int64)
     nodes = np.empty((m + n + 1, 2), np.int64)
     best_nodes = np.empty((m + n + 1, 2), np.int64)
-    depth_limit = 2
-    while (1 << (depth_limit - 2)) < n:
-        depth_limit += 1
-    row_first = np.empty((depth_limit + 2, m + 1), np.int64)
-    row_last = np.empty((depth_limit + 2, m + 1), np.int64)
+    row_first, row_last, stack = maes_slots(m, n)
 
     for i in range(m + 1):
         lo[i], hi[i] = 0, n
     best, best_count = _solve_and_trace(a, b, lo, hi, every, checkpoints, moves, band, at, prev, cur,
                                         row_first[0], row_last[0], best_nodes)
-    for i in range(m + 1):
-        row_first[1, i] = row_first[0, i] + n
-        row_last[1, i] = row_last[0, i] + n
+    start_again(row_first, row_last, n)
 
-    stack = np.empty((2 * depth_limit + 4, 5), np.int64)
-    stack[0, 0], stack[0, 1], stack[0, 2], stack[0, 3], stack[0, 4] = 0, n, 0, 1, 0
     top = 1
     while top > 0:
         top -= 1
@@ -179,18 +171,12 @@ def lean_maes_search(a: np.ndarray, b: np.ndarray, every: int) -> tuple[float, n
         if s_hi - s_lo < 2:
             continue
         mid = (s_lo + s_hi) // 2
-        for i in range(m + 1):
-            lo[i] = max(mid, min(row_first[slot_lo, i], row_first[slot_hi, i]))
-            hi[i] = min(mid + n, max(row_last[slot_lo, i], row_last[slot_hi, i]))
+        middle_band(row_first, row_last, slot_lo, slot_hi, mid, n, lo, hi)
         slot = 2 + depth
         value, count = _solve_and_trace(a, b, lo, hi, every, checkpoints, moves, band, at, prev, cur,
                                         row_first[slot], row_last[slot], nodes)
         if value < best:
             best, best_count = value, count
             _copy_nodes(nodes, best_nodes, count)
-        stack[top, 0], stack[top, 1], stack[top, 2] = mid, s_hi, slot
-        stack[top, 3], stack[top, 4] = slot_hi, depth + 1
-        stack[top + 1, 0], stack[top + 1, 1], stack[top + 1, 2] = s_lo, mid, slot_lo
-        stack[top + 1, 3], stack[top + 1, 4] = slot, depth + 1
-        top += 2
+        top = push_halves(stack, top, s_lo, mid, s_hi, slot_lo, slot, slot_hi, depth)
     return best, _copy_nodes(best_nodes, np.empty((best_count, 2), np.int64), best_count)

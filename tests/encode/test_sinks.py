@@ -105,3 +105,40 @@ def test_the_probe_reads_the_final_frame_count(monkeypatch) -> None:
 
     monkeypatch.setattr(sinks, "run_program", ran)
     assert sinks.probe_video(Path("probe.mp4")) == (3000, (64, 48))
+
+
+def test_ffmpeg_searched_early_is_searched_once_and_a_failure_is_reported_where_needed(monkeypatch) -> None:
+    import threading
+
+    import imageio_ffmpeg
+
+    from tweenrender.encode import sinks
+
+    calls: list[str] = []
+    release = threading.Event()
+
+    def found() -> str:
+        calls.append(threading.current_thread().name)
+        release.wait(5)
+        return "/opt/ffmpeg"
+
+    monkeypatch.setattr(sinks, "_FOUND", [])
+    monkeypatch.setattr(sinks, "_EARLY", [])
+    monkeypatch.setattr(imageio_ffmpeg, "get_ffmpeg_exe", found)
+    sinks.find_ffmpeg_early()
+    sinks.find_ffmpeg_early()  # a second call starts no second search
+    release.set()
+    assert sinks.ffmpeg_exe() == "/opt/ffmpeg" and sinks.ffmpeg_exe() == "/opt/ffmpeg"
+    assert calls == ["find-ffmpeg"] and not sinks._EARLY[0].is_alive()
+
+    def missing() -> str:
+        calls.append(threading.current_thread().name)
+        raise RuntimeError("No ffmpeg exe could be found.")
+
+    monkeypatch.setattr(sinks, "_FOUND", [])
+    monkeypatch.setattr(sinks, "_EARLY", [])
+    monkeypatch.setattr(imageio_ffmpeg, "get_ffmpeg_exe", missing)
+    sinks.find_ffmpeg_early()
+    with pytest.raises(RuntimeError, match="No ffmpeg"):
+        sinks.ffmpeg_exe()
+    assert calls[1:] == ["find-ffmpeg", "MainThread"]

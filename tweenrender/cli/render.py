@@ -67,8 +67,20 @@ def run(args: argparse.Namespace) -> int:
 
     compare = None if args.compare is None else (methods(args.compare) if args.compare else True)
     target = args.output if args.output is not None else default_target(args.scene, args.format, compare is not None)
+    _find_encoder_early(args.format, Path(target))
     given = {name: getattr(args, name) for name in RenderOptions.names() if hasattr(args, name)}
     options = RenderOptions.create(**{**given, "compare": compare,
                                       "progress": ProgressBar(Path(target).name, enabled=False if args.quiet else None)})
     print_path(write(load_one(args), target, options=options))
     return 0
+
+
+def _find_encoder_early(fmt: str | None, target: Path) -> None:
+    """Start looking for ffmpeg while the scene loads, when the output is a video it encodes."""
+    from ..encode.formats import TABLE, by_suffix
+
+    chosen = TABLE.get(fmt) if fmt else by_suffix(target.suffix)
+    if chosen is not None and chosen.ffmpeg:
+        from ..encode.sinks import find_ffmpeg_early
+
+        find_ffmpeg_early()

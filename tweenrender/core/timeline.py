@@ -202,7 +202,7 @@ class Track:
             return [self.still] * len(times)
         index = self.segment_index(times)
         out: list[ShapeAt] = [self.still] * len(times)
-        for s in np.unique(index):
+        for s in sorted(set(index.tolist())):  # not np.unique: it loads numpy.ma (10 ms of start-up)
             segment = self.segments[s]
             picked = np.flatnonzero(index == s)
             frames = staggered_paths(segment, times[picked], method) if segment.stagger > 0 else None

@@ -39,7 +39,7 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
     ``alpha`` keeps a GIF's transparency (its parts carry it).
     The target changes only if the joined file was written and reads back.
     """
-    from .sinks import encoder_options, ffmpeg_exe, probe_video
+    from .sinks import encoder_options, ffmpeg_exe, read_back
 
     target = Path(target)
     paths = [Path(p) for p in parts]
@@ -81,7 +81,7 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
             said = " | ".join(line for line in done.stderr.strip().splitlines()[-4:] if line.strip())
             raise EncodeError(f"{target}: ffmpeg could not join {len(paths)} parts: {said or 'no message'}")
         try:
-            frames, _ = probe_video(temporary)
+            frames, _ = read_back(temporary, fmt)
         except Exception as error:  # a file ffmpeg cannot read back is not an output
             raise EncodeError(f"{target}: the joined video cannot be read back ({error})") from None
         if expected is not None and frames != expected:

@@ -38,7 +38,9 @@ class Format:
     takes); ``even`` whether both sides must be even; ``join`` how chunks are joined; ``chunked`` whether
     several processes render it as chunks, each with an encoder of its own; ``container`` the
     container's options that a join by stream copy repeats; ``yuv420`` whether opaque frames go to
-    ffmpeg as yuv420p planes made here; ``vector`` whether the file holds the animated paths rather than
+    ffmpeg as yuv420p planes made here; ``boxes`` whether the file is an ISO base media file (MP4,
+    QuickTime), whose frame count and size are read back from its own boxes (:mod:`.media_boxes`) rather
+    than by running ffmpeg again; ``vector`` whether the file holds the animated paths rather than
     pictures (written by :mod:`.lottie` or :mod:`.animated_svg`, a player draws them: any size, any
     background). What encoding a frame costs is measured in the run (:mod:`.encoder_cost`; PNG frames,
     compressed where they are drawn, by timing that).
@@ -55,6 +57,7 @@ class Format:
     chunked: bool = False
     container: tuple[str, ...] = ()
     yuv420: bool = False
+    boxes: bool = False
     listed: bool = True  # False: an internal format (a GIF's lossless parts), never asked for by name
     vector: bool = False  # the paths themselves, keyframed (Lottie, animated SVG): no frames are drawn
 
@@ -91,14 +94,14 @@ TABLE: dict[str, Format] = {f.name: f for f in (
            ("-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p",
             "-movflags", "+faststart", "-f", "mp4"),
            max_side=16384, even=True, join="copy", chunked=True, container=("-movflags", "+faststart"),
-           yuv420=True),
+           yuv420=True, boxes=True),
     Format("webm", "VP9", ".webm",
            ("-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-pix_fmt", "yuv420p",
             "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"),
            alpha=(("yuv420p", "yuva420p"),), max_side=65536, join="copy", chunked=True, yuv420=True),
     Format("mov", "ProRes 4444", ".mov",
            ("-c:v", "prores_ks", "-profile:v", "4444", "-vendor", "apl0", "-pix_fmt", "yuv444p10le", "-f", "mov"),
-           alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536),
+           alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536, boxes=True),
     Format("gif", "GIF", ".gif",
            ("-filter_complex", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=sierra2_4a",
             "-loop", "0", "-f", "gif"),

@@ -4,12 +4,14 @@ earlier output untouched."""
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import signal
 import subprocess
 import sys
 import tempfile
+import threading
 from pathlib import Path
 from typing import Protocol
 
@@ -25,7 +27,7 @@ from .targets import check_frames_folder
 from .yuv420 import PIXEL_ORDERS, Yuv420
 
 __all__ = ["PIXEL_FORMATS", "Sink", "open_sink", "PngSequence",
-           "FFmpegVideo", "probe_video", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning", "png_bytes",
+           "FFmpegVideo", "probe_video", "read_back", "find_ffmpeg_early", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning", "png_bytes",
            "sends_yuv420", "YUV420_TAGS"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
@@ -75,11 +77,36 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     return FFmpegVideo(fmt, target, width, height, fps, frames, pixel_format, alpha)
 
 
-def ffmpeg_exe() -> str:
-    """The path of the ffmpeg bundled with imageio-ffmpeg (found, and checked by running it, once a process)."""
-    import imageio_ffmpeg
+_FOUND: list[str] = []  # the ffmpeg found, once a process
+_FINDING = threading.Lock()
+_EARLY: list[threading.Thread] = []  # the search find_ffmpeg_early began
 
-    return imageio_ffmpeg.get_ffmpeg_exe()
+
+def ffmpeg_exe() -> str:
+    """The path of the ffmpeg bundled with imageio-ffmpeg (found, and checked by running it, once a process;
+    a search :func:`find_ffmpeg_early` began is waited for, its thread ended)."""
+    for early in _EARLY:
+        if early is not threading.current_thread():
+            early.join()
+    with _FINDING:
+        if not _FOUND:
+            import imageio_ffmpeg
+
+            _FOUND.append(imageio_ffmpeg.get_ffmpeg_exe())
+        return _FOUND[0]
+
+
+def find_ffmpeg_early() -> None:
+    """Look for ffmpeg on a thread of its own while this one goes on: imageio-ffmpeg checks the one it
+    finds by running it (about 20 ms before an encoder could start otherwise). A failure is left for
+    :func:`ffmpeg_exe` to report where it is needed."""
+    def find() -> None:
+        with contextlib.suppress(Exception):
+            ffmpeg_exe()
+
+    if not _EARLY and not _FOUND:
+        _EARLY.append(threading.Thread(target=find, name="find-ffmpeg", daemon=True))
+        _EARLY[0].start()
 
 
 def x264_tuning(width: int, height: int, cpus: int | None = None) -> list[str]:
@@ -250,7 +277,7 @@ class FFmpegVideo:
             self.abort()
             raise EncodeError(f"{self.target}: ffmpeg {_ended(code)}: {message}")
         try:
-            frames, size = probe_video(self.temporary)
+            frames, size = read_back(self.temporary, self.fmt)
         except Exception as error:  # a file ffmpeg cannot read back is not an output
             self.abort()
             raise EncodeError(f"{self.target}: the written video cannot be read back ({error})") from None
@@ -292,6 +319,16 @@ def _grow_pipe(pipe: object) -> None:
         fcntl.fcntl(pipe.fileno(), getattr(fcntl, "F_SETPIPE_SZ", 1031), _PIPE_BYTES)  # type: ignore[attr-defined]
     except (OSError, ValueError, AttributeError):
         pass  # a smaller limit (/proc/sys/fs/pipe-max-size) only costs wake-ups
+
+
+def read_back(path: Path, fmt: str) -> tuple[int, tuple[int, int]]:
+    """Frame count and ``(width, height)`` of a written ``fmt`` video: from its own boxes where it is an ISO
+    base media file (:attr:`.formats.Format.boxes`), else by :func:`probe_video`."""
+    if TABLE[fmt].boxes:
+        from .media_boxes import video_track
+
+        return video_track(path)
+    return probe_video(path)
 
 
 def probe_video(path: Path) -> tuple[int, tuple[int, int]]:

@@ -115,12 +115,12 @@ def render_in_processes(job: RenderJob, fmt: str, target: Path, workers: int,
     MP4 and WebM) as that many chunks, each drawn and encoded by a process of its own and joined by
     stream copy (no frame travels between processes); others (PNG frames, GIF) as frames drawn in the
     processes and written here in order."""
-    from concurrent.futures import ProcessPoolExecutor
-
     from .stream import render
 
     if workers <= 1 or not TABLE[fmt].chunked:
         return render(job, fmt, target, progress, workers=workers)
+    from concurrent.futures import ProcessPoolExecutor
+
     from ..encode.lifeline import part_worker_setup
 
     sweep_parts()

@@ -24,7 +24,8 @@ if TYPE_CHECKING:
 
 __all__ = ["RenderJob", "Frames", "Progress", "total_frames", "pick_frames", "tracks_of", "scene_view", "stacking_of"]
 
-_BLOCK = 32  # frames whose polygons are evaluated in one vectorised call
+_BLOCK = 32  # frames whose polygons are evaluated in one vectorised call, at most ...
+_BLOCK_POINTS = 1 << 20  # ... and vertices in a block (16 MiB of them): detailed scenes evaluate fewer frames at once
 Progress = Callable[[int, int], None]
 """Called with ``(frames done, frames in all)`` as a render goes."""
 
@@ -130,6 +131,8 @@ class Frames:
     _composer: Composer | None = field(default=None, init=False, repr=False)
     _blocks: dict[str | None, tuple[int, list[list[ShapeAt]]]] = field(default_factory=dict, init=False,
                                                                        repr=False)
+    _block_frames: int = field(default=0, init=False, repr=False)
+    _drawn: bool = field(default=False, init=False, repr=False)
 
     @property
     def tracks(self) -> tuple[Track, ...]:
@@ -155,16 +158,25 @@ class Frames:
                 for track, shape in zip(self.tracks, scene.shapes)]
 
     def frame_shapes(self, method: str | None, index: int) -> list[ShapeAt]:
-        """Every shape at frame ``index``: ``shapes_at(method, index / fps)``, but evaluated
-        for a block of ``_BLOCK`` frames at once, so the per-call cost of numpy is paid once a block."""
-        block = index // _BLOCK
-        cached = self._blocks.get(method)
-        if cached is None or cached[0] != block:
-            scene, times = self.job.scene, np.arange(block * _BLOCK, (block + 1) * _BLOCK) / self.job.rate
-            cached = (block, [track.at(times, method or scene.method_of(shape))
-                              for track, shape in zip(self.tracks, scene.shapes)])
-            self._blocks[method] = cached
-        return [per_time[index - block * _BLOCK] for per_time in cached[1]]
+        """Every shape at frame ``index``: ``shapes_at(method, index / fps)``, but evaluated for a block of
+        frames at once (:meth:`block_frames`), so the per-call cost of numpy is paid once a block."""
+        size = self.block_frames()
+        block = index // size
+        if self._blocks.get(method, (None,))[0] != block:
+            self._blocks.pop(method, None)  # the previous block's outlines go before the next one's are made
+            scene, times = self.job.scene, np.arange(block * size, (block + 1) * size) / self.job.rate
+            self._blocks[method] = (block, [track.at(times, method or scene.method_of(shape))
+                                            for track, shape in zip(self.tracks, scene.shapes)])
+        return [per_time[index - block * size] for per_time in self._blocks[method][1]]
+
+    def block_frames(self) -> int:
+        """Frames evaluated in one block: ``_BLOCK``, fewer where a frame has so many vertices that a block
+        would hold more than ``_BLOCK_POINTS`` (each shape counted at its most detailed key)."""
+        if not self._block_frames:
+            points = sum(max((sum(len(c.points) for c in key.contours) for key in shape.keys), default=0)
+                         for shape in self.job.scene.shapes)
+            self._block_frames = max(1, min(_BLOCK, _BLOCK_POINTS // max(points, 1)))
+        return self._block_frames
 
     @property
     def composer(self) -> Composer:
@@ -193,7 +205,13 @@ class Frames:
         """Frame ``index`` as straight RGBA ``(height, width, 4)`` (a buffer reused by the next call),
         or as the surface's premultiplied BGRA when ``layout`` is ``"bgra"``."""
         panels = [self.frame_shapes(method, index) for method in self.job.methods]
-        return self._draw(panels, index / self.job.rate)
+        picture = self._draw(panels, index / self.job.rate)
+        if not self._drawn:  # every kernel a frame needs is linked now: the compiler's code can go
+            from .compiler_pages import page_out_compiler
+
+            self._drawn = True
+            page_out_compiler()
+        return picture
 
     def at_time(self, time: float) -> NDArray[np.uint8]:
         """The picture at any ``time`` in seconds, on or between frames; reused like ``self(index)``."""

@@ -281,3 +281,29 @@ def test_hides_fill_edge_only_for_plain_opaque_strokes_two_device_pixels_wide() 
     assert not hides_fill_edge(paint(), paint(Style=skia.Paint.kFill_Style, Color=skia.ColorSetARGB(128, 255, 0, 0)))
     assert not hides_fill_edge(paint(AntiAlias=False), fill)
     assert not hides_fill_edge(paint(), fill, skia.Matrix.RotateDeg(30))
+
+
+def test_an_mp4_render_runs_ffmpeg_once_and_loads_no_pool_nor_masked_arrays(tmp_path: Path) -> None:
+    icons = Path(__file__).resolve().parents[1] / "data" / "icons" / "feather"
+    code = (
+        "import sys\n"
+        "from tweenrender.encode import lifeline, sinks\n"
+        "ran = []\n"
+        "for module in (lifeline, sinks):\n"
+        "    for name in ('run_program', 'start_program'):\n"
+        "        if hasattr(module, name):\n"
+        "            def counted(command, *a, _f=getattr(module, name), **k):\n"
+        "                ran.append(command[1] if len(command) > 1 else '')\n"
+        "                return _f(command, *a, **k)\n"
+        "            setattr(module, name, counted)\n"
+        "from tweenrender.cli.main import main\n"
+        "code = main(sys.argv[1:])\n"
+        "print(len(ran), int('numpy.ma' in sys.modules), int('concurrent.futures.process' in sys.modules))\n")
+    target = tmp_path / "icons.mp4"
+    done = subprocess.run([sys.executable, "-c", code, "render", str(icons / "heart.svg"), str(icons / "star.svg"),
+                           "--size", "128x72", "-o", str(target), "-q"], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    runs, masked, pool = (int(v) for v in done.stdout.split()[-3:])
+    assert (runs, masked, pool) == (1, 0, 0)  # the encoder alone: the file is read back from its boxes
+    _, frames = decode(target)
+    assert len(frames) == 25

@@ -44,6 +44,32 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def entry() -> NoReturn:
+    """The ``tweenrender`` command: :func:`main`, then an exit that skips the interpreter's teardown where
+    numba's compiler was loaded.
+
+    With LLVM linked into the process, tearing the interpreter down module by module took 0.25–0.3 s
+    after the work was done (docs/performance.md, "What a render runs"): more than a short clip's
+    frames. Python's exit handlers (``atexit``, which also runs the finalizers registered to run at
+    exit) still run and both output streams are flushed; only the freeing of memory the system takes
+    back anyway is skipped. Without numba loaded, or with a thread still to be waited for, the exit is
+    Python's own.
+    """
+    code = main()
+    import threading
+
+    waits = any(not thread.daemon for thread in threading.enumerate() if thread is not threading.current_thread())
+    if "llvmlite" not in sys.modules or waits:
+        sys.exit(code)
+    import atexit
+
+    atexit._run_exitfuncs()
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):
+            stream.flush()
+    os._exit(code)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit code (0 done, 1 failure, 2 bad input, 130 interrupted)."""
     parser = build_parser()

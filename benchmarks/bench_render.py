@@ -426,6 +426,18 @@ def memory(folder: Path, rounds: int) -> None:
     print(f"1080p decoded against the frames drawn (every 10th frame, RGB): before mean {before:.3f} "
           f"(99th percentile {before_p99:.0f}), now mean {now:.3f} (99th percentile {now_p99:.0f})")
     print()
+    stroked = folder / "stroked.toml"
+    stroked.write_text(stroked_scene(5.0))
+    print(f"## Peak memory of the process tree, stroked scene (100 x 500 vertices, compiled round stroke) to MP4, "
+          f"default settings (auto workers), {rounds} rounds")
+    print("| size | frames | wall s (median) | peak tree MiB (max; all) | tweenrender alone MiB (max) | load |")
+    print("|---|---|---|---|---|---|")
+    for label, size, count in (("1080p", "1920x1080", 121), ("4K", "3840x2160", 48)):
+        done = [run_measured([*TWEENRENDER, "render", str(stroked), "-o", str(folder / f"stroked-{label}.mp4"), "-q",
+                              "--size", size, "--frames", f"0:{count}"]) for _ in range(rounds)]
+        print(f"| {label} | {count} | {median([r[0] for r in done]):.2f} | {max(r[2] for r in done)} "
+              f"({', '.join(str(r[2]) for r in done)}) | {max(r[3] for r in done)} | {load()} |")
+    print()
     raw = folder / "busy.yuv"
     frames, _ = prerender_raw(scene, raw)
     print(f"## x264 tuned (threads and lookahead from the machine) vs x264's defaults, encode-only, {frames} "

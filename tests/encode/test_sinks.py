@@ -142,3 +142,26 @@ def test_ffmpeg_searched_early_is_searched_once_and_a_failure_is_reported_where_
     with pytest.raises(RuntimeError, match="No ffmpeg"):
         sinks.ffmpeg_exe()
     assert calls[1:] == ["find-ffmpeg", "MainThread"]
+
+
+def test_a_render_refused_early_waits_for_the_ffmpeg_search_it_began(tmp_path: Path, monkeypatch) -> None:
+    import threading
+    import time
+
+    import imageio_ffmpeg
+
+    from tweenrender.cli.main import main
+    from tweenrender.encode import sinks
+
+    def slow() -> str:
+        time.sleep(0.3)  # imageio-ffmpeg running ffmpeg -version to check it
+        return "/opt/ffmpeg"
+
+    monkeypatch.setattr(sinks, "_FOUND", [])
+    monkeypatch.setattr(sinks, "_EARLY", [])
+    monkeypatch.setattr(imageio_ffmpeg, "get_ffmpeg_exe", slow)
+    bad = tmp_path / "bad.toml"
+    bad.write_text("size = [10, 10\n")
+    assert main(["render", str(bad), "-o", str(tmp_path / "out.mp4"), "-q"]) == 2
+    assert len(sinks._EARLY) == 1 and not sinks._EARLY[0].is_alive()
+    assert not any(t.name == "find-ffmpeg" for t in threading.enumerate())

@@ -68,10 +68,15 @@ def run(args: argparse.Namespace) -> int:
     compare = None if args.compare is None else (methods(args.compare) if args.compare else True)
     target = args.output if args.output is not None else default_target(args.scene, args.format, compare is not None)
     _find_encoder_early(args.format, Path(target))
-    given = {name: getattr(args, name) for name in RenderOptions.names() if hasattr(args, name)}
-    options = RenderOptions.create(**{**given, "compare": compare,
-                                      "progress": ProgressBar(Path(target).name, enabled=False if args.quiet else None)})
-    print_path(write(load_one(args), target, options=options))
+    try:
+        given = {name: getattr(args, name) for name in RenderOptions.names() if hasattr(args, name)}
+        options = RenderOptions.create(**{**given, "compare": compare, "progress": ProgressBar(
+            Path(target).name, enabled=False if args.quiet else None)})
+        print_path(write(load_one(args), target, options=options))
+    finally:
+        from ..encode.sinks import ffmpeg_search_done
+
+        ffmpeg_search_done()
     return 0
 
 

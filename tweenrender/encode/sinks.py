@@ -26,9 +26,9 @@ from .manifest import write_manifest
 from .targets import check_frames_folder
 from .yuv420 import PIXEL_ORDERS, Yuv420
 
-__all__ = ["PIXEL_FORMATS", "Sink", "open_sink", "PngSequence",
-           "FFmpegVideo", "probe_video", "read_back", "find_ffmpeg_early", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning", "png_bytes",
-           "sends_yuv420", "YUV420_TAGS"]
+__all__ = ["PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video", "read_back",
+           "find_ffmpeg_early", "ffmpeg_search_done", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning",
+           "png_bytes", "sends_yuv420", "YUV420_TAGS"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
 """Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout. ffmpeg is also given
@@ -85,9 +85,7 @@ _EARLY: list[threading.Thread] = []  # the search find_ffmpeg_early began
 def ffmpeg_exe() -> str:
     """The path of the ffmpeg bundled with imageio-ffmpeg (found, and checked by running it, once a process;
     a search :func:`find_ffmpeg_early` began is waited for, its thread ended)."""
-    for early in _EARLY:
-        if early is not threading.current_thread():
-            early.join()
+    ffmpeg_search_done()
     with _FINDING:
         if not _FOUND:
             import imageio_ffmpeg
@@ -107,6 +105,14 @@ def find_ffmpeg_early() -> None:
     if not _EARLY and not _FOUND:
         _EARLY.append(threading.Thread(target=find, name="find-ffmpeg", daemon=True))
         _EARLY[0].start()
+
+
+def ffmpeg_search_done() -> None:
+    """Wait for the search :func:`find_ffmpeg_early` began (and the ffmpeg it runs to check) to end: a
+    command that stops early, on bad input or a signal, leaves no child process behind."""
+    for early in _EARLY:
+        if early is not threading.current_thread():
+            early.join()
 
 
 def x264_tuning(width: int, height: int, cpus: int | None = None) -> list[str]:

@@ -186,6 +186,17 @@ def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
         except ValueError as error:  # e.g. an integer of more than 4300 digits
             raise SceneError(path, None, f"not valid JSON: {error}") from None
     else:
+        from .point_arrays import lift_point_arrays
+
+        lifted_text, arrays = lift_point_arrays(text, LIMITS["coordinate"])
+        if arrays:
+            try:
+                reader = _Reader(path, text, fmt, arrays)
+                scene = reader.scene(tomllib.loads(lifted_text))
+                if not arrays.keys() - reader.read_arrays:
+                    return scene
+            except (tomllib.TOMLDecodeError, SceneError, RecursionError, ValueError):
+                pass  # read again as written: the lifting never changes what a scene means or how it fails
         try:
             data = tomllib.loads(text)
         except tomllib.TOMLDecodeError as error:
@@ -228,9 +239,11 @@ def _describe(value: Any) -> str:
 class _Reader:
     """Validates one parsed document; knows where it came from for messages."""
 
-    def __init__(self, path: Path, text: str, fmt: str) -> None:
+    def __init__(self, path: Path, text: str, fmt: str, arrays: dict[str, np.ndarray] | None = None) -> None:
         self.path = path
         self.text = text
+        self.arrays = arrays or {}  # points arrays read ahead by numpy (point_arrays), by the string standing for each
+        self.read_arrays: set[str] = set()
         self.locate = json_line_of if fmt == "json" else line_of
         self.timing: tuple[str, Easing] = ("linear", LINEAR)  # the scene's ease: every key's default
         self.stagger = 0.0
@@ -581,6 +594,12 @@ class _Reader:
     def points(self, value: Any, where: str, closed: bool = True) -> np.ndarray:
         least = 3 if closed else 2
         what = f"a list of at least {least} [x, y] pairs"
+        if isinstance(value, str) and value in self.arrays:  # finite pairs within range, as lifted
+            array = self.arrays[value]
+            if len(array) > LIMITS["vertices"]:
+                raise self.fail(where, f"expected at most {LIMITS['vertices']} vertices, found {len(array)}")
+            self.read_arrays.add(value)
+            return frozen_points(array)
         items = self.listing(value, where, what + " or { svg = ..., id = ... }")
         if len(items) > LIMITS["vertices"]:
             raise self.fail(where, f"expected at most {LIMITS['vertices']} vertices, found {len(items)}")

@@ -81,11 +81,17 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _find_encoder_early(fmt: str | None, target: Path) -> None:
-    """Start looking for ffmpeg while the scene loads, when the output is a video it encodes."""
-    from ..encode.formats import TABLE, by_suffix
+    """Start looking for ffmpeg while the scene loads, when the output is a video it encodes (a format that
+    cannot be told is left for ``write`` to refuse)."""
+    from ..encode.formats import TABLE
+    from ..errors import OptionError
+    from ..pipeline.library import output_format
 
-    chosen = TABLE.get(fmt) if fmt else by_suffix(target.suffix)
-    if chosen is not None and chosen.ffmpeg:
+    try:
+        chosen = TABLE[output_format(target, fmt)]
+    except OptionError:
+        return
+    if chosen.ffmpeg:
         from ..encode.sinks import find_ffmpeg_early
 
         find_ffmpeg_early()

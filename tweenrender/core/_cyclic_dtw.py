@@ -338,6 +338,7 @@ def angle_change(q0x: float, q0y: float, q1x: float, q1y: float,
     """
     s0, s1, _ = _roots_inside(q0x, q1x, q2x)
     s2, s3, _ = _roots_inside(q0y, q1y, q2y)
+    y_first, y_second = s2, s3  # y's roots, kept before the sorting below mixes them with the others
     d0 = q0x * q1y - q0y * q1x
     d1 = 0.5 * (q0x * q2y - q0y * q2x)
     d2 = q1x * q2y - q1y * q2x
@@ -382,9 +383,7 @@ def angle_change(q0x: float, q0y: float, q1x: float, q1y: float,
             t = (q0x - q1x) / curvature
             through_zero = through_zero or (0.0 < t < 1.0 and _bezier(q0x, q1x, q2x, t) > 0.0)
     else:
-        # y's roots again, as found above (before sorting)
-        r1, r2, _ = _roots_inside(q0y, q1y, q2y)
-        for root in (r1, r2):
+        for root in (y_first, y_second):
             if root < 1.0 and _bezier(q0x, q1x, q2x, root) > 0.0:
                 through_zero = True
     return sweep, overshoot, through_zero

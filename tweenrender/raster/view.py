@@ -42,13 +42,17 @@ class Viewport:
         with np.errstate(over="ignore", divide="ignore"):
             return float(min(self.width / (x1 - x0), self.height / (y1 - y0), _MAX_SCALE))
 
+    def _placement(self) -> tuple[float, float, float]:
+        """``(scale, ox, oy)``: the view scaled, then moved ``ox, oy`` pixels to sit centred (y up)."""
+        x0, y0, x1, y1 = self.view
+        s = self.scale
+        return s, 0.5 * (self.width - s * (x1 - x0)), 0.5 * (self.height - s * (y1 - y0))
+
     @property
     def matrix(self) -> NDArray[np.float64]:
         """World → pixel as a ``(3, 3)`` affine matrix (what :meth:`to_pixels` does, without its clamp)."""
-        x0, y0, x1, y1 = self.view
-        s = self.scale
-        ox = 0.5 * (self.width - s * (x1 - x0))
-        oy = 0.5 * (self.height - s * (y1 - y0))
+        x0, y0 = self.view[0], self.view[1]
+        s, ox, oy = self._placement()
         return np.array([[s, 0.0, ox - s * x0], [0.0, -s, self.height - oy + s * y0], [0.0, 0.0, 1.0]])
 
     def to_pixels(self, points: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -57,10 +61,8 @@ class Viewport:
         A view of 1e-300 magnifies by 1e302: far vertices overflow to ±inf, deliberately, and are
         brought back to ±1e300 (far off any canvas; see :mod:`.clip` for what is then drawn).
         """
-        x0, y0, x1, y1 = self.view
-        s = self.scale
-        ox = 0.5 * (self.width - s * (x1 - x0))
-        oy = 0.5 * (self.height - s * (y1 - y0))
+        x0, y0 = self.view[0], self.view[1]
+        s, ox, oy = self._placement()
         with np.errstate(over="ignore", invalid="ignore"):
             px = (points[..., 0] - x0) * s + ox
             py = self.height - ((points[..., 1] - y0) * s + oy)

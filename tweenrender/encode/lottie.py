@@ -18,8 +18,8 @@ from typing import Any
 
 from .atomic import replacing
 from .lottie_paint import gradient_fill, masks, matte, refuse_unsupported, stretched_fill
-from .lottie_values import animated, contour, percent, scalar, static, transform
-from .vector_data import Array, Handles, VectorClip, VectorRun
+from .lottie_values import animated, path_item, percent, scalar, static, transform
+from .vector_data import Array, VectorClip, VectorRun
 
 __all__ = ["lottie_document", "write_lottie"]
 
@@ -55,12 +55,6 @@ def lottie_document(clip: VectorClip, name: str = "tweenrender") -> dict[str, An
             "ddd": 0, "assets": [], "layers": layers}
 
 
-def _path(frames: tuple[int, ...], points: Array, closed: bool, eases: tuple[Handles, ...],
-          index: int) -> dict[str, Any]:
-    """One contour: ``points (K, L, 2)`` at ``frames``, each span timed by its ``eases``."""
-    return {"ty": "sh", "nm": f"contour {index}", "ind": index, "ks": contour(frames, points, closed, eases)}
-
-
 def _colour_prop(frames: tuple[int, ...], colours: Array) -> tuple[dict[str, Any], dict[str, Any]]:
     """A colour ``(P, 4)`` as Lottie's ``c`` (RGB in [0, 1]) and ``o`` (alpha in percent)."""
     rgb = [[round(float(v), 5) for v in c[:3]] + [1] for c in colours]
@@ -71,7 +65,8 @@ def _colour_prop(frames: tuple[int, ...], colours: Array) -> tuple[dict[str, Any
 def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
     """The run's layer, below the matte of its clip path of several contours if it has one."""
     frames = clip.frames
-    paths = [_path(run.path_frames, p, shut, run.eases, i) for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
+    paths = [path_item(f"contour {i}", i, run.path_frames, p, shut, run.eases)
+             for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
     groups = run.stroke_groups() if run.stroke is not None else []
     gradient = run.gradient
     stretched = run.gradient_paths is not None

@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import OptionError
-from .lottie_values import animated, contour, percent, scalar, static, transform
+from .lottie_values import animated, contour, path_item, percent, scalar, static, transform
 from .vector_data import Array, ClipKeys, GradientKeys, VectorRun
 
 __all__ = ["gradient_fill", "stretched_fill", "masks", "matte", "refuse_unsupported"]
@@ -93,7 +93,7 @@ def stretched_fill(run: VectorRun, gradient: GradientKeys, rule: int) -> dict[st
     scale = animated(frames, [[100.0, round(float(100.0 * r), 4)] for r in gradient.ratio])
     assert run.gradient_paths is not None, "an elliptical gradient's run carries its paths in the gradient's frame"
     path_frames, local, eases = run.gradient_paths
-    paths = [{"ty": "sh", "nm": f"contour {i}", "ind": i, "ks": contour(path_frames, points, shut, eases)}
+    paths = [path_item(f"contour {i}", i, path_frames, points, shut, eases)
              for i, (points, shut) in enumerate(zip(local, run.closed))]
     items = [*paths, gradient_fill(frames, gradient, rule, stretched=True),
              {"ty": "tr", **transform(static(100), position, rotation, scale)}]
@@ -113,8 +113,7 @@ def matte(clips: ClipKeys) -> dict[str, Any] | None:
     several = [region for region in clips.regions if len(region) > 1]
     if not several:
         return None
-    paths = [{"ty": "sh", "nm": f"clip {i}", "ind": i, "ks": contour(clips.frames, points, True)}
-             for i, points in enumerate(several[0])]
+    paths = [path_item(f"clip {i}", i, clips.frames, points, True) for i, points in enumerate(several[0])]
     return {"ty": "gr", "nm": "clip", "it": [*paths, {"ty": "fl", "nm": "clip", "c": static([1, 1, 1, 1]),
                                                       "o": static(100), "r": 1},
                                              {"ty": "tr", **transform(static(100))}]}

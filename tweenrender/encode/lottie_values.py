@@ -8,7 +8,7 @@ import numpy as np
 
 from .vector_data import STRAIGHT, Array, Handles
 
-__all__ = ["DIGITS", "static", "animated", "scalar", "percent", "transform", "contour"]
+__all__ = ["DIGITS", "static", "animated", "scalar", "percent", "transform", "contour", "path_item"]
 
 DIGITS = 3  # pixels are written to a thousandth
 
@@ -67,3 +67,9 @@ def contour(frames: tuple[int, ...], points: Array, closed: bool, eases: tuple[H
     if prop["a"] == 0:
         prop = static(values[0][0])
     return prop
+
+
+def path_item(name: str, index: int, frames: tuple[int, ...], points: Array, closed: bool,
+              eases: tuple[Handles, ...] = ()) -> dict[str, Any]:
+    """A path shape item (``sh``) named ``name``: :func:`contour` of ``points (K, L, 2)`` at ``frames``."""
+    return {"ty": "sh", "nm": name, "ind": index, "ks": contour(frames, points, closed, eases)}

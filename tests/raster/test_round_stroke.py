@@ -220,3 +220,45 @@ def test_coordinates_scaled_past_any_canvas_or_to_infinity_are_safe() -> None:
     stroke_contours(pixels, [huge], [True], 2.0, WHITE, scale=1e10)  # some ends overflow to ±inf
     stroke_contours(pixels, [np.array([[2.0, 3.0], [40.0, 30.0]])], [False], 2.0, WHITE, scale=1e-300)
     assert np.isfinite(pixels).all() and pixels[..., 3].min() == 255
+
+
+def _both_in_closed_form():
+    """The kernel's area of the pixel inside two edges, callable from Python (it is inlined where used)."""
+    from numba import njit
+
+    from tweenrender.raster import _stroke_kernel as kernel
+
+    return njit(error_model="numpy")(lambda u1, n1x, n1y, u2, n2x, n2y: kernel._both(u1, n1x, n1y, u2, n2x, n2y))
+
+
+def test_the_pixel_inside_two_edges_has_the_area_brute_force_counts() -> None:
+    both = _both_in_closed_form()
+    samples = (np.arange(400) + 0.5) / 400 - 0.5
+    x, y = np.meshgrid(samples, samples)
+    rng = np.random.default_rng(7)
+    cases = [(rng.uniform(0, 2 * np.pi), rng.uniform(0, 2 * np.pi), *rng.uniform(-1, 1, 2)) for _ in range(120)]
+    # the same line, opposite lines (a band), axis-aligned normals (slopes of zero) and a corner
+    cases += [(0.3, 0.3, 0.1, -0.2), (0.3, 0.3 + np.pi, 0.25, 0.1), (0.3, 0.3 + np.pi, -0.2, 0.1),
+              (0.0, np.pi / 2, 0.2, -0.1), (np.pi, -np.pi / 2, 0.4, 0.4), (0.0, np.pi, 0.6, 0.6)]
+    for first, second, u1, u2 in cases:
+        n1, n2 = (np.cos(first), np.sin(first)), (np.cos(second), np.sin(second))
+        truth = ((n1[0] * x + n1[1] * y <= u1) & (n2[0] * x + n2[1] * y <= u2)).mean()
+        assert abs(both(u1, *n1, u2, *n2) - truth) <= 0.006, (first, second, u1, u2)
+
+
+def test_the_pixel_inside_two_axis_aligned_edges_is_a_rectangle() -> None:
+    both = _both_in_closed_form()
+    for a, b in ((0.1, -0.2), (0.5, 0.5), (-0.5, 0.3), (0.7, -0.7), (0.25, 0.0)):
+        # x <= a and y <= b: the rectangle from the pixel's lower left corner, (a + ½)(b + ½) held to [0, 1]
+        expected = min(1.0, max(0.0, a + 0.5)) * min(1.0, max(0.0, b + 0.5))
+        assert both(a, 1.0, 0.0, b, 0.0, 1.0) == pytest.approx(expected, abs=1e-12)
+        # -x <= a and -y <= b: the same from the upper right corner
+        assert both(a, -1.0, 0.0, b, 0.0, -1.0) == pytest.approx(expected, abs=1e-12)
+
+
+def test_edges_on_the_pixels_sides_or_on_each_other_count_once() -> None:
+    both = _both_in_closed_form()
+    assert both(0.5, 1.0, 0.0, 0.5, 0.0, 1.0) == pytest.approx(1.0)  # both lines on the pixel's sides
+    assert both(0.2, 0.6, 0.8, 0.2, 0.6, 0.8) == pytest.approx(both(0.2, 0.6, 0.8, 9.0, 0.6, 0.8))  # one line
+    assert both(0.2, 0.6, 0.8, -0.2, -0.6, -0.8) == pytest.approx(0.0, abs=1e-12)  # a band of no width
+    assert both(0.0, 1.0, 0.0, 0.0, -1.0, 0.0) == pytest.approx(0.0, abs=1e-12)

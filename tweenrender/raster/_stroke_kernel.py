@@ -9,14 +9,14 @@ closed form (``coverage``). Where two parts of the outline cross one pixel (the
 inner corner of a bend, the gap between two spikes) the nearest edge alone
 misses some of it, so the nearest segment whose nearest point lies inside it
 (not at an end) is kept too, and its part is added less the part both cover
-(the pixel clipped by both edges, ``_both``).
+(the pixel inside both edges, in closed form: ``_both``).
 
 The work goes row by row, so that a row's scratch stays in the cache: each
 segment whose capsule (the points within ``r + √½``, beyond which a pixel is not
 covered at all) reaches the row visits the row's pixels inside the capsule's
-box and the slab along it, and keeps in each the two nearest segments and the
-offset from the nearest one's nearest point; then the row's touched pixels are
-blended once, source-over.
+box and the slab along it, and keeps in each the two nearest segments' gains and
+the offsets from their nearest points; then the row's touched pixels are blended
+once, source-over.
 """
 
 from __future__ import annotations
@@ -34,6 +34,11 @@ _HALF_DIAGONAL = 0.7072
 """A pixel whose centre lies farther than ``r + √½`` from every segment is not covered at all."""
 
 _inline = njit(inline="always", error_model="numpy")
+
+_GAIN, _INTERIOR, _X, _Y, _GAIN_2, _X_2, _Y_2 = range(7)
+"""A row's scratch per pixel: the nearest segment's gain, whether its nearest point lies inside it (1.0)
+and the offset from that point to the centre; the nearest interior one's gain and offset."""
+_FIELDS = 8
 
 
 @_jit
@@ -63,18 +68,9 @@ def _within(value: float, low: int, high: int) -> float:
 
 
 @_inline
-def _edge(segments: np.ndarray, inverse: np.ndarray, s: int, cx: float, cy: float, radius: float,
-          shared: int) -> tuple[float, float, float]:
-    """``(u, nx, ny)``: how far ``(cx, cy)`` lies inside segment ``s``'s capsule and the unit normal of the
-    capsule's edge nearest to it (pointing out). ``u = -inf`` when that nearest point is the end ``shared``
-    (0 start, 1 end) of ``s``: a vertex whose disc another segment's capsule holds already."""
-    ax, ay = segments[s, 0], segments[s, 1]
-    ex, ey = segments[s, 2] - ax, segments[s, 3] - ay
-    dx, dy = cx - ax, cy - ay
-    t = min(1.0, max(0.0, (dx * ex + dy * ey) * inverse[s]))
-    if (shared == 0 and t == 0.0) or (shared == 1 and t == 1.0):
-        return -np.inf, 1.0, 0.0
-    px, py = dx - t * ex, dy - t * ey
+def _edge(px: float, py: float, radius: float) -> tuple[float, float, float]:
+    """``(u, nx, ny)``: how far a centre lying ``(px, py)`` from a segment's nearest point is inside its
+    capsule of half-width ``radius``, and the unit normal of the capsule's edge nearest to it (out)."""
     d2 = px * px + py * py
     if d2 == 0.0:
         return radius, 1.0, 0.0
@@ -84,46 +80,54 @@ def _edge(segments: np.ndarray, inverse: np.ndarray, s: int, cx: float, cy: floa
 
 
 @_inline
-def _shared_end(segments: np.ndarray, s: int, other: int) -> int:
-    """Which end of segment ``other`` is a vertex of segment ``s`` (0 its start, 1 its end, -1 neither)."""
-    if segments[other, 0] == segments[s, 2] and segments[other, 1] == segments[s, 3]:
-        return 0
-    if segments[other, 2] == segments[s, 0] and segments[other, 3] == segments[s, 1]:
-        return 1
-    return -1
+def _span(low: float, high: float, slope: float, limit: float, strict: bool) -> tuple[float, float]:
+    """``[low, high]`` cut to the ``t`` with ``slope · t ≤ limit`` (empty: ``high < low``); where the slope
+    is 0 the whole span stays or goes, ``strict`` dropping it when ``limit`` is exactly 0 too."""
+    bound = limit / slope
+    high = min(high, bound) if slope > 0.0 else high
+    low = max(low, bound) if slope < 0.0 else low
+    return low, (-np.inf if (slope == 0.0 and (limit < 0.0 or (strict and limit == 0.0))) else high)
 
 
 @_inline
-def _clip(source: np.ndarray, count: int, target: np.ndarray, u: float, nx: float, ny: float) -> int:
-    """Polygon ``source[:count]`` cut to the half-plane ``n · w ≤ u`` into ``target``; returns its length."""
-    kept = 0
-    for i in range(count):
-        j = i + 1 if i + 1 < count else 0
-        ax, ay, bx, by = source[i, 0], source[i, 1], source[j, 0], source[j, 1]
-        da, db = nx * ax + ny * ay - u, nx * bx + ny * by - u
-        if da <= 0.0:
-            target[kept, 0], target[kept, 1] = ax, ay
-            kept += 1
-        if (da < 0.0 < db) or (db < 0.0 < da):
-            f = da / (da - db)
-            target[kept, 0], target[kept, 1] = ax + f * (bx - ax), ay + f * (by - ay)
-            kept += 1
-    return kept
+def _side_inside(s1: float, l1: float, s2: float, l2: float, out1: bool, out2: bool) -> float:
+    """Length of a side of the unit pixel, ``t`` in ``[-½, ½]``, where ``s1 · t ≤ l1`` and ``s2 · t ≤ l2``; a side
+    lying on edge line k is left to that line where both face the same way (``out_k``: its ``u > 0``)."""
+    low, high = _span(-0.5, 0.5, s1, l1, out1)
+    low, high = _span(low, high, s2, l2, out2)
+    return max(0.0, high - low)
 
 
 @_inline
-def _both(u1: float, n1x: float, n1y: float, u2: float, n2x: float, n2y: float, buffers: np.ndarray) -> float:
-    """Area of the unit pixel (centred at 0) inside both ``n1 · w ≤ u1`` and ``n2 · w ≤ u2``."""
-    square = buffers[0]
-    square[0, 0], square[0, 1], square[1, 0], square[1, 1] = -0.5, -0.5, 0.5, -0.5
-    square[2, 0], square[2, 1], square[3, 0], square[3, 1] = 0.5, 0.5, -0.5, 0.5
-    count = _clip(square, 4, buffers[1], u1, n1x, n1y)
-    count = _clip(buffers[1], count, buffers[0], u2, n2x, n2y)
-    area = 0.0
-    for i in range(count):
-        j = i + 1 if i + 1 < count else 0
-        area += buffers[0, i, 0] * buffers[0, j, 1] - buffers[0, j, 0] * buffers[0, i, 1]
-    return 0.5 * abs(area)
+def _line_inside(u: float, nx: float, ny: float, slope: float, limit: float, strict: bool) -> float:
+    """Length of the line ``n · w = u`` inside the unit pixel (centred at 0) and ``slope · λ ≤ limit``,
+    ``λ`` running along ``(-ny, nx)`` from ``u n``."""
+    low, high = _span(-2.0, 2.0, -ny, 0.5 - u * nx, False)
+    low, high = _span(low, high, ny, 0.5 + u * nx, False)
+    low, high = _span(low, high, nx, 0.5 - u * ny, False)
+    low, high = _span(low, high, -nx, 0.5 + u * ny, False)
+    low, high = _span(low, high, slope, limit, strict)
+    return max(0.0, high - low)
+
+
+@_inline
+def _both(u1: float, n1x: float, n1y: float, u2: float, n2x: float, n2y: float) -> float:
+    """Area of the unit pixel (centred at 0) inside both ``n1 · w ≤ u1`` and ``n2 · w ≤ u2``.
+
+    A convex region's area is half the sum over its edges of each edge's length times its line's
+    distance from the origin: ¼ for the pixel's own sides, ``u`` for each edge line's part (Green's
+    theorem). Where two parts of the boundary lie on one line, facing the same way, one of them counts
+    (facing opposite ways, they cancel): a side on an edge line is that line's, and one line the first's."""
+    out1, out2 = u1 > 0.0, u2 > 0.0
+    sides = (_side_inside(n1x, u1 + 0.5 * n1y, n2x, u2 + 0.5 * n2y, out1, out2)
+             + _side_inside(n1x, u1 - 0.5 * n1y, n2x, u2 - 0.5 * n2y, out1, out2)
+             + _side_inside(n1y, u1 + 0.5 * n1x, n2y, u2 + 0.5 * n2x, out1, out2)
+             + _side_inside(n1y, u1 - 0.5 * n1x, n2y, u2 - 0.5 * n2x, out1, out2))
+    cross = n1x * n2y - n1y * n2x
+    cosine = n1x * n2x + n1y * n2y
+    first = _line_inside(u1, n1x, n1y, cross, u2 - u1 * cosine, False)
+    second = _line_inside(u2, n2x, n2y, -cross, u1 - u2 * cosine, cosine > 0.0)
+    return 0.25 * sides + 0.5 * (u1 * first + u2 * second)
 
 
 @_jit
@@ -195,9 +199,9 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
         lasts[s] = min(bottom - 1, int(math.floor(_within(max(ay, by) + reach - 0.5, top, bottom))))
     order = np.argsort(firsts, kind="mergesort")
     width = pixels.shape[1]
-    gain = np.zeros((width, 2))
-    vector = np.empty((width, 2))  # from the nearest segment's nearest point to the pixel's centre
-    owner = np.zeros((width, 2), np.int64)
+    # each pixel's nearest segment so far (gain, whether its nearest point lies inside it, the offset
+    # from that point to the centre) and the nearest one whose nearest point lies inside it (gain, offset)
+    state = np.zeros((width, _FIELDS))
     touched = np.empty(width, np.int64)
     active = np.empty(m, np.int64)
     n_active = 0
@@ -206,10 +210,10 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
         upcoming += 1  # reaches no row of the box (sorted first: their first row is the box's top)
     alpha = color[3] / 255.0
     solid = color[3] >= 255.0
-    corner = np.empty((2, 8, 2))  # the clipping's two polygon buffers
     # a centre within r - √½ of a segment: the pixel lies wholly inside its capsule
     inside = far - (radius - _HALF_DIAGONAL) ** 2 if radius > _HALF_DIAGONAL else np.inf
     total = 0
+    warm = 0
     y = firsts[order[upcoming]] if upcoming < m else bottom
     while y < bottom and (n_active > 0 or upcoming < m):
         while upcoming < m and firsts[order[upcoming]] <= y:
@@ -254,44 +258,38 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
                 g = far - (px * px + py * py)
                 if g <= 0.0:
                     continue
-                nearest = gain[x, 0]
+                interior = 0.0 < along < 1.0
+                nearest = state[x, _GAIN]
                 if g > nearest:
                     if nearest == 0.0:
                         touched[count] = x
                         count += 1
-                    elif owner[x, 0] & 1 and nearest > gain[x, 1]:
-                        gain[x, 1], owner[x, 1] = nearest, owner[x, 0] >> 1
-                    gain[x, 0], owner[x, 0] = g, 2 * s + (t == along)
-                    vector[x, 0], vector[x, 1] = px, py
-                elif g > gain[x, 1] and t == along:
-                    gain[x, 1], owner[x, 1] = g, s
+                    elif state[x, _INTERIOR] != 0.0 and nearest > state[x, _GAIN_2]:
+                        state[x, _GAIN_2] = nearest
+                        state[x, _X_2], state[x, _Y_2] = state[x, _X], state[x, _Y]
+                    state[x, _GAIN], state[x, _INTERIOR] = g, 1.0 if interior else 0.0
+                    state[x, _X], state[x, _Y] = px, py
+                elif interior and g > state[x, _GAIN_2]:
+                    state[x, _GAIN_2], state[x, _X_2], state[x, _Y_2] = g, px, py
         total += count
+        for i in range(count):  # the row's pixels read at once, their cache misses overlapping
+            warm += pixels[y, touched[i], 3]
         for i in range(count):
             x = touched[i]
-            nearest, second = gain[x, 0], gain[x, 1]
-            gain[x, 0] = gain[x, 1] = 0.0
-            s = owner[x, 0] >> 1
-            cx = x + 0.5
+            nearest, second = state[x, _GAIN], state[x, _GAIN_2]
+            state[x, _GAIN] = state[x, _GAIN_2] = 0.0
             if nearest >= inside:
                 c = 1.0
             else:
-                px, py = vector[x, 0], vector[x, 1]
-                d2 = px * px + py * py
-                if d2 == 0.0:
-                    u, nx, ny = radius, 1.0, 0.0
-                else:
-                    d = math.sqrt(d2)
-                    inv = 1.0 / d
-                    u, nx, ny = radius - d, px * inv, py * inv
+                u, nx, ny = _edge(state[x, _X], state[x, _Y], radius)
                 c = coverage(u, nx, ny)
             if c < 1.0 and second > 0.0:  # a second edge within r + √½ of the centre
-                other = owner[x, 1]
-                u2, mx, my = _edge(segments, inverse, other, cx, yc, radius, _shared_end(segments, s, other))
+                u2, mx, my = _edge(state[x, _X_2], state[x, _Y_2], radius)
                 c2 = coverage(u2, mx, my)
                 if c2 >= 1.0 or c == 0.0:
                     c = max(c, c2)
                 elif c2 > 0.0:
-                    c = min(1.0, c + c2 - _both(u, nx, ny, u2, mx, my, corner))
+                    c = min(1.0, c + c2 - _both(u, nx, ny, u2, mx, my))
             if c >= 1.0 and solid:
                 for ch in range(4):
                     pixels[y, x, ch] = np.uint8(color[ch])
@@ -300,4 +298,4 @@ def stroke_segments(pixels: np.ndarray, segments: np.ndarray, radius: float, col
                 for ch in range(4):
                     pixels[y, x, ch] = min(255, int(color[ch] * c + pixels[y, x, ch] * keep + 0.5))
         y += 1
-    return total
+    return total + (warm < 0)  # warm is never negative: its loop is kept, not folded away

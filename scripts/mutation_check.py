@@ -214,6 +214,8 @@ MUTANTS = [
            "out1, out2 = u1 > 0.0, u2 > 0.0", "out1, out2 = False, False", STROKE),
     Mutant("round stroke: the nearest interior offset not kept as the second", "tweenrender/raster/_stroke_kernel.py",
            "state[x, _X_2], state[x, _Y_2] = state[x, _X], state[x, _Y]", "pass", STROKE),
+    Mutant("kernels: numba's BLAS probe imports scipy.linalg again", "tweenrender/core/jit.py",
+           "\n_load_array_maths()\n", "\n", ("tests/core/test_jit.py",)),
     Mutant("round stroke: reach of half a pixel, not half a diagonal", "tweenrender/raster/_stroke_kernel.py",
            "_HALF_DIAGONAL = 0.7072", "_HALF_DIAGONAL = 0.5", STROKE),
     Mutant("round stroke: the stroke's alpha ignored where it blends", "tweenrender/raster/_stroke_kernel.py",

@@ -28,7 +28,7 @@ from numba import njit
 
 from ..core.jit import cached_jit as _jit
 
-__all__ = ["coverage", "polyline_segments", "stroke_segments"]
+__all__ = ["coverage", "polyline_segments", "stroke_polylines", "stroke_segments"]
 
 _HALF_DIAGONAL = 0.7072
 """A pixel whose centre lies farther than ``r + √½`` from every segment is not covered at all."""
@@ -135,7 +135,7 @@ def polyline_segments(points: np.ndarray, counts: np.ndarray, closed: np.ndarray
                       dy: float) -> np.ndarray:
     """The segments ``(M, 4)`` (``ax, ay, bx, by``) of contours laid end to end in ``points (N, 2)``,
     ``counts[k]`` vertices each (contours of fewer than 2 are skipped), closed or open, each vertex taken to
-    ``scale · p + (dx, dy)``."""
+    ``scale · p + (dx, dy)``; a segment that this takes past float range is left out (it is off any canvas)."""
     total = 0
     for k in range(counts.shape[0]):
         if counts[k] >= 2:
@@ -152,9 +152,21 @@ def polyline_segments(points: np.ndarray, counts: np.ndarray, closed: np.ndarray
                 segments[row, 1] = scale * points[start + i, 1] + dy
                 segments[row, 2] = scale * points[j, 0] + dx
                 segments[row, 3] = scale * points[j, 1] + dy
-                row += 1
+                if (math.isfinite(segments[row, 0]) and math.isfinite(segments[row, 1])
+                        and math.isfinite(segments[row, 2]) and math.isfinite(segments[row, 3])):
+                    row += 1
         start += n
-    return segments
+    return segments[:row]
+
+
+@_jit
+def stroke_polylines(pixels: np.ndarray, points: np.ndarray, counts: np.ndarray, closed: np.ndarray, scale: float,
+                     dx: float, dy: float, radius: float, color: np.ndarray, left: int, top: int, right: int,
+                     bottom: int) -> int:
+    """``stroke_segments`` of ``polyline_segments(points, counts, closed, scale, dx, dy)``, in one call (a
+    detailed scene strokes each of its shapes apart, and each call from Python costs some microseconds)."""
+    segments = polyline_segments(points, counts, closed, scale, dx, dy)
+    return stroke_segments(pixels, segments, radius, color, left, top, right, bottom)
 
 
 @_jit

@@ -90,13 +90,12 @@ def stroke_contours(pixels: NDArray[np.uint8], contours: Sequence[NDArray[np.flo
         return 0
     kernel = _kernel()
     points = contours[0] if len(contours) == 1 else np.concatenate(contours)
-    segments = kernel.polyline_segments(np.ascontiguousarray(points, dtype=np.float64),
-                                        np.array([len(c) for c in contours], dtype=np.int64),
-                                        np.array(closed, dtype=np.bool_), float(scale), float(offset[0]),
-                                        float(offset[1]))
-    segments = segments[np.isfinite(segments).all(axis=1)]  # a scale may overflow: such segments are off-canvas
     height, wide = pixels.shape[:2]
     left, top, right, bottom = clip if clip is not None else (0, 0, wide, height)
     left, top, right, bottom = max(0, left), max(0, top), min(wide, right), min(height, bottom)
-    return int(kernel.stroke_segments(pixels, segments, width / 2, np.asarray(premultiplied, dtype=np.float64),
-                                      left, top, right, bottom))
+    # segments that scale and offset take past float range are left out by the kernel: they are off-canvas
+    return int(kernel.stroke_polylines(pixels, np.ascontiguousarray(points, dtype=np.float64),
+                                       np.array([len(c) for c in contours], dtype=np.int64),
+                                       np.array(closed, dtype=np.bool_), float(scale), float(offset[0]),
+                                       float(offset[1]), width / 2, np.asarray(premultiplied, dtype=np.float64),
+                                       left, top, right, bottom))

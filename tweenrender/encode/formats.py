@@ -26,6 +26,8 @@ Join = Literal["copy", "lossless", "frames"]
 """How chunks of a clip become one output: video parts joined by stream copy (each starts on a key
 frame), lossless parts encoded once at the join (a GIF's palette must see every frame), or the
 frames' PNG files written in order."""
+Readback = Literal["boxes", "ebml", "gif", "ffmpeg"]
+"""Where a written file's frame count and size are read back from (see :class:`Format`)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -38,9 +40,10 @@ class Format:
     takes); ``even`` whether both sides must be even; ``join`` how chunks are joined; ``chunked`` whether
     several processes render it as chunks, each with an encoder of its own; ``container`` the
     container's options that a join by stream copy repeats; ``yuv420`` whether opaque frames go to
-    ffmpeg as yuv420p planes made here; ``boxes`` whether the file is an ISO base media file (MP4,
-    QuickTime), whose frame count and size are read back from its own boxes (:mod:`.media_boxes`) rather
-    than by running ffmpeg again; ``vector`` whether the file holds the animated paths rather than
+    ffmpeg as yuv420p planes made here; ``readback`` where a written file's frame count and size are
+    read back from to check it: its own ISO base media boxes (``"boxes"``, MP4 and QuickTime:
+    :mod:`.media_boxes`), Matroska elements (``"ebml"``, WebM: :mod:`.webm_elements`) or GIF blocks
+    (``"gif"``: :mod:`.gif_blocks`), or one more ffmpeg run (``"ffmpeg"``); ``vector`` whether the file holds the animated paths rather than
     pictures (written by :mod:`.lottie` or :mod:`.animated_svg`, a player draws them: any size, any
     background). What encoding a frame costs is measured in the run (:mod:`.encoder_cost`; PNG frames,
     compressed where they are drawn, by timing that).
@@ -57,7 +60,7 @@ class Format:
     chunked: bool = False
     container: tuple[str, ...] = ()
     yuv420: bool = False
-    boxes: bool = False
+    readback: Readback = "ffmpeg"
     listed: bool = True  # False: an internal format (a GIF's lossless parts), never asked for by name
     vector: bool = False  # the paths themselves, keyframed (Lottie, animated SVG): no frames are drawn
 
@@ -94,20 +97,21 @@ TABLE: dict[str, Format] = {f.name: f for f in (
            ("-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p",
             "-movflags", "+faststart", "-f", "mp4"),
            max_side=16384, even=True, join="copy", chunked=True, container=("-movflags", "+faststart"),
-           yuv420=True, boxes=True),
+           yuv420=True, readback="boxes"),
     Format("webm", "VP9", ".webm",
            ("-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-pix_fmt", "yuv420p",
             "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"),
-           alpha=(("yuv420p", "yuva420p"),), max_side=65536, join="copy", chunked=True, yuv420=True),
+           alpha=(("yuv420p", "yuva420p"),), max_side=65536, join="copy", chunked=True, yuv420=True,
+           readback="ebml"),
     Format("mov", "ProRes 4444", ".mov",
            ("-c:v", "prores_ks", "-profile:v", "4444", "-vendor", "apl0", "-pix_fmt", "yuv444p10le", "-f", "mov"),
-           alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536, boxes=True),
+           alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536, readback="boxes"),
     Format("gif", "GIF", ".gif",
            ("-filter_complex", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=sierra2_4a",
             "-loop", "0", "-f", "gif"),
            alpha=(("palettegen=stats_mode=diff", "palettegen=stats_mode=diff:reserve_transparent=1"),
                   ("paletteuse=dither=sierra2_4a", "paletteuse=dither=sierra2_4a:alpha_threshold=128")),
-           max_side=65535, join="lossless"),
+           max_side=65535, join="lossless", readback="gif"),
     Format("png", "PNG", "", alpha=(), join="frames"),  # any size the canvas takes
     Format("lottie", "Lottie", ".json", alpha=(), vector=True),
     Format("svg", "animated SVG", ".svg", alpha=(), vector=True),

@@ -328,13 +328,18 @@ def _grow_pipe(pipe: object) -> None:
 
 
 def read_back(path: Path, fmt: str) -> tuple[int, tuple[int, int]]:
-    """Frame count and ``(width, height)`` of a written ``fmt`` video: from its own boxes where it is an ISO
-    base media file (:attr:`.formats.Format.boxes`), else by :func:`probe_video`."""
-    if TABLE[fmt].boxes:
+    """Frame count and ``(width, height)`` of a written ``fmt`` video, read from the file's own structure where
+    :attr:`.formats.Format.readback` names one, else by :func:`probe_video`."""
+    how = TABLE[fmt].readback
+    if how == "boxes":
         from .media_boxes import video_track
-
-        return video_track(path)
-    return probe_video(path)
+    elif how == "ebml":
+        from .webm_elements import video_track
+    elif how == "gif":
+        from .gif_blocks import video_track
+    else:
+        return probe_video(path)
+    return video_track(path)
 
 
 def probe_video(path: Path) -> tuple[int, tuple[int, int]]:

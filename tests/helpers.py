@@ -45,6 +45,20 @@ def decode(path: Path) -> tuple[dict, list[np.ndarray]]:
     return meta, frames
 
 
+def write_clip(target: Path, fmt: str, width: int, height: int, frames: int, alpha: bool = False,
+               held: bool = False) -> Path:
+    """A short clip of flat frames written by the package's own sink: each a shade of its own (or all the
+    same when ``held``), translucent when ``alpha``."""
+    from tweenrender.encode import open_sink
+
+    sink = open_sink(fmt, target, width, height, 24.0, frames, alpha=alpha)
+    for shade in range(frames):
+        value = 0 if held else 11 * shade % 256
+        sink.write(np.full((height, width, 4), (value, 90, 200, 120 if alpha else 255), dtype=np.uint8))
+    sink.close()
+    return target
+
+
 def video_stream_line(path: Path, *decoder: str) -> str:
     """ffmpeg's line about the video stream of ``path`` (codec, pixel format, colour tags, size), read with
     ``decoder`` options if any (e.g. ``-c:v libvpx-vp9``, which sees VP9's alpha)."""

@@ -1,29 +1,19 @@
 """A written GIF is read back from its own blocks: the frame count and size they give are what Pillow's
-decoder and ffmpeg's own reading see (transparency, held frames, colour tables and extensions included), and a
-file cut short or not a GIF is refused, so the sink keeps the earlier output."""
+decoder and ffmpeg's own reading see (transparency, held frames, colour tables and extensions included),
+and a file cut short or not a GIF is refused (a sink then keeps the earlier output: test_read_back.py)."""
 
 from __future__ import annotations
 
 import struct
 from pathlib import Path
 
-import numpy as np
 import pytest
 from PIL import Image
 
-from tweenrender.encode import open_sink
 from tweenrender.encode.gif_blocks import video_track
 from tweenrender.encode.sinks import probe_video
-from tweenrender.errors import EncodeError
 
-
-def _write(target: Path, width: int, height: int, frames: int, alpha: bool = False, held: bool = False) -> Path:
-    sink = open_sink("gif", target, width, height, 24.0, frames, alpha=alpha)
-    for shade in range(frames):
-        value = 0 if held else 11 * shade % 256
-        sink.write(np.full((height, width, 4), (value, 90, 200, 0 if alpha and shade % 2 else 255), dtype=np.uint8))
-    sink.close()
-    return target
+from tests.helpers import write_clip
 
 
 @pytest.mark.parametrize(("width", "height", "frames", "alpha", "held"), [
@@ -35,7 +25,7 @@ def _write(target: Path, width: int, height: int, frames: int, alpha: bool = Fal
 ])
 def test_the_blocks_give_what_ffmpeg_and_a_decoder_read(tmp_path: Path, width: int, height: int, frames: int,
                                                         alpha: bool, held: bool) -> None:
-    target = _write(tmp_path / "clip.gif", width, height, frames, alpha, held)
+    target = write_clip(tmp_path / "clip.gif", "gif", width, height, frames, alpha, held)
     assert video_track(target) == probe_video(target) == (frames, (width, height))
     with Image.open(target) as picture:  # a decoder of its own (ffmpeg's repeats frames to a constant rate)
         assert (picture.n_frames, picture.size) == (frames, (width, height))
@@ -86,12 +76,3 @@ def test_a_damaged_file_is_refused(tmp_path: Path, damage: str) -> None:
     with pytest.raises(ValueError):
         video_track(path)
 
-
-def test_a_sink_whose_file_reads_back_wrong_keeps_the_earlier_output(tmp_path: Path, monkeypatch) -> None:
-    target = tmp_path / "movie.gif"
-    target.write_bytes(b"old movie")
-    monkeypatch.setattr("tweenrender.encode.gif_blocks.video_track", lambda path: (4, (64, 48)))
-    with pytest.raises(EncodeError, match="has 4 frames"):
-        _write(target, 64, 48, 5)
-    assert target.read_bytes() == b"old movie"
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["movie.gif"]

@@ -1,30 +1,18 @@
 """A written MP4 or MOV is read back from its own boxes: the frame count and size they give are what a
 decoder and ffmpeg's own reading see, and a file cut short, without its index or not a video at all
-is refused, so the sink keeps the earlier output."""
+is refused (a sink then keeps the earlier output: test_read_back.py)."""
 
 from __future__ import annotations
 
 import struct
 from pathlib import Path
 
-import numpy as np
 import pytest
 
-from tweenrender.encode import open_sink
 from tweenrender.encode.media_boxes import video_track
 from tweenrender.encode.sinks import probe_video
-from tweenrender.errors import EncodeError
 
-from tests.helpers import decode
-
-
-def _write(target: Path, fmt: str, width: int, height: int, frames: int, alpha: bool = False) -> Path:
-    sink = open_sink(fmt, target, width, height, 24.0, frames, alpha=alpha)
-    for shade in range(frames):
-        frame = np.full((height, width, 4), (11 * shade % 256, 90, 200, 120 if alpha else 255), dtype=np.uint8)
-        sink.write(frame)
-    sink.close()
-    return target
+from tests.helpers import decode, write_clip
 
 
 @pytest.mark.parametrize(("fmt", "width", "height", "frames", "alpha"), [
@@ -36,7 +24,7 @@ def _write(target: Path, fmt: str, width: int, height: int, frames: int, alpha: 
 ])
 def test_the_boxes_give_what_ffmpeg_and_a_decoder_read(tmp_path: Path, fmt: str, width: int, height: int,
                                                         frames: int, alpha: bool) -> None:
-    target = _write(tmp_path / f"clip.{fmt}", fmt, width, height, frames, alpha)
+    target = write_clip(tmp_path / f"clip.{fmt}", fmt, width, height, frames, alpha)
     assert video_track(target) == probe_video(target) == (frames, (width, height))
     _, decoded = decode(target)
     assert len(decoded) == frames and decoded[0].shape[:2] == (height, width)
@@ -92,15 +80,3 @@ def test_a_damaged_file_is_refused(tmp_path: Path, damage: str) -> None:
     with pytest.raises(ValueError):
         video_track(path)
 
-
-def test_a_sink_whose_file_reads_back_wrong_keeps_the_earlier_output(tmp_path: Path, monkeypatch) -> None:
-    target = tmp_path / "movie.mp4"
-    target.write_bytes(b"old movie")
-    monkeypatch.setattr("tweenrender.encode.media_boxes._sample_count", lambda stsz: 4)
-    sink = open_sink("mp4", target, 64, 48, 24.0, 5)
-    for shade in range(5):
-        sink.write(np.full((48, 64, 4), (40 * shade, 0, 0, 255), dtype=np.uint8))
-    with pytest.raises(EncodeError, match="has 4 frames"):
-        sink.close()
-    assert target.read_bytes() == b"old movie"
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["movie.mp4"]

@@ -43,10 +43,11 @@ class Format:
     ffmpeg as yuv420p planes made here; ``readback`` where a written file's frame count and size are
     read back from to check it: its own ISO base media boxes (``"boxes"``, MP4 and QuickTime:
     :mod:`.media_boxes`), Matroska elements (``"ebml"``, WebM: :mod:`.webm_elements`) or GIF blocks
-    (``"gif"``: :mod:`.gif_blocks`), or one more ffmpeg run (``"ffmpeg"``); ``vector`` whether the file holds the animated paths rather than
-    pictures (written by :mod:`.lottie` or :mod:`.animated_svg`, a player draws them: any size, any
-    background). What encoding a frame costs is measured in the run (:mod:`.encoder_cost`; PNG frames,
-    compressed where they are drawn, by timing that).
+    (``"gif"``: :mod:`.gif_blocks`), or one more ffmpeg run (``"ffmpeg"``); ``vector`` whether the
+    file holds the animated paths rather than pictures (written by :mod:`.lottie` or
+    :mod:`.animated_svg`, a player draws them: any size, any background). What encoding a frame costs
+    is measured in the run (:mod:`.encoder_cost`; PNG frames, compressed where they are drawn, by
+    timing that).
     """
 
     name: str

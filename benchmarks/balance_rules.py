@@ -22,9 +22,9 @@ sys.path.insert(0, str(ROOT))
 
 from tweenrender.core.crossings import self_crossings  # noqa: E402
 from tweenrender.core.measures import SWEEP, edge_error  # noqa: E402
-from tweenrender.core.methods import interpolate  # noqa: E402
-from tweenrender.core.timeline import build_track  # noqa: E402
-from tweenrender.core.methods import METHODS  # noqa: E402
+from tweenrender.core.methods.registry import interpolate  # noqa: E402
+from tweenrender.core.timing.timeline import build_track  # noqa: E402
+from tweenrender.core.methods.registry import METHODS  # noqa: E402
 from tweenrender.model import BALANCES  # noqa: E402
 from tweenrender.scenefile import load_scene  # noqa: E402
 

@@ -55,7 +55,7 @@ FIRST_CALL_CHILD = STAR_SOURCE + """
 import json, time
 a, b = star({n}, 1), star({n}, 2)
 start = time.perf_counter()
-from tweenrender.core.correspond import correspond
+from tweenrender.core.correspondence.correspond import correspond
 from tweenrender.model import Matching
 imported = time.perf_counter()
 correspond(a, b, Matching(cost={cost!r}))
@@ -63,7 +63,7 @@ print(json.dumps({{"import": imported - start, "first_call": time.perf_counter()
 """
 
 WHOLE_COMMAND = STAR_SOURCE + """
-from tweenrender.core.correspond import correspond
+from tweenrender.core.correspondence.correspond import correspond
 found = correspond(star(2000, 1), star(2000, 2))
 print(found.balanced, found.work)
 """
@@ -105,7 +105,7 @@ def best_time(call: Callable[[], object], repeats: int = REPEATS) -> float:
 
 
 def distance_rows(naive_2000: bool) -> None:
-    from tweenrender.core.correspond import correspond, naive_correspond
+    from tweenrender.core.correspondence.correspond import correspond, naive_correspond
 
     print("cost 'distance', random star-shaped polygons, m = n")
     print(f"{'size':>10} {'1st call':>9} {'1st call':>9} {'warm':>8} {'naive':>9} {'speed-up':>9}")
@@ -172,9 +172,9 @@ def cpu_time(call: Callable[[], object]) -> tuple[float, object]:
 
 
 def sg_rows(sizes: list[int], every_up_to: int) -> None:
-    from tweenrender.core import _cyclic_dtw
-    from tweenrender.core._sg_search import sg_search
-    from tweenrender.core.correspond import _aligned, _as_polygon, _winds_opposite
+    from tweenrender.core.correspondence import _cyclic_dtw
+    from tweenrender.core.correspondence._sg_search import sg_search
+    from tweenrender.core.correspondence.correspond import _aligned, _as_polygon, _winds_opposite
     from tweenrender.model import Matching
 
     mt = Matching(cost="sg")
@@ -211,7 +211,7 @@ def sg_rows(sizes: list[int], every_up_to: int) -> None:
 
 
 def whole_command_rows() -> None:
-    print("\nwhole command, 2000x2000: python -c 'from tweenrender.core.correspond import correspond; ...'")
+    print("\nwhole command, 2000x2000: python -c 'from tweenrender.core.correspondence.correspond import correspond; ...'")
     walls = [run_child(WHOLE_COMMAND, None)[0] for _ in range(REPEATS)]
     print(f"  cached kernels: {min(walls):.2f} s wall (best of {REPEATS}; start-up, imports, keys, solve)")
     with tempfile.TemporaryDirectory() as empty_cache:
@@ -231,7 +231,7 @@ def main() -> None:
                         help="largest sg keys whose every-start search is timed, not estimated")
     args = parser.parse_args()
     sys.path.insert(0, str(ROOT))
-    from tweenrender.core.correspond import correspond, naive_correspond
+    from tweenrender.core.correspondence.correspond import correspond, naive_correspond
     from tweenrender.model import Matching
 
     for cost in ("distance", "sg"):  # compile or load the kernels before any timing

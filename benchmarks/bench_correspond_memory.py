@@ -30,7 +30,7 @@ def star(n, seed):
     angles = np.sort(rng.uniform(0, 2 * np.pi, n))
     radii = rng.uniform(0.5, 1.5, n)
     return np.column_stack([radii * np.cos(angles), radii * np.sin(angles)])
-from tweenrender.core import correspond as c, _cyclic_dtw as k, _lean_dtw
+from tweenrender.core.correspondence import correspond as c, _cyclic_dtw as k, _lean_dtw
 from tweenrender.model import Matching
 c.correspond(star(40, 1), star(300, 2))  # loads numba and the cached kernels
 k.maes_search(k.distance_matrix(star(30, 1), star(40, 2)))

@@ -57,7 +57,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=7)
     args = parser.parse_args()
     import tweenrender as tr
-    from tweenrender.core.timeline import build_track
+    from tweenrender.core.timing.timeline import build_track
 
     rng = np.random.default_rng(1)
     with tempfile.TemporaryDirectory() as folder:

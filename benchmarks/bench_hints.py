@@ -22,8 +22,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from tweenrender.core.correspond import correspond  # noqa: E402
-from tweenrender.core.hint_search import correspond_hinted  # noqa: E402
+from tweenrender.core.correspondence.correspond import correspond  # noqa: E402
+from tweenrender.core.correspondence.hint_search import correspond_hinted  # noqa: E402
 from tweenrender.model import Matching  # noqa: E402
 
 

@@ -26,8 +26,8 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from tweenrender.core import arap as arap_module  # noqa: E402
-from tweenrender.core.methods import interpolate  # noqa: E402
-from tweenrender.core.methods import METHODS  # noqa: E402
+from tweenrender.core.methods.registry import interpolate  # noqa: E402
+from tweenrender.core.methods.registry import METHODS  # noqa: E402
 
 BLOCK = 32
 REPEATS = 5

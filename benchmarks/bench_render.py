@@ -131,7 +131,7 @@ def prerender_raw(scene: Path, planes_file: Path, raw: Path | None = None) -> tu
     import numpy as np
 
     from tweenrender.encode.yuv420 import Yuv420
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.pipeline.workers import frame_stream
     from tweenrender.scenefile import load_scene
 
@@ -196,7 +196,7 @@ def against_encoder(folder: Path, name: str, text: str, rounds: int) -> None:
         loads.append(os.getloadavg()[0])
     raw.unlink()
     planes.unlink()
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.pipeline.workers import default_workers, measure_cost
     from tweenrender.scenefile import load_scene
 
@@ -236,7 +236,7 @@ def stroke_costs(folder: Path) -> None:
     import numpy as np
     import skia
 
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.plan.job import Frames, RenderJob
     from tweenrender.raster.round_stroke import stroke_contours
     from tweenrender.raster.surface import polygon_path
     from tweenrender.scenefile import load_scene
@@ -325,7 +325,7 @@ def stroke_costs(folder: Path) -> None:
 def conversion_ms(scene: Path, size: tuple[int, int], count: int = 20) -> float:
     """Milliseconds a ``size`` frame of ``scene`` takes to become yuv420p planes in this process."""
     from tweenrender.encode.yuv420 import Yuv420
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.plan.job import Frames, RenderJob
     from tweenrender.scenefile import load_scene
 
     picture = Frames(RenderJob(load_scene(scene), size=size), "bgra")(12)
@@ -343,7 +343,7 @@ def decoded_errors(scene: Path, videos: list[Path], frames: int) -> list[tuple[f
     import imageio_ffmpeg
     import numpy as np
 
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.plan.job import Frames, RenderJob
     from tweenrender.scenefile import load_scene
 
     draw = Frames(RenderJob(load_scene(scene)))
@@ -371,7 +371,7 @@ def planes_against_ffmpeg(scene: Path, size: tuple[int, int] = (1920, 1080)) -> 
 
     from tweenrender.encode.sinks import ffmpeg_exe
     from tweenrender.encode.yuv420 import Yuv420
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.plan.job import Frames, RenderJob
     from tweenrender.scenefile import load_scene
 
     width, height = size
@@ -467,7 +467,7 @@ def memory(folder: Path, rounds: int) -> None:
 def prerender_yuv420(scene: Path, raw: Path, size: tuple[int, int], count: int) -> None:
     """The first ``count`` frames of ``scene`` at ``size``, as the renderer now sends them (yuv420p), in ``raw``."""
     from tweenrender.encode.yuv420 import Yuv420
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.pipeline.workers import frame_stream
     from tweenrender.scenefile import load_scene
 

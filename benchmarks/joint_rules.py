@@ -31,7 +31,7 @@ sys.path.insert(0, str(ROOT))
 from tweenrender.core import joints, paths  # noqa: E402
 from tweenrender.core.geometry import rotate  # noqa: E402
 from tweenrender.core.measures import SWEEP, edge_error  # noqa: E402
-from tweenrender.core.timeline import build_track  # noqa: E402
+from tweenrender.core.timing.timeline import build_track  # noqa: E402
 from tweenrender.scenefile import load_scene  # noqa: E402
 
 

@@ -41,8 +41,8 @@ sys.path.insert(0, str(ROOT))
 import tweenrender as tr  # noqa: E402
 from tweenrender.core import injective as injective_module  # noqa: E402
 from tweenrender.core.tangles import parents, tangles  # noqa: E402
-from tweenrender.core.timeline import build_track, pair_paths  # noqa: E402
-from tweenrender.core.methods import METHODS  # noqa: E402
+from tweenrender.core.timing.timeline import build_track, pair_paths  # noqa: E402
+from tweenrender.core.methods.registry import METHODS  # noqa: E402
 
 T = np.round(np.arange(1, 20) * 0.05, 2)
 AREA_T = (0.25, 0.5, 0.75)

@@ -23,13 +23,13 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from tweenrender.core.arap import arap  # noqa: E402
+from tweenrender.core.methods.arap import arap  # noqa: E402
 from tweenrender.core.crossings import self_crossing, self_crossings  # noqa: E402
 from tweenrender.core.geometry import signed_area  # noqa: E402
-from tweenrender.core.intrinsic import closure_tweak  # noqa: E402
+from tweenrender.core.methods.intrinsic import closure_tweak  # noqa: E402
 from tweenrender.core.measures import SWEEP, edge_error, perimeter_ratio  # noqa: E402
-from tweenrender.core.methods import interpolate  # noqa: E402
-from tweenrender.core.timeline import build_track  # noqa: E402
+from tweenrender.core.methods.registry import interpolate  # noqa: E402
+from tweenrender.core.timing.timeline import build_track  # noqa: E402
 from tweenrender.scenefile import load_scene  # noqa: E402
 
 AT = np.array([0.25, 0.5, 0.75])

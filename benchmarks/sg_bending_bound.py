@@ -27,8 +27,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from bench_correspond import sg_pairs  # noqa: E402
 
-from tweenrender.core._cyclic_dtw import STEP_A, STEP_B, sg_tables  # noqa: E402
-from tweenrender.core._sg_search import sg_search  # noqa: E402
+from tweenrender.core.correspondence._cyclic_dtw import STEP_A, STEP_B, sg_tables  # noqa: E402
+from tweenrender.core.correspondence._sg_search import sg_search  # noqa: E402
 from tweenrender.model import Matching  # noqa: E402
 
 

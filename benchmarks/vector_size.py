@@ -28,10 +28,10 @@ import tweenrender as tr  # noqa: E402
 from tweenrender.encode.animated_svg import svg_document  # noqa: E402
 from tweenrender.encode.lottie import lottie_document  # noqa: E402
 from tweenrender.encode.vector_data import STRAIGHT, VectorClip, VectorRun  # noqa: E402
-from tweenrender.core.methods import METHODS  # noqa: E402
+from tweenrender.core.methods.registry import METHODS  # noqa: E402
 from tweenrender.pipeline.library import render_job  # noqa: E402
-from tweenrender.pipeline.options import RenderOptions  # noqa: E402
-from tweenrender.pipeline.vector_export import vector_clip  # noqa: E402
+from tweenrender.plan.options import RenderOptions  # noqa: E402
+from tweenrender.vector.export import vector_clip  # noqa: E402
 from tests.vector_players import bezier_timing  # noqa: E402
 
 ICONS = ROOT / "tests" / "data" / "icons"

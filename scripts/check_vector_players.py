@@ -19,7 +19,7 @@ sys.path.insert(0, str(ROOT))
 
 import tweenrender as tr  # noqa: E402
 from tests.vector_players import measures, over, rlottie_frames  # noqa: E402
-from tweenrender.pipeline.job import total_frames  # noqa: E402
+from tweenrender.plan.job import total_frames  # noqa: E402
 
 _BATCH = 16
 

@@ -20,7 +20,7 @@ import imageio.v3 as iio
 import numpy as np
 
 from tweenrender.reports.match_report import correspond_dict, matching_words
-from tweenrender.pipeline.job import RenderJob
+from tweenrender.plan.job import RenderJob
 from tweenrender.pipeline.stream import render
 from tweenrender.reports.match_report import report_picture
 from tweenrender.raster.surface import Raster

@@ -18,7 +18,7 @@ sys.path.insert(0, str(ROOT))
 
 import tweenrender as tr  # noqa: E402
 from tweenrender.core.tangles import parents, proper_crossings, tangles  # noqa: E402
-from tweenrender.core.timeline import build_track, pair_paths  # noqa: E402
+from tweenrender.core.timing.timeline import build_track, pair_paths  # noqa: E402
 
 GALLERY = ROOT / "docs" / "gallery"
 ICONS = ROOT / "tests" / "data" / "icons"

@@ -173,7 +173,7 @@ LONG_HD = LONG.replace("size = [640, 480]", "size = [1920, 1080]")
 
 def small_job(folder: Path, **changes):  # type: ignore[no-untyped-def]
     """A :class:`RenderJob` of :data:`SMALL`, with ``changes`` to its fields."""
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.scenefile import load_scene
 
     return RenderJob(load_scene(write_scene(folder, SMALL)), **changes)

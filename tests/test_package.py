@@ -21,14 +21,18 @@ PUBLIC = {"load_scene": "function", "frame": "function", "frames": "function", "
 ALLOWED = {
     "scenefile": {"core"},
     "core": set(),
+    "plan": {"scenefile", "core", "encode"},
     "raster": {"core"},
+    "vector": {"core", "plan", "encode"},
     "encode": set(),
-    "pipeline": {"scenefile", "core", "raster", "encode"},
-    "reports": {"scenefile", "core", "raster", "encode", "pipeline"},
-    "cli": {"scenefile", "core", "raster", "encode", "pipeline", "reports"},
+    "pipeline": {"scenefile", "core", "plan", "raster", "vector", "encode"},
+    "reports": {"scenefile", "core", "plan", "raster", "vector", "encode", "pipeline"},
+    "api": {"scenefile", "core", "plan", "raster", "vector", "encode", "pipeline", "reports"},
+    "preview": {"api"},
+    "cli": {"api"},
 }
 THIRD_PARTY_HOME = {"skia": {"raster"}, "imageio_ffmpeg": {"encode"}, "imageio": {"encode"},
-                    "svgelements": {"scenefile"}, "argparse": {"cli"}, "watchfiles": {"pipeline"}}
+                    "svgelements": {"scenefile"}, "argparse": {"cli"}, "watchfiles": {"preview"}}
 
 
 def modules() -> list[str]:
@@ -149,8 +153,8 @@ def test_heavy_libraries_are_imported_in_their_own_stage_only(library: str) -> N
 
 
 def test_the_core_raises_tweenrender_errors() -> None:
-    from tweenrender.core.joints import JointError
-    from tweenrender.core.methods import interpolate
+    from tweenrender.core.methods.joints import JointError
+    from tweenrender.core.methods.registry import interpolate
     from tweenrender.errors import GeometryError
 
     import numpy as np

@@ -103,7 +103,7 @@ def check_lottie_players(scene: object, folder: Path, method: str | None = None,
     """Write ``scene`` as Lottie and check what rlottie (every frame, or :func:`sample_frames`) and ThorVG
     (the sample) draw of it against the project's frames."""
     import tweenrender as tr
-    from tweenrender.pipeline.job import total_frames
+    from tweenrender.plan.job import total_frames
 
     target = tr.write(scene, folder / "clip.json", method=method)
     count = total_frames(scene)
@@ -118,7 +118,7 @@ def check_chromium(cases: list[tuple[str, object, str | None]], folder: Path) ->
     """Write each ``(name, scene, method)`` as an animated SVG and check Chromium's pictures at t = 0, ¼, ½, ¾, 1
     of the clip (at frame times) against the project's frames, one browser for all."""
     import tweenrender as tr
-    from tweenrender.pipeline.job import total_frames
+    from tweenrender.plan.job import total_frames
 
     files, picks = [], []
     for name, scene, method in cases:

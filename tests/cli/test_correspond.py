@@ -212,7 +212,7 @@ def _blank(frame: np.ndarray) -> bool:
 def test_fig3_scenes_render_with_every_method(cli, tmp_path: Path, stem: str) -> None:
     import imageio.v3 as iio
 
-    from tweenrender.core.timeline import build_track
+    from tweenrender.core.timing.timeline import build_track
     from tweenrender.scenefile import load_scene
 
     scene = load_scene(SCENES / f"{stem}.toml")

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import tweenrender as tr
-from tweenrender.core.methods import METHODS
+from tweenrender.core.methods.registry import METHODS
 
 from ..helpers import SCENES, SQUARE, decode, run_module, write_scene
 

@@ -183,8 +183,8 @@ def test_qcurves_reports_each_body_of_a_jointed_shape(cli) -> None:
 
 
 def test_walk_keeps_the_foot_and_the_ankle_only_when_jointed() -> None:
-    from tweenrender.core.methods import interpolate
-    from tweenrender.core.timeline import build_track
+    from tweenrender.core.methods.registry import interpolate
+    from tweenrender.core.timing.timeline import build_track
     from tweenrender.scenefile import load_scene
 
     scene = load_scene(SCENES / "walk.toml")

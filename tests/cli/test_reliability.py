@@ -21,7 +21,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tweenrender.core.methods import interpolate
+from tweenrender.core.methods.registry import interpolate
 
 from tests.helpers import (LONG, MANIFEST, SQUARE, earlier_frames, run_module, start_render, unprivileged,
                            write_scene)
@@ -278,7 +278,8 @@ def test_degenerate_shapes_render(cli, tmp_path: Path, case: str, method: str) -
         inked = (rgba[..., :3] < 200).any(axis=-1).sum()
         assert inked >= 1, f"frame {index} is blank"
 
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
     from tweenrender.scenefile import load_scene
 
     frames_of = Frames(RenderJob(load_scene(scene)))

@@ -89,7 +89,7 @@ def test_reel_has_every_card_and_comparison_frame(cli, tmp_path: Path) -> None:
 
 
 def test_reel_grid_and_letterbox_keep_the_aspect() -> None:
-    from tweenrender.pipeline.demo_reel import GAP, grid_cells, panel_fit
+    from tweenrender.reports.demo_reel import GAP, grid_cells, panel_fit
 
     # three 16:9 panels in a 1280x669 box: two rows (two over one) show them larger than one row of three
     (width, height), columns = panel_fit((1280, 720), 3, (1280, 669))

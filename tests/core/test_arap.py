@@ -5,13 +5,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from tweenrender.core import arap as arap_module
+from tweenrender.core.methods import arap as arap_module
 from tweenrender.core import measures
-from tweenrender.core.arap import arap
+from tweenrender.core.methods.arap import arap
 from tweenrender.core.crossings import self_crossing, self_crossings
 from tweenrender.core.geometry import edge_lengths, perimeter, rotate, signed_area
-from tweenrender.core.methods import interpolate
-from tweenrender.core.timeline import build_track
+from tweenrender.core.methods.registry import interpolate
+from tweenrender.core.timing.timeline import build_track
 from tweenrender.scenefile import load_scene
 
 from ..helpers import SCENES

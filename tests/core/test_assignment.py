@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from tests.helpers import DATA, ROOT
-from tweenrender.core.assignment import SMALL_ASSIGNMENT, min_cost_assignment
+from tweenrender.core.correspondence.assignment import SMALL_ASSIGNMENT, min_cost_assignment
 
 
 def brute_force(cost: np.ndarray) -> float:

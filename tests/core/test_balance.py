@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 
 from tweenrender.core.balance import coincident_runs, spread
-from tweenrender.core.correspond import correspond
+from tweenrender.core.correspondence.correspond import correspond
 from tweenrender.core.geometry import edge_lengths, perimeter, signed_area
-from tweenrender.core.timeline import build_track
+from tweenrender.core.timing.timeline import build_track
 from tweenrender.scenefile import load_scene
 
 from ..helpers import SCENES

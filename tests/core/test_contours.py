@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from tweenrender.core.contours import anchor, pair_contours, roles
-from tweenrender.core.correspond import correspond_open, is_open_monotone
+from tweenrender.core.correspondence.correspond import correspond_open, is_open_monotone
 from tweenrender.core.paint import blend_colors, blend_paints
 from tweenrender.model import Paint
 

@@ -16,8 +16,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tweenrender.core._cyclic_dtw import angle_change, bend_work
-from tweenrender.core.correspond import (
+from tweenrender.core.correspondence._cyclic_dtw import angle_change, bend_work
+from tweenrender.core.correspondence.correspond import (
     Correspondence, correspond, is_cyclic_monotone, naive_correspond, path_work, work_matrix,
 )
 from tweenrender.model import Matching, frozen_points
@@ -423,8 +423,8 @@ def test_kernels_run_without_a_cache_folder() -> None:
     # the kernels are compiled in memory instead of failing at import.
     code = (
         "import numpy as np\n"
-        "from tweenrender.core import _cyclic_dtw\n"
-        "from tweenrender.core.correspond import correspond\n"
+        "from tweenrender.core.correspondence import _cyclic_dtw\n"
+        "from tweenrender.core.correspondence.correspond import correspond\n"
         "assert type(_cyclic_dtw.maes_search._cache).__name__ == 'NullCache'\n"
         "print(correspond(np.eye(3, 2), np.eye(4, 2) + 1).balanced)\n"
     )

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 import tweenrender as tr
-from tweenrender.core.easing import CubicBezier, EasingSyntaxError, Hold, Steps, parse_easing
-from tweenrender.core.spacing import SpacingError, fritsch_carlson_tangents, spacing_chart
+from tweenrender.core.timing.easing import CubicBezier, EasingSyntaxError, Hold, Steps, parse_easing
+from tweenrender.core.timing.spacing import SpacingError, fritsch_carlson_tangents, spacing_chart
 
 CURVES = [
     "ease", "ease-in", "ease-out", "ease-in-out", "in", "out", "in-out",

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from tweenrender.core.geometry import area
-from tweenrender.core.timeline import build_track
+from tweenrender.core.timing.timeline import build_track
 from tweenrender.errors import SceneError
 from tweenrender.scenefile import load_scene
 

@@ -8,11 +8,11 @@ import numpy as np
 import pytest
 
 import tweenrender as tr
-from tweenrender.core.correspond import is_cyclic_monotone, path_work
+from tweenrender.core.correspondence.correspond import is_cyclic_monotone, path_work
 from tweenrender.core.geometry import signed_area
-from tweenrender.core.hint_search import correspond_hinted
-from tweenrender.core.hints import snap_point
-from tweenrender.core.timeline import build_track
+from tweenrender.core.correspondence.hint_search import correspond_hinted
+from tweenrender.core.correspondence.hints import snap_point
+from tweenrender.core.timing.timeline import build_track
 from tweenrender.model import Matching
 
 
@@ -158,8 +158,8 @@ def _every_open_path(m: int, n: int) -> list[np.ndarray]:
 
 @pytest.mark.parametrize("seed", range(10))
 def test_hinted_open_search_is_the_brute_force_minimum(seed: int) -> None:
-    from tweenrender.core.correspond import is_open_monotone
-    from tweenrender.core.hint_search import correspond_hinted_open
+    from tweenrender.core.correspondence.correspond import is_open_monotone
+    from tweenrender.core.correspondence.hint_search import correspond_hinted_open
 
     rng = np.random.default_rng(100 + seed)
     m, n = int(rng.integers(3, 7)), int(rng.integers(3, 7))

@@ -17,10 +17,10 @@ import tweenrender as tr
 from tests.core.exact_tangles import parents_of, tangled
 from tests.helpers import DATA
 from tweenrender.core.geometry import rotate
-from tweenrender.core.injective import injective, injective_contours, injective_mesh, mean_value_weights
-from tweenrender.core.methods import interpolate
-from tweenrender.core.qcurves import auto_choice
-from tweenrender.core.timeline import build_track, pair_paths
+from tweenrender.core.methods.injective import injective, injective_contours, injective_mesh, mean_value_weights
+from tweenrender.core.methods.registry import interpolate
+from tweenrender.core.methods.qcurves import auto_choice
+from tweenrender.core.timing.timeline import build_track, pair_paths
 
 T = np.round(np.arange(1, 20) * 0.05, 2)  # t = .05 … .95
 
@@ -226,7 +226,7 @@ def test_an_open_stroke_with_repeated_vertices_stays_inside_its_outline() -> Non
 
 
 def test_past_the_steiner_cap_the_rigid_paths_take_over(monkeypatch: pytest.MonkeyPatch) -> None:
-    from tweenrender.core import compatible
+    from tweenrender.core.methods import compatible
 
     k0, k1 = _spiral_and_star()
     assert injective_mesh([k0], [k1], [True]).steiner > 0  # type: ignore[union-attr]

@@ -7,9 +7,9 @@ import pytest
 
 from tweenrender.core import measures
 from tweenrender.core.geometry import edge_lengths, edges, perimeter, rotate, signed_area
-from tweenrender.core.intrinsic import closure_tweak, intrinsic
-from tweenrender.core.methods import interpolate
-from tweenrender.core.timeline import build_track
+from tweenrender.core.methods.intrinsic import closure_tweak, intrinsic
+from tweenrender.core.methods.registry import interpolate
+from tweenrender.core.timing.timeline import build_track
 from tweenrender.scenefile import load_scene
 
 from ..helpers import SCENES

@@ -7,7 +7,7 @@ import itertools
 import numpy as np
 import pytest
 
-from tweenrender.core import joints, paths
+from tweenrender.core.methods import joints, paths
 
 
 def turn(points: np.ndarray, phi: float) -> np.ndarray:

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from tweenrender.core.keyframes import (EASED_SHARE, Keyframes, chord_deviation, fit_keyframes, greedy_keyframes,
+from tweenrender.vector.keyframes import (EASED_SHARE, Keyframes, chord_deviation, fit_keyframes, greedy_keyframes,
                                         max_deviation, paint_channels, timing)
 from tests.vector_players import bezier_timing
 

@@ -12,7 +12,7 @@ import pytest
 
 from tests.core.test_correspond import brute_force_distance, close, small_pair, star
 from tests.helpers import ROOT
-from tweenrender.core import _cyclic_dtw, _lean_dtw
+from tweenrender.core.correspondence import _cyclic_dtw, _lean_dtw
 
 
 @pytest.mark.parametrize("seed", range(40))
@@ -40,7 +40,7 @@ def test_a_large_search_holds_no_matrix() -> None:
     """3000 × 3000 vertices: the matrix and the steps would be 3000 · 3000 · (8 + 2) bytes = 86 MiB;
     the checkpointed search's own arrays are about 4 MiB (peak resident memory, counted by the kernel)."""
     code = ("import resource, numpy as np\n"
-            "from tweenrender.core import _lean_dtw\n"
+            "from tweenrender.core.correspondence import _lean_dtw\n"
             "rng = np.random.default_rng(1)\n"
             "def star(n):\n"
             "    t = np.sort(rng.uniform(0, 2 * np.pi, n)); r = rng.uniform(0.5, 1.5, n)\n"

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from tweenrender.core.geometry import rotate, signed_area
-from tweenrender.core.mesh import MeshError, compatible_mesh, ear_clip, edge_matrix, triangulate
+from tweenrender.core.methods.mesh import MeshError, compatible_mesh, ear_clip, edge_matrix, triangulate
 
 
 def random_star(rng: np.random.Generator, n: int) -> np.ndarray:

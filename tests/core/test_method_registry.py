@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from tweenrender.core.methods import METHODS, REGISTRY, interpolate, measured_methods
+from tweenrender.core.methods.registry import METHODS, REGISTRY, interpolate, measured_methods
 from tweenrender.errors import GeometryError
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from tweenrender.core import paths
-from tweenrender.core.methods import interpolate
+from tweenrender.core.methods import paths
+from tweenrender.core.methods.registry import interpolate
 from tweenrender.core.geometry import best_fit_rotation, edge_lengths, perimeter
 
 SQUARE = np.array([[0, 0], [2, 0], [2, 2], [0, 2]], float)

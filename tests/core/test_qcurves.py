@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tweenrender.core import joints, paths, qcurves
+from tweenrender.core.methods import joints, paths, qcurves
 
 # -- independent helpers -------------------------------------------------------
 
@@ -463,7 +463,7 @@ def test_auto_goes_linear_when_only_some_vertices_change():
     """A hexagon turned by 40° with one vertex pushed out by 10%: the three vertices away from it
     still see a rigid turn, its neighbourhood does not; any non-rigid vertex makes the shape
     non-rigid (thesis §2.3), so auto draws the linear paths."""
-    from tweenrender.core.methods import interpolate as _interpolate
+    from tweenrender.core.methods.registry import interpolate as _interpolate
 
     angles = np.radians(np.arange(6) * 60.0)
     hexagon = np.column_stack([np.cos(angles), np.sin(angles)]) * 2.0

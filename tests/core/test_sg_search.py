@@ -10,9 +10,9 @@ import pytest
 
 from tests.core.test_correspond import brute_force, close, closed_paths, shoelace, small_pair, star
 from tests.helpers import DATA
-from tweenrender.core import _cyclic_dtw
-from tweenrender.core._sg_search import _tilt, sg_search
-from tweenrender.core.correspond import (
+from tweenrender.core.correspondence import _cyclic_dtw
+from tweenrender.core.correspondence._sg_search import _tilt, sg_search
+from tweenrender.core.correspondence.correspond import (
     _aligned, _as_polygon, _winds_opposite, correspond, is_cyclic_monotone, naive_correspond, path_work,
 )
 from tweenrender.model import Matching

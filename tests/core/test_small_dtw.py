@@ -12,7 +12,7 @@ import pytest
 
 from tests.core.test_correspond import brute_force_distance, close, small_pair
 from tests.helpers import DATA, ROOT
-from tweenrender.core import _cyclic_dtw, _small_dtw
+from tweenrender.core.correspondence import _cyclic_dtw, _small_dtw
 
 
 def _pairs(nodes: np.ndarray, m: int, n: int) -> np.ndarray:

@@ -54,7 +54,7 @@ def test_the_message_says_which_formats_can() -> None:
 def _no_drawing_and_no_ffmpeg(monkeypatch) -> None:  # type: ignore[no-untyped-def]
     import subprocess
 
-    from tweenrender.pipeline import job
+    from tweenrender.plan import job
 
     def refuse(*args: object, **kwargs: object) -> None:
         raise AssertionError("drew a frame or started ffmpeg before refusing the size")

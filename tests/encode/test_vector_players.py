@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 import tweenrender as tr
-from tweenrender.core.methods import METHODS
+from tweenrender.core.methods.registry import METHODS
 from tests.helpers import DATA, SCENES, write_scene
 from tests.vector_players import check_chromium, check_lottie_players
 

@@ -173,7 +173,7 @@ def test_a_sharp_edge_decodes_in_place(tmp_path: Path) -> None:
 
 def test_the_rgb_path_and_the_yuv_path_decode_alike(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     from tweenrender.encode import sinks
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.pipeline.stream import render
     from tweenrender.scenefile import load_scene
 

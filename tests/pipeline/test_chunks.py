@@ -110,7 +110,7 @@ def test_workers_come_from_the_cost() -> None:
 
 def test_default_workers_measures_only_what_can_pay(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     from tweenrender.pipeline import workers
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.scenefile import parse_scene
 
     measured: list[str] = []
@@ -169,7 +169,8 @@ def test_the_encoder_cost_is_measured_on_the_jobs_own_frames(monkeypatch: pytest
 
     from tweenrender.encode import encoder_cost
     from tweenrender.pipeline import workers
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
     from tweenrender.scenefile import parse_scene
 
     seen: list[list[np.ndarray]] = []

@@ -24,7 +24,7 @@ def client():
 
 
 def _job(tmp_path: Path):  # type: ignore[no-untyped-def]
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.scenefile import load_scene
 
     return RenderJob(load_scene(write_scene(tmp_path, SMALL)))
@@ -73,7 +73,8 @@ def test_cli_renders_on_a_local_cluster(cli, tmp_path: Path) -> None:  # type: i
 
 def test_cluster_addresses_and_refusals(cli, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
     from tweenrender.errors import OptionError
-    from tweenrender.pipeline.cluster import cluster_chunks, parse_address
+    from tweenrender.pipeline.cluster import cluster_chunks
+    from tweenrender.plan.cluster_address import parse_address
 
     assert parse_address("local:3") == ("local", 3)
     assert parse_address(" tcp://10.0.0.5:8786 ") == ("tcp://10.0.0.5:8786", None)

@@ -72,7 +72,7 @@ def test_a_bad_address_is_refused_before_connecting(cli, tmp_path: Path, monkeyp
     ("scheduler.example.org:8786", "tcp://scheduler.example.org:8786"),
 ])
 def test_good_addresses_are_read_as_tcp(address: str, parsed: str) -> None:
-    from tweenrender.pipeline.cluster import parse_address
+    from tweenrender.plan.cluster_address import parse_address
 
     assert parse_address(address) == (parsed, None)
 

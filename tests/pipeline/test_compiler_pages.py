@@ -52,7 +52,8 @@ def test_the_compilers_code_is_paged_out_and_the_kernel_still_draws_the_same() -
 
 def test_the_first_frame_drawn_pages_the_compiler_out(monkeypatch) -> None:
     from tweenrender.pipeline import compiler_pages
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
     from tweenrender.scenefile import load_scene
 
     calls: list[int] = []

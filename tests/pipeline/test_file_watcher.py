@@ -14,7 +14,7 @@ from typing import Any, Callable, Iterator
 
 import pytest
 
-from tweenrender.pipeline.preview.watcher import FileWatcher
+from tweenrender.preview.watcher import FileWatcher
 
 
 class SlowArming:

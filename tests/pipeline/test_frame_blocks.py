@@ -8,8 +8,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tweenrender.pipeline import job as job_module
-from tweenrender.pipeline.job import Frames, RenderJob
+from tweenrender.pipeline import frames as job_module
+from tweenrender.pipeline.frames import Frames
+from tweenrender.plan.job import RenderJob
 from tweenrender.scenefile import load_scene
 
 ROOT = Path(__file__).resolve().parents[2]

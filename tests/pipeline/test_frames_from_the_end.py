@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from tweenrender.errors import OptionError
-from tweenrender.pipeline.job import pick_frames
+from tweenrender.plan.job import pick_frames
 
 from tests.helpers import SQUARE, read_png, run_module, write_scene
 

@@ -30,7 +30,8 @@ def pixel(img: np.ndarray, world: np.ndarray) -> np.ndarray:
 
 
 def shapes_at(scene: tr.Scene, time: float):  # type: ignore[no-untyped-def]
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
 
     return Frames(RenderJob(scene)).shapes_at(None, time)
 

@@ -181,7 +181,7 @@ def test_bad_save_shows_the_error_line_and_keeps_the_last_good_frames(box_previe
 
 @needs_chromium
 def test_method_picker_lists_every_method_and_redraws_with_the_choice(box_preview: tuple[Preview, Path]) -> None:
-    from tweenrender.core.methods import METHODS
+    from tweenrender.core.methods.registry import METHODS
 
     preview, _ = box_preview
     with live_page(preview.url) as page:
@@ -267,7 +267,7 @@ def test_watchfiles_is_imported_by_the_preview_only(tmp_path: Path) -> None:
     code = ("import sys\n"
             "from tweenrender.cli.main import main\n"
             f"code = main(['render', {str(scene)!r}, '-o', {str(tmp_path / 'f')!r}, '-q', '--frames', '0:2'])\n"
-            "import tweenrender.pipeline.preview\n"
+            "import tweenrender.preview\n"
             "print('result', code, 'watchfiles' in sys.modules)\n")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, cwd=ROOT,
                           env={**os.environ, "PYTHONPATH": str(ROOT)})

@@ -106,7 +106,7 @@ def test_concat_refuses_what_it_cannot_join(tmp_path: Path) -> None:
 
 
 def test_default_workers() -> None:
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.pipeline.workers import Cost, default_workers
     from tweenrender.scenefile import parse_scene
 
@@ -147,7 +147,7 @@ def test_a_frame_failing_in_a_worker_stops_the_render_cleanly(tmp_path: Path,
     import multiprocessing
 
     from tweenrender.errors import RenderError
-    from tweenrender.pipeline.job import Frames
+    from tweenrender.pipeline.frames import Frames
     from tweenrender.pipeline.stream import render
 
     original = Frames.__call__

@@ -8,8 +8,8 @@ import numpy as np
 
 import tweenrender as tr
 from tests.helpers import DATA
-from tweenrender.pipeline.job import scene_view, tracks_of
-from tweenrender.pipeline.pictures import write_sheet
+from tweenrender.plan.job import scene_view, tracks_of
+from tweenrender.reports.pictures import write_sheet
 
 
 def test_a_drawing_sheet_shows_its_keys_filled_with_their_own_paint(tmp_path: Path) -> None:

@@ -131,7 +131,7 @@ def test_a_frame_of_the_wrong_shape_is_refused(tmp_path: Path) -> None:
 def test_frames_stream_one_at_a_time(tmp_path: Path) -> None:
     """Nothing is drawn ahead of the sink, and every frame lands in the same reused buffer."""
     from tweenrender.pipeline import workers as parallel
-    from tweenrender.pipeline.job import RenderJob
+    from tweenrender.plan.job import RenderJob
     from tweenrender.scenefile import load_scene
 
     drawn: list[int] = []

@@ -7,8 +7,9 @@ import numpy as np
 import pytest
 
 from tweenrender.model import Key, Paint, Scene, Shape, frozen_points
-from tweenrender.pipeline.job import Frames, RenderJob
-from tweenrender.raster.view import Viewport, fit_box
+from tweenrender.pipeline.frames import Frames
+from tweenrender.plan.job import RenderJob
+from tweenrender.core.view import Viewport, fit_box
 
 from tests.helpers import GOLDEN, SCENES, assert_close_to_golden, read_png
 

@@ -7,7 +7,8 @@ from pathlib import Path
 import numpy as np
 
 import tweenrender as tr
-from tweenrender.pipeline.job import Frames, RenderJob
+from tweenrender.pipeline.frames import Frames
+from tweenrender.plan.job import RenderJob
 
 
 def test_captions_sit_outside_the_art(tmp_path: Path) -> None:

@@ -7,7 +7,8 @@ import pytest
 
 from tweenrender.core.ratios import scene_perimeter_ratio as perimeter_ratio
 from tweenrender.model import Key, Paint, Scene, Shape
-from tweenrender.pipeline.job import Frames, RenderJob, tracks_of
+from tweenrender.pipeline.frames import Frames
+from tweenrender.plan.job import RenderJob, tracks_of
 
 K0 = np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float)
 K1 = np.array([[7, 1], [7, 3], [5, 3], [5, 1]], dtype=float)  # K0 turned 90° and moved

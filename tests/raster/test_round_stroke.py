@@ -156,7 +156,8 @@ def test_only_scenes_with_many_round_stroked_segments_use_it(tmp_path: Path) -> 
 def test_side_by_side_panels_keep_the_kernels_strokes_inside_their_own(tmp_path: Path) -> None:
     # a detailed stroked scene in two panels (each translated and clipped): drawn with the kernel and
     # with skia, the pictures agree to antialiasing, panel edges included
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
     from tweenrender.scenefile import load_scene
 
     scene = tmp_path / "rings.toml"

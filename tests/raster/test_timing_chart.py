@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import tweenrender as tr
-from tweenrender.core.timeline import build_track
+from tweenrender.core.timing.timeline import build_track
 from tweenrender.raster.plots.timing_chart import chart_ticks
 
 SQ = [[0, 0], [2, 0], [2, 2], [0, 2]]

@@ -9,7 +9,7 @@ import pytest
 
 from tests.helpers import write_scene
 from tweenrender.core.measures import SWEEP, curves
-from tweenrender.core.timeline import build_track
+from tweenrender.core.timing.timeline import build_track
 from tweenrender.scenefile import load_scene
 
 SCENE = """size = [160, 120]

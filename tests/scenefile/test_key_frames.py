@@ -179,7 +179,8 @@ def test_the_order_switches_once_where_the_swapped_elements_overlap_least(tmp_pa
     in the first drawing, over it in the second. They overlap while 6.5 < x < 10.5, i.e. for
     0.25 < t < 0.65: the overlap is 0 from t = 0.65 on, and of the t = k/32 where it is 0 the one
     nearest 0.5 is 21/32 (8/32, the last before, is farther)."""
-    from tweenrender.pipeline.job import Frames, RenderJob
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
 
     scene = tr.load_scene([_two_squares(tmp_path, "a", "b", 4), _two_squares(tmp_path, "b", "a", 14)])
     drawer = Frames(RenderJob(scene))

@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from ..errors import UsageError
-from ..core.methods import METHODS
+from ..core.methods.registry import METHODS
 from .args import fps, method, seconds, size
 
 
@@ -27,7 +27,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..pipeline.preview import serve_preview
+    from ..preview import serve_preview
 
     if len(args.scene) > 1 and not all(Path(p).suffix.lower() == ".svg" for p in args.scene):
         raise UsageError("several inputs must all be SVG drawings (.svg); give one scene file at a time")

@@ -15,7 +15,7 @@ from .overlay_flags import add_overlay_flags
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from ..core.methods import METHODS
+    from ..core.methods.registry import METHODS
     from ..encode.formats import FORMATS
 
     p = sub.add_parser("render", help="render a scene, or SVG drawings morphing into each other, to video, PNG, "
@@ -62,7 +62,7 @@ def default_target(inputs: list[str], fmt: str | None, compare: bool) -> Path:
 
 def run(args: argparse.Namespace) -> int:
     from ..pipeline.library import write
-    from ..pipeline.options import RenderOptions
+    from ..plan.options import RenderOptions
     from .progress import ProgressBar
 
     compare = None if args.compare is None else (methods(args.compare) if args.compare else True)

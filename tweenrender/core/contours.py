@@ -16,7 +16,7 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from .assignment import min_cost_assignment
+from .correspondence.assignment import min_cost_assignment
 from .geometry import signed_area
 
 __all__ = ["ROLES", "inside", "roles", "pair_contours", "nearest_point", "anchor", "contour_size"]

@@ -25,7 +25,7 @@ from .angles import shorter_change, turning_angles, wrap
 from .crossings import self_crossings
 from .tangles import SWEEP as _SWEEP
 from .geometry import edge_lengths, perimeter, signed_area
-from .methods import interpolate
+from .methods.registry import interpolate
 
 __all__ = ["SWEEP", "MethodReport", "Curves", "report", "curves", "edge_error", "angle_error",
            "area_ratio", "perimeter_ratio"]

@@ -17,7 +17,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .geometry import outline_length
-from .timeline import Track
+from .timing.timeline import Track
 
 __all__ = ["scene_perimeter_ratio", "segment_midpoints"]
 

@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..model import Shape
-from .timeline import ShapeAt
+from .timing.timeline import ShapeAt
 
 __all__ = ["SWEEP", "GRID", "Switch", "layered", "key_order", "swapped_pairs", "coverage", "overlap_area", "choose_switch",
            "stacking_plan", "order_at"]

@@ -1,6 +1,6 @@
 """A vector file's content, as plain arrays: each element's runs of frames, keyframed paths and paint.
 
-Built by :mod:`tweenrender.pipeline.vector_export`; written by :mod:`.lottie` and :mod:`.animated_svg`.
+Built by :mod:`tweenrender.vector.export`; written by :mod:`.lottie` and :mod:`.animated_svg`.
 """
 
 from __future__ import annotations

@@ -23,7 +23,7 @@ from typing import Any, Iterator
 
 from ..encode.formats import TABLE
 from ..errors import EncodeError
-from .job import Progress, RenderJob
+from ..plan.job import Progress, RenderJob
 from .workers import draw_frame, split_range
 
 __all__ = ["render_part", "render_chunks", "part_format", "render_in_processes"]
@@ -70,7 +70,7 @@ def render_part(job: RenderJob, fmt: str) -> Any:
     """
     from ..encode.lifeline import Stopped, stoppable
     from ..encode.sinks import png_bytes
-    from .job import Frames
+    from .frames import Frames
     from .stream import render
 
     try:

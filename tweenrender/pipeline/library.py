@@ -27,8 +27,9 @@ from numpy.typing import NDArray
 
 from ..errors import OptionError
 from ..model import BALANCES, EQUAL_COUNTS, Color, DrawnContour, Points, Scene
-from .job import Frames, RenderJob, pick_frames, total_frames
-from .options import RenderOptions, canvas_limit, check_choice, check_color, check_fps, check_method, check_size
+from ..plan.job import RenderJob, pick_frames, total_frames
+from .frames import Frames
+from ..plan.options import RenderOptions, canvas_limit, check_choice, check_color, check_fps, check_method, check_size
 
 __all__ = ["load_scene", "frame", "frames", "outlines", "contours", "write", "render_job", "output_format", "with_matching",
            "with_balance", "not_an_input"]
@@ -66,7 +67,7 @@ def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], 
 
 def _check_timing(ease: object, hold: object, stagger: object) -> None:
     """Refuse a timing of drawings that is not one: an unknown curve, a negative or non-numeric hold."""
-    from ..core.easing import parse_easing
+    from ..core.timing.easing import parse_easing
 
     if not isinstance(ease, str):
         raise OptionError(f"expected an easing name or curve, found {ease!r}", "ease")
@@ -117,14 +118,14 @@ def contours(scene: Scene, time: float, method: str | None = None) -> list[Drawn
     """Every drawn contour at ``time`` seconds as :class:`~tweenrender.model.DrawnContour` s, in the
     order of :func:`outlines`: which are open strokes, which holes, their element and paint."""
     from ..core.contours import roles
-    from ..raster.view import Viewport
+    from ..core.view import Viewport
 
     drawer = _frames_for(scene, method, None, None)
     at_time = _finite_time(time)
     shapes = drawer.shapes_at(method, at_time)
     pixel = 1.0
     if any(not shape.stroke_scales and shape.paint.stroke is not None for shape in scene.shapes):
-        from .job import scene_view
+        from ..plan.job import scene_view
 
         pixel = 1.0 / Viewport(scene_view(scene, drawer.tracks, (method,)), *scene.size).scale
     out = []
@@ -189,7 +190,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     if TABLE[fmt].folder:
         check_frames_folder(target)
     if TABLE[fmt].vector:
-        from .vector_export import refuse_raster_options
+        from ..vector.export import refuse_raster_options
 
         refuse_raster_options(fmt, opts)
     elif opts.max_error is not None:
@@ -199,7 +200,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
         raise OptionError(f"{len(job.frame_range)} frames is more than {opts.max_frames}; "
                           "raise it to render them anyway", "max_frames")
     if TABLE[fmt].vector:
-        from .vector_export import write_vector
+        from ..vector.export import write_vector
 
         return write_vector(job, fmt, target, opts.max_error)
     check_alpha(fmt, job.scene.background[3] < 255)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, Iterable
 
-from .job import Progress, RenderJob
+from ..plan.job import Progress, RenderJob
 from .workers import frame_stream
 
 if TYPE_CHECKING:

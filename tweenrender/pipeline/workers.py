@@ -24,7 +24,8 @@ from numpy.typing import NDArray
 
 from ..encode.formats import TABLE
 from ..errors import RenderError
-from .job import Frames, RenderJob
+from ..plan.job import RenderJob
+from .frames import Frames
 
 __all__ = ["frame_stream", "draw_frame", "default_workers", "split_range", "Cost", "measure_cost",
            "predicted_seconds", "choose_workers", "tree_mib", "memory_budget_mib"]

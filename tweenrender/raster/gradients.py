@@ -7,18 +7,11 @@ import skia
 from numpy.typing import NDArray
 
 from ..model import Gradient
-from .view import Viewport
+from ..core.view import Viewport, pixel_affine
 
-__all__ = ["gradient_shader", "pixel_affine"]
+__all__ = ["gradient_shader"]
 
 _TILES = {"pad": skia.TileMode.kClamp, "reflect": skia.TileMode.kMirror, "repeat": skia.TileMode.kRepeat}
-
-
-def pixel_affine(gradient: Gradient, viewport: Viewport) -> NDArray[np.float64]:
-    """Gradient space → canvas pixels as a ``(3, 3)`` affine matrix: the gradient's own matrix, then the
-    viewport's (y flipped)."""
-    a, b, c, d, e, f = gradient.matrix
-    return viewport.matrix @ np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]])
 
 
 def _pixel_matrix(gradient: Gradient, viewport: Viewport) -> skia.Matrix:

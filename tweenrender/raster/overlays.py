@@ -24,10 +24,10 @@ import skia
 from numpy.typing import NDArray
 
 from ..core.ratios import scene_perimeter_ratio
-from ..core.timeline import ShapeAt, Track, evaluate_segment, frame_count
+from ..core.timing.timeline import ShapeAt, Track, evaluate_segment, frame_count
 from ..model import Color, Scene
 from .surface import contours_path, paint_color, polygon_path
-from .view import Viewport
+from ..core.view import Viewport
 
 __all__ = ["PanelOverlays", "onion_step", "path_polylines", "strip_box", "skia_path", "stroke_paint",
            "fill_paint", "above_strip", "height_with_strip", "PATH_SAMPLES"]

@@ -8,11 +8,11 @@ import numpy as np
 import skia
 from numpy.typing import NDArray
 
-from ..core.timeline import ShapeAt
+from ..core.timing.timeline import ShapeAt
 from ..model import Color, Scene, Shape
 from .round_stroke import worth_compiling
 from .surface import Raster, StrokeStyle, contours_path
-from .view import Box, Viewport
+from ..core.view import Box, Viewport
 
 __all__ = ["Composer", "Layer", "draw_shape", "drawn_style", "label_size", "label_band"]
 

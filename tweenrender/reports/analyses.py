@@ -44,7 +44,7 @@ def stats(scene: Scene, t: Sequence[float] = (0.5,), methods: Sequence[str] | No
     """The thesis's ch. 6 perimeter report and the quality measures per shape, segment and method, at
     ``t`` within each segment (what ``stats --json`` prints)."""
     from .stats import stats_dict
-    from ..pipeline.options import check_methods
+    from ..plan.options import check_methods
 
     scene = _scene(scene)
     if isinstance(t, (str, bytes)) or not isinstance(t, Sequence) or not t or \
@@ -87,9 +87,9 @@ def qcurves(scene: Scene, picture: str | os.PathLike[str] | None = None) -> dict
 
 def describe(scene: Scene) -> dict[str, Any]:
     """The scene as loaded, in world units (what ``check --json`` prints)."""
-    from ..core.timeline import tracks_of
+    from ..core.timing.timeline import tracks_of
     from .check_report import scene_dict
-    from ..pipeline.job import scene_view
+    from ..plan.job import scene_view
 
     scene = _scene(scene)
     report = scene_dict(scene, scene_view(scene, tracks_of(scene), (None,)))

@@ -12,7 +12,7 @@ from ..errors import OptionError
 from ..model import Scene
 from .analyses import picture_target, tuned
 from ..pipeline.library import _scene, not_an_input, output_format
-from ..pipeline.options import DEFAULT_MAX_FRAMES, MAX_ONION, Progress, check_fps, check_methods, check_size
+from ..plan.options import DEFAULT_MAX_FRAMES, MAX_ONION, Progress, check_fps, check_methods, check_size
 
 __all__ = ["sheet", "report", "reel", "DEFAULT_COUNT", "REEL_SIZE", "REEL_FPS"]
 
@@ -28,9 +28,9 @@ def sheet(scene: Scene, path: str | os.PathLike[str], *, methods: Sequence[str] 
           balance: str | None = None) -> Path:
     """A storyboard PNG like the thesis's figures: one row per method (default the scene's compare list),
     ``count`` inbetweens evenly spaced over the clip; returns the path written."""
-    from ..core.timeline import tracks_of
-    from ..pipeline.job import scene_view
-    from ..pipeline.pictures import write_sheet
+    from ..core.timing.timeline import tracks_of
+    from ..plan.job import scene_view
+    from .pictures import write_sheet
 
     target = picture_target(path, "a sheet")
     scene = tuned(scene, cost, align, equal_counts, balance)
@@ -66,7 +66,7 @@ def reel(scenes: Sequence[Scene], path: str | os.PathLike[str], *, names: Sequen
     each scene, in one video or folder of frames; returns the path written. ``names`` label the scenes
     (default their files' stems); ``plain`` leaves out vertex paths and the perimeter strip."""
     from ..encode.targets import check_output_name
-    from ..pipeline.demo_reel import plan_reel, write_reel
+    from .demo_reel import plan_reel, write_reel
 
     if isinstance(scenes, Scene) or not isinstance(scenes, Sequence) or not scenes:
         raise OptionError(f"expected a list of scenes, found {scenes!r}", "scenes")

@@ -18,7 +18,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
-from ..core.methods import METHODS, measured_methods
+from ..core.methods.registry import METHODS, measured_methods
 from ..core.stacking import Switch, layered
 from ..errors import OptionError, printable
 from ..model import Scene
@@ -54,9 +54,9 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
     the path of its ``index.html``. ``progress(name)`` may give a progress callback per video."""
     from ..encode.atomic import commit_folder, discard, prepare_folder, sibling
     from ..encode.manifest import write_manifest
-    from ..pipeline.job import scene_view, stacking_of, tracks_of
+    from ..plan.job import scene_view, stacking_of, tracks_of
     from ..pipeline.library import write
-    from ..pipeline.pictures import write_sheet
+    from .pictures import write_sheet
     from .match_report import correspond_dict, write_match_picture
     from .metric_report import write_metric_plot
     from .stats import stats_dict
@@ -193,7 +193,7 @@ def page(scene: Scene, videos: Sequence[tuple[str, str]], stats: dict[str, Any],
          switches: Sequence[Switch] = ()) -> str:
     """The ``index.html`` text: ``videos`` are ``(method, file name)`` pairs; ``stats`` is
     :func:`~tweenrender.reports.stats.stats_dict` for the same methods; ``switches`` where the paint
-    order of drawings changes (:func:`~tweenrender.pipeline.job.stacking_of`)."""
+    order of drawings changes (:func:`~tweenrender.plan.job.stacking_of`)."""
     from .. import __version__
 
     title = scene.title or (scene.path.stem if scene.path else "scene")

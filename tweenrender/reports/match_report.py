@@ -15,8 +15,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.correspond import correspond, correspond_open, path_work
-from ..core.hints import segment_links
+from ..core.correspondence.correspond import correspond, correspond_open, path_work
+from ..core.correspondence.hints import segment_links
 from ..model import Matching, Scene
 from .segments import entries, nothing_measured
 

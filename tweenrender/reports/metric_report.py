@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Sequence
 import numpy as np
 
 from ..core.measures import SWEEP, curves
-from ..core.timeline import pair_paths
+from ..core.timing.timeline import pair_paths
 from ..model import Scene
 from .segments import entries
 

@@ -12,10 +12,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..core import qcurves
+from ..core.methods import qcurves
 from ..core.geometry import edge_lengths
-from ..core.joints import bodies
-from ..core.timeline import Pair, Segment
+from ..core.methods.joints import bodies
+from ..core.timing.timeline import Pair, Segment
 from ..model import Scene
 from .segments import entries, nothing_measured
 

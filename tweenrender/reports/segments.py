@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Iterator
 
-from ..core.timeline import Pair, Segment, tracks_of
+from ..core.timing.timeline import Pair, Segment, tracks_of
 from ..model import Matching, Scene, Shape
 
 __all__ = ["Entry", "entries", "nothing_measured"]

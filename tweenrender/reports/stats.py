@@ -4,12 +4,12 @@ from __future__ import annotations
 
 from typing import Any, Callable, Sequence
 
-from ..core.intrinsic import closure_tweak
+from ..core.methods.intrinsic import closure_tweak
 from ..core.measures import SWEEP, report
-from ..core.qcurves import auto_choice
+from ..core.methods.qcurves import auto_choice
 from ..core.tangles import tangled_times
-from ..core.timeline import pair_paths
-from ..core.methods import REGISTRY, measured_methods
+from ..core.timing.timeline import pair_paths
+from ..core.methods.registry import REGISTRY, measured_methods
 from ..model import Scene
 from .segments import Entry, entries, nothing_measured
 

@@ -15,11 +15,11 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from ..core.easing import EASING_FORMS, NAMED, Easing, EasingSyntaxError, parse_easing
+from ..core.timing.easing import EASING_FORMS, NAMED, Easing, EasingSyntaxError, parse_easing
 from ..core.contours import pair_contours
-from ..core.hints import (SNAP_REACH, HintError, check_links, forced_contour_pairs, insert_hints, segment_links,
+from ..core.correspondence.hints import (SNAP_REACH, HintError, check_links, forced_contour_pairs, insert_hints, segment_links,
                           snap_point)
-from ..core.spacing import SpacingError, spacing_chart
+from ..core.timing.spacing import SpacingError, spacing_chart
 from ..errors import SceneError
 from ..model import Contour, Hint, Key
 

@@ -20,8 +20,8 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from ..core.assignment import min_cost_assignment
-from ..core.easing import Easing
+from ..core.correspondence.assignment import min_cost_assignment
+from ..core.timing.easing import Easing
 from ..errors import SceneError
 from ..model import Contour, Hint, Key, Shape, frozen_points
 from .controls import check_hints, check_stagger, pinned

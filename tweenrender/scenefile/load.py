@@ -16,8 +16,8 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from ..core.easing import LINEAR, Easing, parse_easing
-from ..core.methods import METHODS, REGISTRY
+from ..core.timing.easing import LINEAR, Easing, parse_easing
+from ..core.methods.registry import METHODS, REGISTRY
 from ..errors import SceneError, did_you_mean
 from ..model import (ALIGNS, BALANCES, CAPS, COSTS, DEFAULT_BALANCE, DEFAULT_FILL, EQUAL_COUNTS, FILL_RULES,
                      JOINS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
@@ -533,7 +533,7 @@ class _Reader:
         return Paint(fill, stroke, width, opacity)
 
     def joints(self, value: Any, where: str, vertices: int) -> tuple[tuple[int, int], ...]:
-        from ..core.joints import JointError, validate_joints
+        from ..core.methods.joints import JointError, validate_joints
 
         items = self.listing(value, where, "a list of [a, b] vertex index pairs")
         joints = []

@@ -20,7 +20,7 @@ from ...model import Color
 from ..fonts import font, wrap
 from ..painter import Painter
 from ..surface import Raster
-from ..view import Viewport
+from ...core.view import Viewport
 
 __all__ = ["CPanel", "placed_apart", "correspond_picture"]
 

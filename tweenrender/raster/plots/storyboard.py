@@ -21,12 +21,12 @@ import skia
 from numpy.typing import NDArray
 
 from ...core.ratios import scene_perimeter_ratio, segment_midpoints
-from ...core.timeline import Track
+from ...core.timing.timeline import Track
 from ...model import Color, Paint, Scene
 from ..overlays import path_polylines, skia_path, stroke_paint
 from ..painter import Painter
 from ..surface import Raster, contours_path
-from ..view import Box, Viewport
+from ...core.view import Box, Viewport
 
 __all__ = ["SheetLayout", "sheet_layout", "draw_sheet", "inbetween_times", "is_drawing"]
 

@@ -14,10 +14,10 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ...core.timeline import Segment, Track, pair_paths
+from ...core.timing.timeline import Segment, Track, pair_paths
 from ...model import Color, Scene, Shape
 from ..painter import Painter
-from ..view import Viewport
+from ...core.view import Viewport
 
 __all__ = ["chart_ticks", "draw_timing_charts", "draw_hint_marks", "hint_paths"]
 

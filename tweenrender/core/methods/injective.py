@@ -1,0 +1,266 @@
+"""Injective paths: in-betweens that never cross themselves (maths §5.9).
+
+After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
+(2001), on Floater & Gotsman, "How to morph tilings injectively" (1999):
+
+1. the best-fit rigid motion (maths §5.2) is taken out: key 1 is turned back
+   by the best-fit angle φ about its vertex mean, both keys centred;
+2. the contours of both keys get one compatible triangulation inside a common
+   frame (:mod:`.compatible`);
+3. in each key every vertex but the frame's is the mean-value combination
+   (Floater 2003: positive weights) of its neighbours; at ``t`` the weights are
+   blended, ``λ(t) = (1-t)·λ(0) + t·λ(1)`` (t clamped to [0, 1]), and the
+   vertices solve ``x_i = Σ_j λ_ij(t)·x_j`` with the frame held (one sparse LU
+   per frame). By Tutte and Floater the result is a valid triangulation at every
+   t, so no contour crosses itself or another, and a hole stays in its outline;
+4. the contours are scaled about their vertex mean to the keys' interpolated
+   area, ``(1-t)·A0 + t·A1`` (closed contours' signed areas summed): a
+   similarity keeps them simple, and the solve alone pulls shapes in mid-way;
+5. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
+   mean, which moves on a straight line.
+
+Copies of a vertex (balancing by copies) are spread along their edges first
+(:func:`.balance.spread`): coincident vertices cannot be triangulated. Keys
+whose contours cross themselves or each other, or nest differently, have no
+such paths: they take the exact rigid paths (maths §5.2) instead, as do
+contours of fewer than three vertices (two for an open stroke), and open strokes
+all at one point. An open stroke's repeated vertices are spread along its next edge.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import OrderedDict
+from typing import Callable, Sequence
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..balance import coincident_runs, spread
+from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
+from ..geometry import best_fit_rotation, centroid, rotate
+from .paths import as_times, rigid
+
+__all__ = ["injective", "injective_contours", "injective_mesh", "mean_value_weights"]
+
+Array = NDArray[np.float64]
+
+_CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
+_FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
+_cache: OrderedDict[bytes, Callable[[Array], list[Array]]] = OrderedDict()
+
+
+def mean_value_weights(points: Array, triangles: NDArray[np.intp]) -> tuple[NDArray[np.intp], NDArray[np.intp], Array]:
+    """Floater's mean-value weights of a triangulation ``points (V, 2)``, ``triangles (F, 3)``
+    (counter-clockwise): ``(rows, cols, w)`` with one entry per directed edge ``i → j``, in the order
+    of ``np.unique`` over ``i·V + j``, ``w`` normalised so each row sums to 1."""
+    v = len(points)
+    i = triangles.reshape(-1)
+    j = np.roll(triangles, -1, axis=1).reshape(-1)
+    k = np.roll(triangles, -2, axis=1).reshape(-1)
+    a, b = points[j] - points[i], points[k] - points[i]
+    la, lb = np.linalg.norm(a, axis=1), np.linalg.norm(b, axis=1)
+    sine, cosine = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]), (a * b).sum(axis=1)  # times la·lb
+    # tan(θ/2) = sin / (1 + cos) = (1 - cos) / sin, each where it does not cancel
+    with np.errstate(divide="ignore", invalid="ignore"):
+        half = np.where(cosine >= 0, sine / (la * lb + cosine), (la * lb - cosine) / sine)
+    # a triangle flat to rounding (an overlay sliver) keeps a finite, positive weight
+    half = np.clip(np.nan_to_num(half, nan=_FLAT, posinf=_FLAT), 1.0 / _FLAT, _FLAT)
+    codes = np.concatenate([i * v + j, i * v + k])
+    values = np.concatenate([half / la, half / lb])
+    unique, where = np.unique(codes, return_inverse=True)
+    w = np.bincount(where, weights=values, minlength=len(unique))
+    rows, cols = unique // v, unique % v
+    w /= np.bincount(rows, weights=w, minlength=v)[rows]
+    return rows, cols, w
+
+
+def injective_mesh(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> CompatibleMesh | None:
+    """The compatible triangulation :func:`injective_contours` uses for these contours, in the keys'
+    turned and centred frame (step 1), or None where the contours take the rigid paths instead."""
+    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
+    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
+    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
+    picked = [c for c, shut in enumerate(closed) if _meshable(k0[cuts[c]:cuts[c + 1]], k1[cuts[c]:cuts[c + 1]], shut)]
+    if not picked:
+        return None
+    m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
+    try:
+        return _Paths(m0, m1, mcuts, [closed[c] for c in picked]).mesh
+    except CompatibleError:
+        return None
+
+
+class _Paths:
+    """Injective paths of one pair of keys: call with ``t (T,)`` for ``(T, N, 2)``."""
+
+    def __init__(self, k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> None:
+        # work at unit size: coordinates near the float range's ends neither overflow nor underflow
+        self.scale = float(max(np.abs(k0).max(initial=0.0), np.abs(k1).max(initial=0.0))) or 1.0
+        k0, k1 = k0 / self.scale, k1 / self.scale
+        self.c0, self.c1 = centroid(k0), centroid(k1)
+        self.phi = float(best_fit_rotation(k0, k1))
+        a0, a1 = k0 - self.c0, rotate(k1 - self.c1, -self.phi)
+        self.mesh = mesh = compatible_triangulation(a0, a1, cuts, closed)
+        rows, cols, self.w0 = mean_value_weights(mesh.p0, mesh.triangles)
+        rows1, cols1, self.w1 = mean_value_weights(mesh.p1, mesh.triangles)
+        if not (np.array_equal(rows, rows1) and np.array_equal(cols, cols1)):
+            raise CompatibleError("the two keys' meshes differ")
+        size = len(mesh.p0)
+        fixed = np.zeros(size, dtype=bool)
+        fixed[mesh.frame] = True
+        free = np.flatnonzero(~fixed)
+        slot = np.full(size, -1)
+        slot[free] = np.arange(len(free))
+        keep = ~fixed[rows]
+        self.inner = keep & ~fixed[cols]
+        self.outer = keep & fixed[cols]
+        self.rows, self.cols, self.slot, self.free = rows, cols, slot, free
+        self.n = len(k0)
+        self.frame = mesh.p0[mesh.frame]
+        self.cuts, self.closed = list(cuts), list(closed)
+        self.areas = (self._area(a0), self._area(a1))
+
+    def _area(self, points: Array) -> float:
+        """Signed area of the closed contours of ``points (N, 2)`` together (holes wound the other way count less)."""
+        total = 0.0
+        for start, end, shut in zip(self.cuts, self.cuts[1:], self.closed):
+            if shut:
+                x, y = points[start:end, 0], points[start:end, 1]
+                total += 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+        return total
+
+    def _sized(self, x: Array, s: float) -> Array:
+        """``x (N, 2)`` scaled about its vertex mean to the keys' interpolated area: a similarity,
+        which keeps every contour as simple as it is (the solve alone pulls shapes in mid-way)."""
+        goal = (1.0 - s) * self.areas[0] + s * self.areas[1]
+        now = self._area(x)
+        if goal == 0.0 or now == 0.0 or (goal > 0) != (now > 0):
+            return x
+        middle = x.mean(axis=0)
+        return middle + math.sqrt(goal / now) * (x - middle)
+
+    def __call__(self, t: Array) -> Array:
+        from scipy.sparse import csc_matrix, identity
+        from scipy.sparse.linalg import splu
+
+        mesh, n = self.mesh, self.n
+        out = np.empty((len(t), n, 2))
+        size = len(self.free)
+        r_in, c_in = self.slot[self.rows[self.inner]], self.slot[self.cols[self.inner]]
+        r_out = self.slot[self.rows[self.outer]]
+        boundary = mesh.p0[self.cols[self.outer]]
+        for f, s in enumerate(np.clip(t, 0.0, 1.0).tolist()):
+            w = (1.0 - s) * self.w0 + s * self.w1
+            matrix = identity(size, format="csc") - csc_matrix((w[self.inner], (r_in, c_in)), shape=(size, size))
+            rhs = np.zeros((size, 2))
+            np.add.at(rhs, r_out, w[self.outer][:, None] * boundary)
+            x = splu(matrix).solve(rhs)
+            out[f] = self._sized(x[self.slot[:n]], s)
+        center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
+        return self.scale * (center[:, None, :] + rotate(out, (t * self.phi)[:, None]))
+
+
+def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> Callable[[Array], list[Array]]:
+    """The paths of every contour, those that cannot be in the mesh on the rigid paths of all."""
+    meshed = [_meshable(k0[a:b], k1[a:b], c) for a, b, c in zip(cuts, cuts[1:], closed)]
+    if not any(meshed) or not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
+        return lambda t: _split(rigid(k0, k1, t), cuts)
+    picked = [c for c in range(len(meshed)) if meshed[c]]
+    m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
+    try:
+        paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
+    except CompatibleError:
+        return lambda t: _split(rigid(k0, k1, t), cuts)
+    every = list(range(len(meshed)))
+
+    def evaluate(t: Array) -> list[Array]:
+        found = dict(zip(picked, _split(paths(t), mcuts)))
+        if len(found) == len(every):
+            return [found[c] for c in every]
+        still = _split(rigid(k0, k1, t), cuts)
+        return [found.get(c, still[c]) for c in every]
+
+    return evaluate
+
+
+def _meshed_keys(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool], picked: Sequence[int]
+                 ) -> tuple[Array, Array, list[int]]:
+    """The keys of the ``picked`` contours, copies spread, concatenated: ``(M, 2)`` twice and their cuts."""
+    parts0, parts1 = [], []
+    for c in picked:
+        a, b = k0[cuts[c]:cuts[c + 1]], k1[cuts[c]:cuts[c + 1]]
+        if closed[c] and (coincident_runs(a) or coincident_runs(b)):
+            a, b = spread(a, b)
+        elif not closed[c]:
+            a, b = _spread_open(a), _spread_open(b)
+        parts0.append(a)
+        parts1.append(b)
+    mcuts = np.concatenate([[0], np.cumsum([len(p) for p in parts0])]).astype(int).tolist()
+    return np.concatenate(parts0), np.concatenate(parts1), mcuts
+
+
+def _meshable(a: Array, b: Array, closed: bool) -> bool:
+    """Whether a contour ``(L, 2)`` in both keys can be in the mesh: three vertices (two for an open
+    stroke), and an open stroke not all at one point in either key."""
+    if len(a) < (3 if closed else 2):
+        return False
+    return closed or (bool(np.any(a != a[0])) and bool(np.any(b != b[0])))
+
+
+def _spread_open(points: Array) -> Array:
+    """An open stroke ``(L, 2)`` with each run of equal vertices spread along the next edge (the
+    previous one for a run at the end), within its first half: the stroke as drawn is unchanged."""
+    out = np.array(points, dtype=np.float64)
+    n, i = len(out), 0
+    while i < n:
+        j = i
+        while j + 1 < n and np.array_equal(out[j + 1], out[i]):
+            j += 1
+        k = j - i + 1
+        if k >= 2:
+            if j + 1 < n:  # toward the next vertex; the run's first copy stays
+                step = (out[j + 1] - out[i]) / (2 * k)
+                for m in range(1, k):
+                    out[i + m] = out[i] + m * step
+            elif i > 0:  # a run at the end: toward the previous vertex; the last copy stays
+                step = (out[i - 1] - out[i]) / (2 * k)
+                for m in range(k - 1):
+                    out[i + m] = out[j] + (k - 1 - m) * step
+        i = j + 1
+    return out
+
+
+def _split(frames: Array, cuts: Sequence[int]) -> list[Array]:
+    return [frames[:, a:b] for a, b in zip(cuts, cuts[1:])]
+
+
+def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool], t: ArrayLike) -> list[Array]:
+    """Injective inbetweens of a shape's corresponding contours (``k0s[i]``, ``k1s[i]`` both
+    ``(L_i, 2)``; ``closed[i]``), all in one mesh, at ``t (T,)``: one ``(T, L_i, 2)`` per contour.
+
+    The mesh of a set of keys is cached, so successive blocks of frames of one segment pay it once.
+    """
+    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
+    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
+    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
+    key = k0.tobytes() + b"|" + k1.tobytes() + b"|" + repr((cuts, list(closed))).encode()
+    paths = _cache.get(key)
+    if paths is None:
+        paths = _build(k0, k1, cuts, [bool(c) for c in closed])
+        _cache[key] = paths
+        while len(_cache) > _CACHE:
+            _cache.popitem(last=False)
+    else:
+        _cache.move_to_end(key)
+    t = as_times(t)
+    found = paths(t)
+    for frames, a, b in zip(found, k0s, k1s):
+        frames[t == 0.0] = a
+        frames[t == 1.0] = b
+    return found
+
+
+def injective(k0: Array, k1: Array, t: ArrayLike, joints: Sequence[tuple[int, int]] = ()) -> Array:
+    """Injective inbetweens of one closed outline ``(N, 2)`` at ``t (T,)``: ``(T, N, 2)``."""
+    return injective_contours([k0], [k1], [True], t)[0]

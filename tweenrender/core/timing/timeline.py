@@ -1,0 +1,498 @@
+"""Keys → segments → shapes at any time (maths §5.3, §5.7, §5.8).
+
+A shape's keys split its life into segments, one per consecutive pair of keys.
+In each segment the contours of the two keys are paired (:mod:`.contours`),
+each pair is balanced to one vertex count (:mod:`.correspond`), and the pairs
+move together under the segment's method: all the pairs' vertices are
+interpolated as one point set, so a shape with holes or pieces turns about one
+center of mass. A contour without a partner grows from (or shrinks to) its
+anchor along straight paths. Paint blends in OKLab (:mod:`.paint`).
+
+Frame ``f`` is drawn at ``time = f / fps``; before the first key a shape holds
+its first key, after its last key the last one. A *hidden* key (where an element
+grows from or shrinks to) is reached, never shown. A segment's easing (:mod:`.easing`)
+maps its time to how far along the way it is, and may overshoot; a key's ``delay``
+(a stagger, a hold) starts its segment's motion later, still ending on time. Shape
+hints (:mod:`.hints`) pair contours and fix the correspondence at their vertices.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import Sequence
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ...errors import GeometryError
+from ...model import Contour, Key, Matching, Paint, Points, Scene, Shape
+from ..contours import anchor, pair_contours
+from ..correspondence.correspond import Correspondence, correspond, correspond_open
+from ..balance import spread
+from .easing import LINEAR, Easing, parse_easing
+from ..geometry import signed_area
+from ..clip_motion import clips_at
+from ..gradient_blend import blend_gradient, box_of
+from ..correspondence.hint_search import correspond_hinted, correspond_hinted_open
+from ..correspondence.hints import Link, forced_contour_pairs, segment_links, vertex_links
+from ..methods.registry import interpolate, per_outline
+from ..paint import blend_paints
+
+__all__ = ["easing_of", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
+           "evaluate_segment", "pair_paths", "key_windings", "tracks_of"]
+
+Array = NDArray[np.float64]
+
+
+def easing_of(key: Key) -> Easing:
+    """The easing of the segment ``key`` starts: its parsed ``easing``, else its ``ease`` parsed."""
+    if key.easing is not None:
+        return key.easing  # type: ignore[return-value]
+    try:
+        return parse_easing(key.ease)
+    except ValueError as error:
+        raise GeometryError(str(error)) from None
+
+
+def frame_count(duration: float, fps: float) -> int:
+    """Frames from time 0 until one at or after ``duration``: ``ceil(duration · fps − 1e-9) + 1``.
+
+    The last frame shows the last key: at its time, or just after it while the key holds (the
+    1e-9 keeps a product that rounding put just above a whole number from adding a frame).
+    """
+    return math.ceil(duration * fps - 1e-9) + 1
+
+
+@dataclass(frozen=True, slots=True)
+class Pair:
+    """One contour through a segment: ``k0``, ``k1`` are ``(L, 2)`` after balancing.
+
+    ``source`` is the contour's index in each key (``None``: it has no partner there and
+    grows from, or shrinks to, a point — or, when ``fades``, keeps its shape and fades);
+    ``counts`` the two contours' vertex counts as drawn; ``correspondence`` the balancing
+    path (``None`` where the drawn order is kept).
+    """
+
+    k0: Points
+    k1: Points
+    closed: bool
+    counts: tuple[int, int]
+    correspondence: Correspondence | None
+    source: tuple[int | None, int | None]
+    fades: bool = False
+
+    @property
+    def moving(self) -> bool:
+        """Whether the contour is in both keys (not growing or shrinking)."""
+        return None not in self.source
+
+
+@dataclass(frozen=True, slots=True)
+class Segment:
+    """Two consecutive keys in correspondence: their contour pairs, paints and easing.
+
+    The motion runs from ``start + delay`` to ``end`` seconds; ``ease`` is the easing as written,
+    ``easing`` the curve; ``links`` the shape hints both keys carry. With a ``stagger``, the pair of
+    rank r in :meth:`stagger_order` starts ``r × stagger`` seconds later, still ending on time.
+    """
+
+    start: float
+    end: float
+    ease: str
+    pairs: tuple[Pair, ...]
+    joints: tuple[tuple[int, int], ...]  # in balanced vertex indices (one-contour shapes only)
+    paints: tuple[Paint, Paint]
+    shown: tuple[bool, bool]  # False for a hidden key
+    ends: tuple[Key, Key] | None = None  # the two keys, whose fill rules and stroke ends are drawn at them
+    # per pair and key: whether the pair's balanced contour runs against the key's own contour, so
+    # that drawing it reversed gives the key's winding (see :func:`key_windings`)
+    flips: tuple[tuple[bool, ...], tuple[bool, ...]] = ((), ())
+    switch: float = 0.5  # the eased t from which in-betweens take the second key's fill rule and windings
+    easing: Easing = LINEAR
+    delay: float = 0.0
+    links: tuple[Link, ...] = ()
+    stagger: float = 0.0
+
+    def time_fraction(self, times: Array, rank: int = 0) -> Array:
+        """How much of the motion's time has passed at ``times (T,)`` seconds for the pair of stagger rank
+        ``rank``: ``(T,)`` in [0, 1]."""
+        begin = self.start + self.delay + rank * self.stagger
+        span = self.end - begin
+        return np.clip((times - begin) / span, 0.0, 1.0)
+
+    def stagger_order(self) -> list[int]:
+        """Pair indices in stagger order: the first key's contours in order, then those that appear."""
+        present = sorted((p.source[0], k) for k, p in enumerate(self.pairs) if p.source[0] is not None)
+        arriving = sorted((p.source[1], k) for k, p in enumerate(self.pairs) if p.source[0] is None)
+        return [k for _, k in present] + [k for _, k in arriving]  # type: ignore[misc]
+
+    def local_t(self, times: Array) -> Array:
+        """Eased parameter of ``times (T,)`` seconds within this segment: 0 and 1 at the keys, and
+        outside [0, 1] between them where the easing overshoots."""
+        return self.easing(self.time_fraction(times))
+
+    @property
+    def k0(self) -> Points:
+        """The balanced first key of a one-contour segment: ``(L, 2)``."""
+        return self._only().k0
+
+    @property
+    def k1(self) -> Points:
+        """The balanced second key of a one-contour segment: ``(L, 2)``."""
+        return self._only().k1
+
+    @property
+    def counts(self) -> tuple[int, int]:
+        return self._only().counts
+
+    @property
+    def correspondence(self) -> Correspondence | None:
+        return self._only().correspondence
+
+    def _only(self) -> Pair:
+        if len(self.pairs) != 1:
+            raise GeometryError(f"a segment of {len(self.pairs)} contours has no single pair of keys")
+        return self.pairs[0]
+
+
+@dataclass(frozen=True, slots=True)
+class ShapeAt:
+    """A shape as drawn at one time: its contours ``(N_i, 2)``, which are closed, its paint.
+
+    While contours fade in or out, ``fade`` is the cross-fade's weight ``w`` in [0, 1] and
+    ``sides`` says, per contour, where it belongs: 0 to both keys, -1 only to the first,
+    +1 only to the second; the picture is then (1 - w) × the shape without the +1 contours
+    plus w × the shape without the -1 ones. A contour growing from (shrinking to) a point is
+    stroked with its share of the width (``widths``), so it leaves no dot.
+    """
+
+    contours: tuple[Points, ...]
+    closed: tuple[bool, ...]
+    paint: Paint
+    visible: bool = True
+    fade: float | None = None
+    sides: tuple[int, ...] = ()
+    reversed: tuple[bool, ...] = ()  # per contour: drawn in reverse, so its winding is its key's (empty: none)
+    key: Key | None = None  # the key whose fill rule and stroke ends are in force (None: the shape's)
+    widths: tuple[float, ...] = ()  # per contour, the share of the stroke width it is drawn with (empty: all)
+    clips: tuple[tuple[Points, ...], ...] = ()  # clip regions (closed contours, nonzero), intersected
+
+
+@dataclass(frozen=True, slots=True)
+class Track:
+    """A shape's segments, ready to be sampled at any time."""
+
+    name: str
+    segments: tuple[Segment, ...]
+    still: ShapeAt  # the only key of a static shape (unused when there are segments)
+
+    def segment_index(self, times: Array) -> NDArray[np.intp]:
+        """The segment each of ``times (F,)`` seconds falls in: ``(F,)`` (the first before, the last after)."""
+        starts = np.array([s.start for s in self.segments])
+        return np.clip(np.searchsorted(starts, times, side="right") - 1, 0, len(self.segments) - 1)
+
+    def at(self, times: Array, method: str) -> list[ShapeAt]:
+        """The shape at each of ``times (F,)`` seconds under ``method``: one :class:`ShapeAt` each.
+
+        Frames are grouped by segment so each segment's paths are evaluated in one vectorised call.
+        """
+        times = np.atleast_1d(np.asarray(times, dtype=np.float64))
+        if not self.segments:
+            return [self.still] * len(times)
+        index = self.segment_index(times)
+        out: list[ShapeAt] = [self.still] * len(times)
+        for s in sorted(set(index.tolist())):  # not np.unique: it loads numpy.ma (10 ms of start-up)
+            segment = self.segments[s]
+            picked = np.flatnonzero(index == s)
+            frames = staggered_paths(segment, times[picked], method) if segment.stagger > 0 else None
+            for slot, shape in zip(picked, evaluate_segment(segment, segment.local_t(times[picked]), method, frames)):
+                out[slot] = shape
+        return out
+
+    def outlines(self, times: Array, method: str) -> list[tuple[Points, ...]]:
+        """Only the contours of :meth:`at`: a tuple of ``(N_i, 2)`` arrays per time."""
+        return [shape.contours for shape in self.at(times, method)]
+
+
+def segment_method(segment: Segment, method: str) -> str:
+    """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its contours
+    when it has several (a one-outline segment keeps ``auto``, which decides per body; one open
+    stroke takes ``linear`` or ``injective`` where auto would, else keeps ``auto``)."""
+    moving = [p for p in segment.pairs if p.moving]
+    if method != "auto" or not moving or (len(moving) == 1 and moving[0].closed):
+        return method
+    from ..methods.qcurves import auto_choice, auto_choice_contours
+
+    if len(moving) == 1:  # one open stroke: auto's own choice, its crossings read as a stroke's
+        chosen = auto_choice(moving[0].k0, moving[0].k1, segment.joints, closed=False).method
+        return chosen if chosen in ("linear", "injective") else method
+
+    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
+                                [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed]).method
+
+
+def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
+    """Every pair's inbetweens at parameters ``t (T,)``: one ``(T, L_i, 2)`` array per pair.
+
+    The moving pairs are interpolated as one point set (one center of mass, one turn), except by
+    the methods that work on one closed outline (:func:`.methods.per_outline`), which take each closed contour on its own and place it
+    where the whole shape's rigid paths put it; the growing, shrinking or fading pairs move on
+    straight paths.
+    """
+    pairs = segment.pairs
+    frames: list[Array | None] = [None] * len(pairs)
+    moving = [i for i, p in enumerate(pairs) if p.moving]
+    if moving:
+        k0 = np.concatenate([pairs[i].k0 for i in moving])
+        k1 = np.concatenate([pairs[i].k1 for i in moving])
+        cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
+        single = len(moving) == 1 and pairs[moving[0]].closed
+        chosen = segment_method(segment, method)
+        if per_outline(method) and not single:
+            # these methods need one closed outline: each contour takes them on its own (open ones the
+            # rigid paths), and its centre follows the rigid paths of the whole shape
+            placed = np.split(interpolate(k0, k1, t, "rigid"), cuts, axis=1)
+            for i, where in zip(moving, placed):
+                pair = pairs[i]
+                own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
+                frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
+        elif chosen == "injective" and not single:
+            # one mesh for every moving contour, so holes stay inside their outlines
+            from ..methods.injective import injective_contours
+
+            found = injective_contours([pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving],
+                                       [pairs[i].closed for i in moving], t)
+            for i, part in zip(moving, found):
+                frames[i] = part
+        elif method == "auto" and chosen == "linear" and not single:
+            # auto's straight paths: each closed contour's copies spread along its edges first
+            from ..methods.qcurves import straight
+
+            for i in moving:
+                pair = pairs[i]
+                path = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
+                path[t == 0.0], path[t == 1.0] = pair.k0, pair.k1
+                frames[i] = path
+        else:
+            together = interpolate(k0, k1, t, chosen, segment.joints)
+            for i, part in zip(moving, np.split(together, cuts, axis=1)):
+                frames[i] = part
+    for i, pair in enumerate(pairs):
+        if frames[i] is None:
+            # growing (shrinking) contours never turn inside out: their scale stops at 0
+            grows, shrinks = pair.source[0] is None, pair.source[1] is None
+            own = np.clip(t, 0.0 if grows else -np.inf, 1.0 if shrinks else np.inf) if not pair.fades else t
+            frames[i] = interpolate(pair.k0, pair.k1, own, "linear")
+    return frames  # type: ignore[return-value]
+
+
+def staggered_paths(segment: Segment, times: Array, method: str) -> list[Array]:
+    """Every pair's inbetweens at ``times (T,)`` seconds, each on its own staggered timing: one
+    ``(T, L_i, 2)`` array per pair. A pair's positions come from the whole shape's paths (one
+    centre, one turn) at its own eased parameter."""
+    out: list[Array] = [np.empty(0)] * len(segment.pairs)
+    for rank, k in enumerate(segment.stagger_order()):
+        out[k] = pair_paths(segment, segment.easing(segment.time_fraction(times, rank)), method)[k]
+    return out
+
+
+def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array] | None = None) -> list[ShapeAt]:
+    """The segment at eased parameters ``t (T,)``: one :class:`ShapeAt` per t (``frames``: the pairs'
+    inbetweens already computed, e.g. staggered; the paint follows ``t``).
+
+    At a key only that key's contours are drawn (one that grows from or shrinks to a point there is
+    kept, as that point with no stroke width), with the key's own fill rule and windings; in-betweens take the first key's until
+    ``segment.switch``, the second's from it.
+    """
+    pairs = segment.pairs
+    frames = pair_paths(segment, t, method) if frames is None else frames
+    closed = tuple(p.closed for p in pairs)
+    t = np.clip(t, 0.0, 1.0)  # paint, fades and visibility do not overshoot
+    paints = blend_paints(*segment.paints, t)
+    fading = any(p.fades for p in pairs)
+    sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
+    growing = [i for i, p in enumerate(pairs) if not p.moving and not p.fades]
+    p0, p1 = segment.paints
+    c0, c1 = (segment.ends[0].clips, segment.ends[1].clips) if segment.ends is not None else ((), ())
+    boxes = None
+    if (p0.gradient is not None or p1.gradient is not None or c0 or c1) and pairs:
+        boxes = box_of([p.k0 for p in pairs]), box_of([p.k1 for p in pairs])
+    out = []
+    for k, (x, paint) in enumerate(zip(t.tolist(), paints)):
+        visible = segment.shown[0] if x == 0.0 else segment.shown[1] if x == 1.0 else True
+        contours = tuple(f[k] for f in frames)  # type: ignore[index]
+        clips: tuple[tuple[Points, ...], ...] = ()
+        if x in (0.0, 1.0):
+            clips = tuple(tuple(c.points for c in region) for region in (c0 if x == 0.0 else c1))
+        elif boxes is not None:  # gradient and clips move with the element (an overshoot too)
+            box = box_of(list(contours))
+            if p0.gradient is not None or p1.gradient is not None:
+                paint = replace(paint, gradient=blend_gradient(p0, p1, *boxes, box, x))
+            clips = clips_at(c0, c1, *boxes, box, x)
+        phase = 0 if x < segment.switch else 1
+        flips = segment.flips[phase] or (False,) * len(pairs)
+        drawn_as = segment.ends[phase] if segment.ends is not None else None
+        if fading and x in (0.0, 1.0):  # a key of a cross-fade: only its own contours
+            end = 0 if x == 0.0 else 1
+            own = [i for i, p in enumerate(pairs) if p.source[end] is not None]
+            out.append(ShapeAt(tuple(contours[i] for i in own), tuple(closed[i] for i in own), paint,
+                               visible and paint.visible, reversed=tuple(flips[i] for i in own), key=drawn_as,
+                               clips=clips))
+            continue
+        # every pair is kept (a constant count, for players that interpolate vertices): at a key, one that
+        # grows from or shrinks to a point there is that point, stroked with no width, so nothing of it shows
+        widths: tuple[float, ...] = ()
+        if growing:
+            share = [1.0] * len(pairs)
+            for i in growing:
+                share[i] = min(max(x if pairs[i].source[0] is None else 1.0 - x, 0.0), 1.0)
+            widths = tuple(share)
+        out.append(ShapeAt(contours, closed, paint, visible and paint.visible, x if fading else None, sides,
+                           flips, drawn_as, widths, clips))
+    return out
+
+
+def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequence[Contour]
+                 ) -> tuple[tuple[bool, ...], tuple[bool, ...]]:
+    """Per pair, whether its balanced contour must be drawn reversed to wind as in the first key, and
+    as in the second: the correspondence may walk a partner backwards, and under ``nonzero`` a hole
+    is a hole only while it winds against its outer.
+
+    A contour that only one key has takes the other key's windings through the largest moving pair:
+    if that pair's two keys wind oppositely, so is it drawn in the key it is not part of.
+    """
+    def sign(points: Array) -> float:
+        return float(np.sign(signed_area(points))) if len(points) >= 3 else 0.0
+
+    first, second, relation, biggest = [], [], False, -1.0
+    for pair in pairs:
+        i, j = pair.source
+        flip0 = i is not None and sign(pair.k0) * sign(before[i].points) < 0
+        flip1 = j is not None and sign(pair.k1) * sign(after[j].points) < 0
+        first.append(flip0)
+        second.append(flip1)
+        if pair.moving and pair.closed and len(pair.k0) >= 3:
+            size = abs(signed_area(pair.k0)) + abs(signed_area(pair.k1))
+            if size > biggest:
+                biggest, relation = size, (sign(before[i].points) * sign(after[j].points) < 0)  # type: ignore[index]
+    for n, pair in enumerate(pairs):
+        if pair.source[0] is None:
+            first[n] = relation
+        elif pair.source[1] is None:
+            second[n] = relation
+    return tuple(first), tuple(second)
+
+
+def _still(key: Key) -> ShapeAt:
+    return ShapeAt(tuple(c.points for c in key.contours), tuple(c.closed for c in key.contours), key.paint,
+                   not key.hidden and key.paint.visible, key=key,
+                   clips=tuple(tuple(c.points for c in region) for region in key.clips))
+
+
+def tracks_of(scene: Scene, matching: Matching | None = None) -> tuple[Track, ...]:
+    """Every shape's track, in paint order, under the scene's matching (or ``matching``) and rules."""
+    matching = scene.matching if matching is None else matching
+    return tuple(build_track(shape, matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
+                 for shape in scene.shapes)
+
+
+def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", balance: str = "copies") -> Track:
+    """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through.
+
+    ``unmatched`` is the rule for contours without a partner (``shape.unmatched`` overrides it);
+    ``balance`` places the copies balancing makes: ``"copies"`` stacks them on their vertex (the
+    thesis), ``"spread"`` spreads them along its edges (maths §5.6).
+    """
+    keys = shape.keys
+    if shape.equal_counts is not None and shape.equal_counts != matching.equal_counts:
+        matching = replace(matching, equal_counts=shape.equal_counts)
+    joints = tuple(shape.joints)  # indices into the current key's vertices
+    segments = []
+    for before, after in zip(keys, keys[1:]):
+        links = tuple(segment_links(before.hints, after.hints))
+        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched, balance, links)
+        balanced_joints: tuple[tuple[int, int], ...] = ()
+        if joints and len(pairs) == 1:
+            found = pairs[0].correspondence
+            if found is None:
+                balanced_joints = carried = joints
+            else:
+                first_of = _first_occurrence(found.pairs[:, 0], pairs[0].counts[0])
+                balanced_joints = tuple((int(first_of[i]), int(first_of[j])) for i, j in joints)
+                carried = tuple((int(found.pairs[p, 1]), int(found.pairs[q, 1])) for p, q in balanced_joints)
+            joints = carried
+        segments.append(Segment(before.time, after.time, before.ease, pairs, balanced_joints,
+                                (before.paint, after.paint), (not before.hidden, not after.hidden),
+                                (before, after),
+                                key_windings(pairs, before.contours, after.contours),
+                                easing=easing_of(before), delay=before.delay, links=links, stagger=shape.stagger))
+    return Track(shape.name, tuple(segments), _still(keys[0]))
+
+
+def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str,
+           balance: str = "copies", links: tuple[Link, ...] = ()) -> tuple[Pair, ...]:
+    a, b = before.contours, after.contours
+    if before.hidden or after.hidden:
+        # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order
+        return tuple(Pair(x.points, y.points, x.closed, (len(x.points), len(y.points)), None, (i, i))
+                     for i, (x, y) in enumerate(zip(a, b)))
+    partners = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b],
+                             [c.closed for c in b], forced=forced_contour_pairs(links))
+    pairs = []
+    for i, j in partners:
+        if i is not None and j is not None:
+            pairs.append(_balanced(a[i], b[j], (i, j), matching, balance, vertex_links(links, (i, j))))
+            continue
+        # a contour without a partner: it fades, or shrinks to (i) or grows from (j) a point of the other key
+        alone, others = (a[i], b) if i is not None else (b[j], a)  # type: ignore[index]
+        n = len(alone.points)
+        if unmatched == "fade":
+            pairs.append(Pair(alone.points, alone.points, alone.closed, (n, n), None, (i, j), fades=True))
+            continue
+        rule = (after if i is not None else before).fill_rule or fill_rule  # the partner key's own
+        point = anchor(alone.points, [c.points for c in others], [c.closed for c in others], rule)
+        collapsed = np.broadcast_to(point, alone.points.shape)
+        k0, k1 = (alone.points, collapsed) if i is not None else (collapsed, alone.points)
+        pairs.append(Pair(_frozen(k0), _frozen(k1), alone.closed, (n, n), None, (i, j)))
+    return tuple(pairs)
+
+
+def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matching,
+              balance: str = "copies", hinted: list[tuple[int, int]] | None = None) -> Pair:
+    closed = a.closed and b.closed
+    m, n = len(a.points), len(b.points)
+    if hinted and m >= 2 and n >= 2:
+        search = correspond_hinted if closed else correspond_hinted_open
+        found = search(a.points, b.points, hinted, matching)
+        k0, k1 = found.apply(a.points, b.points)
+        if balance == "spread" and closed:
+            pinned = [p for p, (i, j) in enumerate(found.pairs.tolist()) if (i, j) in set(hinted)]
+            k0, k1 = spread(k0, k1, fixed=pinned)
+        return Pair(_frozen(k0), _frozen(k1), closed, (m, n), found, source)
+    if m == n and matching.equal_counts == "drawn":
+        return Pair(a.points, b.points, closed, (m, n), None, source)
+    if m < 2 or n < 2:  # a single point: every vertex of the other pairs with it
+        k0 = np.broadcast_to(a.points[0], (max(m, n), 2)) if m == 1 else a.points
+        k1 = np.broadcast_to(b.points[0], (max(m, n), 2)) if n == 1 else b.points
+        return Pair(_frozen(k0), _frozen(k1), closed, (m, n), None, source)
+    found = correspond(a.points, b.points, matching) if closed else correspond_open(a.points, b.points, matching)
+    k0, k1 = found.apply(a.points, b.points)
+    if balance == "spread" and closed:
+        k0, k1 = spread(k0, k1)
+    return Pair(_frozen(k0), _frozen(k1), closed, (m, n), found, source)
+
+
+def _frozen(points: Array) -> Points:
+    array = np.array(points, dtype=np.float64)
+    array.flags.writeable = False
+    return array
+
+
+def _first_occurrence(indices: NDArray[np.intp], count: int) -> NDArray[np.intp]:
+    """For each value 0..count-1, the first position where it occurs in ``indices``."""
+    first = np.full(count, -1, dtype=np.intp)
+    values, positions = np.unique(indices, return_index=True)
+    first[values] = positions
+    return first
+

@@ -1,0 +1,229 @@
+"""The render command's options as one frozen, validated object.
+
+:class:`RenderOptions` is what ``tweenrender render`` and :func:`tweenrender.write` share: the
+command line fills it from its flags, the library from its keyword arguments, and each value is
+checked here, once. A refusal is an :class:`~tweenrender.errors.OptionError` naming the option, so
+the library says ``fps=: …`` and the command line ``--fps: …``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+from numbers import Integral, Real
+from typing import Any, Callable, Sequence
+
+from ..core.methods.registry import METHODS, unknown_method
+from ..errors import OptionError
+from ..model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color
+
+__all__ = ["RenderOptions", "Progress", "MAX_ONION", "MAX_WORKERS", "DEFAULT_MAX_FRAMES", "canvas_limit",
+           "check_method", "check_methods", "check_size", "check_fps", "check_color", "check_choice"]
+
+Progress = Callable[[int, int], None]
+"""Called with ``(done, total)`` frames as a render goes."""
+
+MAX_ONION = 20
+"""The most ghosted inbetweens on each side of a frame."""
+MAX_WORKERS = 256
+DEFAULT_MAX_FRAMES = 100_000
+"""The guard against renders that would run for days (``max_frames``)."""
+
+
+def canvas_limit() -> int:
+    """The largest frame side in pixels (a comparison's panels together): the scene format's limit."""
+    from ..scenefile import LIMITS
+
+    return int(LIMITS["canvas"])
+
+
+def check_method(name: object, option: str = "method") -> str:
+    """``name`` if it is a method of the registry, else an :class:`OptionError` with a "did you mean"."""
+    if not isinstance(name, str) or name not in METHODS:
+        raise OptionError(unknown_method(name), option)
+    return name
+
+
+def check_methods(names: object, option: str) -> tuple[str, ...]:
+    """A non-empty list of method names (a single string is refused, not read letter by letter)."""
+    if isinstance(names, (str, bytes)) or not isinstance(names, Sequence):
+        raise OptionError(f"expected a list of method names, found {names!r}", option)
+    if not names:
+        raise OptionError("expected at least one method name, found none", option)
+    return tuple(check_method(name, option) for name in names)
+
+
+def _shown(value: object) -> str:
+    """``repr(value)``, a very long one cut (``10**400`` has 401 digits)."""
+    text = repr(value)
+    return text if len(text) <= 40 else f"{text[:20]}…({len(text)} characters)"
+
+
+def _whole(value: object, option: str, what: str) -> int:
+    if isinstance(value, bool) or not isinstance(value, (Integral, Real)):
+        raise OptionError(f"expected {what}, found {value!r}", option)
+    if isinstance(value, Real) and not isinstance(value, Integral):
+        if not math.isfinite(value) or not float(value).is_integer():
+            raise OptionError(f"expected {what}, found {value!r}", option)
+    return int(value)
+
+
+def check_size(size: object, option: str = "size") -> tuple[int, int]:
+    """``(width, height)`` in whole pixels from 1 to the canvas limit."""
+    limit = canvas_limit()
+    what = f"(width, height) in whole pixels from 1 to {limit}"
+    if isinstance(size, (str, bytes)) or not isinstance(size, Sequence) or len(size) != 2:
+        raise OptionError(f"expected {what}, found {size!r}", option)
+    width, height = (_whole(v, option, what) for v in size)
+    if not (1 <= width <= limit and 1 <= height <= limit):
+        raise OptionError(f"expected {what}, found {width}x{height}", option)
+    return width, height
+
+
+def check_fps(fps: object, option: str = "fps") -> float:
+    """A frame rate within the scene format's limits."""
+    from ..scenefile import LIMITS
+
+    low, high = LIMITS["fps"]
+    if isinstance(fps, bool) or not isinstance(fps, Real) or not low <= fps <= high:  # no float(): 10**400
+        raise OptionError(f"expected {low:g} to {high:g} frames per second, found {_shown(fps)}", option)
+    return float(fps)
+
+
+def check_color(value: object, option: str = "background") -> Color:
+    """A colour: ``#rgb``, ``#rgba``, ``#rrggbb``, ``#rrggbbaa``, ``none``, or an ``(r, g, b, a)`` tuple."""
+    from ..scenefile import parse_color
+
+    if isinstance(value, str):
+        if value.strip().lower() == "none":
+            return (0, 0, 0, 0)
+        return parse_color(value, lambda message: OptionError(message, option))
+    what = "a colour text or an (r, g, b, a) tuple of 0 to 255"
+    if not isinstance(value, Sequence) or len(value) != 4:
+        raise OptionError(f"expected {what}, found {value!r}", option)
+    r, g, b, a = (_whole(v, option, what) for v in value)
+    if not all(0 <= v <= 255 for v in (r, g, b, a)):
+        raise OptionError(f"expected {what}, found {value!r}", option)
+    return (r, g, b, a)
+
+
+def check_choice(value: object, choices: Sequence[str], option: str) -> str:
+    if not isinstance(value, str) or value not in choices:
+        raise OptionError(f"expected one of {', '.join(choices)}, found {value!r}", option)
+    return value
+
+
+def _count(value: object, low: int, high: int, option: str) -> int:
+    what = f"a whole number from {low} to {high}"
+    number = _whole(value, option, what)
+    if not low <= number <= high:
+        raise OptionError(f"expected {what}, found {value!r}", option)
+    return number
+
+
+def _flag(value: object, option: str) -> bool:
+    if not isinstance(value, bool):
+        raise OptionError(f"expected True or False, found {value!r}", option)
+    return value
+
+
+MAX_ERROR_RANGE = (0.001, 100.0)
+"""Output pixels the keyframed paths of a vector file may stray from the exact inbetween (``max_error``)."""
+
+
+def _max_error(value: object) -> float:
+    low, high = MAX_ERROR_RANGE
+    if isinstance(value, bool) or not isinstance(value, Real) or not low <= float(value) <= high:
+        raise OptionError(f"expected {low:g} to {high:g} output pixels, found {value!r}", "max_error")
+    return float(value)
+
+
+@dataclass(frozen=True, slots=True)
+class RenderOptions:
+    """Everything ``render`` takes besides the scene and the target, validated (see :meth:`create`).
+
+    ``compare`` is ``None`` (one picture), ``True`` (the scene's compare list) or methods; ``frames`` a
+    ``"A:B"`` text or a ``range`` (checked against the scene when the clip is known); ``size`` each
+    panel's; ``background`` a colour; ``cost``, ``align``, ``equal_counts`` put over the scene's
+    ``[correspondence]``, ``balance`` over every shape's; ``max_error`` (vector formats only) how far, in
+    output pixels, the keyframed paths may stray from the exact inbetween at a frame (default 0.25).
+    """
+
+    method: str | None = None
+    compare: tuple[str, ...] | bool | None = None
+    format: str | None = None
+    size: tuple[int, int] | None = None
+    fps: float | None = None
+    frames: str | range | None = None
+    background: Color | None = None
+    balance: str | None = None
+    cost: str | None = None
+    align: str | None = None
+    equal_counts: str | None = None
+    paths: bool = False
+    onion: int = 0
+    strip: bool = False
+    workers: int | None = None
+    cluster: str | None = None
+    max_frames: int = DEFAULT_MAX_FRAMES
+    progress: Progress | None = None
+    max_error: float | None = None  # vector formats: output pixels the keyframed paths may stray
+
+    @classmethod
+    def names(cls) -> tuple[str, ...]:
+        """The options' long names, as :func:`tweenrender.write` and the command line take them."""
+        return tuple(f.name for f in fields(cls))
+
+    @classmethod
+    def create(cls, **given: Any) -> RenderOptions:
+        """The options ``given`` by name (``None``: the default), each checked; unknown names are refused."""
+        unknown = [name for name in given if name not in cls.names()]
+        if unknown:
+            from ..errors import did_you_mean
+
+            raise OptionError(f"unknown option {unknown[0]!r}{did_you_mean(unknown[0], cls.names())}; "
+                              f"expected some of {', '.join(cls.names())}")
+        v = {name: value for name, value in given.items() if value is not None}
+        if "method" in v and v.get("compare") not in (None, False):
+            raise OptionError("method and compare do not go together: list the methods in compare")
+        if "workers" in v and "cluster" in v:
+            raise OptionError("workers and cluster do not go together: the cluster's workers draw the frames")
+        compare = v.get("compare")
+        if compare is not None and compare is not True and compare is not False:
+            compare = check_methods(compare, "compare")
+        if "format" in v:
+            from ..encode.formats import lookup
+
+            lookup(v["format"])
+        if "frames" in v and not isinstance(v["frames"], (str, range)):
+            raise OptionError(f"expected A:B (a text) or a range of frame indices, found {v['frames']!r}", "frames")
+        if "cluster" in v and not isinstance(v["cluster"], str):
+            raise OptionError(f"expected a scheduler address or local:N, found {v['cluster']!r}", "cluster")
+        if "cluster" in v:
+            from .cluster_address import parse_address
+
+            parse_address(v["cluster"])  # before any work: a bad address is a usage error, not a late failure
+        if "progress" in v and not callable(v["progress"]):
+            raise OptionError(f"expected a function of (done, total), found {v['progress']!r}", "progress")
+        return cls(
+            method=check_method(v["method"]) if "method" in v else None,
+            compare=compare or None,
+            format=v.get("format"),
+            size=check_size(v["size"]) if "size" in v else None,
+            fps=check_fps(v["fps"]) if "fps" in v else None,
+            frames=v.get("frames"),
+            background=check_color(v["background"]) if "background" in v else None,
+            balance=check_choice(v["balance"], BALANCES, "balance") if "balance" in v else None,
+            cost=check_choice(v["cost"], COSTS, "cost") if "cost" in v else None,
+            align=check_choice(v["align"], ALIGNS, "align") if "align" in v else None,
+            equal_counts=check_choice(v["equal_counts"], EQUAL_COUNTS, "equal_counts")
+            if "equal_counts" in v else None,
+            paths=_flag(v.get("paths", False), "paths"),
+            onion=_count(v.get("onion", 0), 0, MAX_ONION, "onion"),
+            strip=_flag(v.get("strip", False), "strip"),
+            workers=_count(v["workers"], 1, MAX_WORKERS, "workers") if "workers" in v else None,
+            cluster=v.get("cluster"),
+            max_frames=_count(v.get("max_frames", DEFAULT_MAX_FRAMES), 1, 10**12, "max_frames"),
+            progress=v.get("progress"),
+            max_error=_max_error(v["max_error"]) if "max_error" in v else None,
+        )

@@ -1,0 +1,330 @@
+"""What a vector file holds: every element's contours and paint at every frame, reduced to keyframes.
+
+:func:`vector_clip` samples each shape once per frame of the clip (exactly what the raster draws),
+maps scene units to output pixels, and splits each shape's frames into *runs*: consecutive frames
+of one segment on which it is drawn. A run keeps one list of contours (the segment's pairs, so
+every contour keeps one vertex count) and becomes a layer (Lottie, with ``ip``/``op``) or a path
+element shown over those frames (SVG). Keyframes come from :mod:`..core.keyframes`: a ``linear``
+segment whose keys fall on whole frames is exact with two keyframes and the segment's easing;
+every other run's paths are fitted within ``max_error`` pixels (keyframe values free within it, each
+span with its own timing; the run's first and last keyframes exact); paint within 1/255 (width, a
+gradient's geometry and clip paths within ``max_error``; see :mod:`.vector_paint`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
+from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
+from ..encode.vector_data import EASE_HANDLES, STRAIGHT, Handles, VectorClip, VectorRun
+from ..errors import OptionError
+from ..model import Color, Paint, Scene, Shape
+from ..core.view import Viewport
+from ..core.stacking import order_at
+from ..plan.job import RenderJob, scene_view, stacking_of, tracks_of
+from ..plan.options import RenderOptions
+from .paint_keys import clip_keys, clip_make, gradient_frame_paths, gradient_look, gradient_samples
+
+__all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR"]
+
+Array = NDArray[np.float64]
+DEFAULT_MAX_ERROR = 0.25
+"""Output pixels a baked path may stray from the exact inbetween at a frame time."""
+
+_ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
+_ROUNDING = 0.5e-3 * np.sqrt(2.0)
+"""How far a vertex moves when the files round its pixels to a thousandth: kept out of the bound."""
+
+
+RASTER_ONLY = ("compare", "paths", "onion", "strip", "workers", "cluster")
+"""Render options a vector file cannot carry: it holds the scene's own animated paths, drawn by its player."""
+
+
+def refuse_raster_options(fmt: str, options: RenderOptions) -> None:
+    """Refuse each of :data:`RASTER_ONLY` that ``options`` sets, naming it."""
+    for name in RASTER_ONLY:
+        if getattr(options, name) not in (None, False, 0):
+            raise OptionError(f"cannot be used with a {fmt} file, which holds the scene's own animated paths, "
+                              "drawn by its player; render a video or PNG frames for that", name)
+
+
+def write_vector(job: RenderJob, fmt: str, target: Path, max_error: float | None = None) -> Path:
+    """Write ``job`` (one panel, no overlays) as ``fmt`` (``lottie`` or ``svg``) to ``target``, atomically."""
+    from ..encode.animated_svg import write_animated_svg
+    from ..encode.lottie import write_lottie
+
+    if fmt not in ("lottie", "svg"):
+        raise OptionError(f"expected a vector format, lottie or svg, found {fmt!r}", "format")
+    clip = vector_clip(job, DEFAULT_MAX_ERROR if max_error is None else max_error)
+    return (write_lottie if fmt == "lottie" else write_animated_svg)(clip, target)
+
+
+def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorClip:
+    """Sample ``job`` (one panel) at every frame of its range and reduce each run to keyframes."""
+    if isinstance(max_error, bool) or not (isinstance(max_error, (int, float)) and np.isfinite(max_error)
+                                           and max_error > 0):
+        raise OptionError(f"expected a positive number of output pixels, found {max_error!r}", "max_error")
+    scene = job.scene
+    tracks = tracks_of(scene)
+    width, height = job.panel_size
+    viewport = Viewport(scene_view(scene, tracks, job.methods), width, height)
+    picked = job.frame_range
+    offset, count = picked.start, len(picked)
+    times = np.arange(offset, offset + count) / job.rate
+    orders, phases = _stacking(scene, tracks, times)
+    placed: list[tuple[int, int, VectorRun]] = []  # (stacking phase, place in its order, run)
+    for index, (shape, track) in enumerate(zip(scene.shapes, tracks)):
+        method = job.methods[0] or scene.method_of(shape)
+        shapes = track.at(times, method)
+        segments = track.segment_index(times) if track.segments else np.zeros(count, dtype=np.intp)
+        for first, stop in _runs_of(shape, shapes, segments, phases):
+            whole = int(phases[first]) == int(phases[stop - 1]) and (stop == count or phases[stop] == phases[first])
+            exact = _exact_keys(track, int(segments[first]), method, job.rate, offset, count)
+            ending = _ending(track, int(segments[first]), method, stop, job.rate, offset, count) \
+                if exact is None and whole else None
+            run = _run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error,
+                       times[first:stop], ending)
+            placed.append((int(phases[first]), orders[int(phases[first])].index(index), run))
+    runs = tuple(run for _, _, run in sorted(placed, key=lambda item: item[:2]))
+    return VectorClip((width, height), job.rate, count, scene.background, runs, max_error)
+
+
+def _stacking(scene: Scene, tracks: tuple[Track, ...], times: Array) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:
+    """The paint orders the clip passes through (shape indices, first painted first) and, per frame, which
+    of them is in force: ``(F,)``. A layer is split where the order switches (DESIGN: stacking switch)."""
+    plan = stacking_of(scene, tracks)
+    orders: list[tuple[int, ...]] = []
+    phases = np.zeros(len(times), dtype=np.intp)
+    for f, time in enumerate(times.tolist()):
+        order = order_at(plan, scene.shapes, time)
+        if not orders or orders[-1] != order:
+            orders.append(order)
+        phases[f] = len(orders) - 1
+    return orders, phases
+
+
+def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
+             phases: NDArray[np.intp]) -> list[tuple[int, int]]:
+    """Maximal ranges of frames of one segment and one paint order on which ``shape`` is drawn with finite
+    contours, the same windings, the same key's fill rule and stroke ends, the same kind of gradient fill
+    and clip paths of the same make."""
+    drawn = []
+    for at in shapes:
+        _refuse_cross_fade(shape, at)
+        drawn.append(at.visible and all(np.all(np.isfinite(c)) for c in at.contours)
+                     and all(at.clips))  # a clip region with no contours hides everything
+    gradients = _gradient_looks(shapes, segments)
+
+    def look(f: int) -> tuple[object, ...]:
+        at = shapes[f]
+        return (int(segments[f]), int(phases[f]), len(at.contours), at.reversed, _style(shape, at), gradients[f],
+                clip_make(at))
+
+    out: list[tuple[int, int]] = []
+    start = None
+    for f in range(len(shapes) + 1):
+        same = start is not None and f < len(shapes) and drawn[f] and look(f) == look(start)
+        if start is not None and not same:
+            out.append((start, f))
+            start = None
+        if start is None and f < len(shapes) and drawn[f]:
+            start = f
+    return out
+
+
+def _refuse_cross_fade(shape: Shape, at: ShapeAt) -> None:
+    """A vector file cannot carry cross-fading contours: refuse, naming the element."""
+    if at.fade is not None:
+        raise OptionError(f"element {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which the "
+                          "vector formats do not carry; render a video or PNG frames", "format")
+
+
+def _gradient_looks(shapes: list[ShapeAt], segments: NDArray[np.intp]) -> list[tuple[str, str] | None]:
+    """Per frame, the kind and spread of its gradient fill; a frame without one takes the nearest frame's of its
+    segment, so a key filled plainly stays in the run of the gradient it blends with."""
+    looks = [gradient_look(at.paint) for at in shapes]
+    count = len(looks)
+    nearest: list[list[int]] = [[] for _ in range(count)]  # the frames of the segment with a look, either side
+    for order in (range(count), range(count - 1, -1, -1)):
+        last, previous = None, None
+        for f in order:
+            if previous is not None and segments[f] != segments[previous]:
+                last = None
+            if looks[f] is not None:
+                last = f
+            if last is not None:
+                nearest[f].append(last)
+            previous = f
+    return [looks[min(near, key=lambda i: abs(i - f))] if near else None for f, near in enumerate(nearest)]
+
+
+def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int,
+                count: int) -> tuple[int, int, Segment] | None:
+    """The clip frames where a ``linear`` segment's motion starts (its first key, or after the key's hold)
+    and ends (its second key), and the segment, when both are whole frames of the clip, every pair moves
+    together (no stagger) and its easing has exact handles."""
+    if not track.segments:
+        return None
+    seg = track.segments[segment]
+    if segment_method(seg, method) != "linear" or _timing(seg) is None or seg.stagger > 0:
+        return None
+    ends = []
+    for time in (seg.start + seg.delay, seg.end):
+        at = time * fps - offset
+        if abs(at - round(at)) > _ON_FRAME or not 0 <= round(at) < count:
+            return None
+        ends.append(int(round(at)))
+    return ends[0], ends[1], seg
+
+
+def _timing(segment: Segment) -> Handles | None:
+    """The cubic-bezier handles of a segment's easing curve (else of its easing's name), if a Bézier draws it
+    and both files can carry it: SMIL's ``keySplines`` take values in [0, 1] only, so a curve that
+    overshoots is baked."""
+    handles = _handles(segment.easing) or _handles(segment.ease)
+    if handles is None or not all(0.0 <= h <= 1.0 for h in handles):
+        return None
+    return handles
+
+
+def _handles(ease: object) -> Handles | None:
+    """The cubic-bezier handles that draw a segment's easing exactly: its name's (``in``, ``out``, ``in-out``,
+    ``linear``), or those an easing object carries; ``None`` where no Bézier draws it."""
+    if isinstance(ease, str):
+        return EASE_HANDLES.get(ease)
+    if getattr(ease, "text", None) == "linear":
+        return STRAIGHT
+    handles = getattr(ease, "handles", None)
+    return None if handles is None else tuple(float(h) for h in handles)  # type: ignore[return-value]
+
+
+def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offset: int,
+            count: int) -> tuple[ShapeAt, list[Array]] | None:
+    """The segment's second key, when the run ends because that key is drawn at clip frame ``stop`` by
+    the next segment's run: then the run's keyframes go on to it, so a player moving between frames
+    ``stop - 1`` and ``stop`` moves towards the key rather than holding still."""
+    if not track.segments or stop >= count:
+        return None
+    seg = track.segments[segment]
+    at = seg.end * fps - offset
+    if abs(at - stop) > _ON_FRAME or segment + 1 >= len(track.segments):
+        return None
+    end = evaluate_segment(seg, np.array([1.0]), method)[0]
+    points = [p[0] for p in pair_paths(seg, np.array([1.0]), method)]  # every pair's, growing ones too
+    shares = tuple(0.0 if p.source[1] is None else 1.0 for p in seg.pairs)  # one shrunk to a point: no stroke
+    end = replace(end, widths=shares)
+    return (end, points) if end.fade is None and all(np.all(np.isfinite(p)) for p in points) else None
+
+
+def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: Viewport,
+         exact: tuple[int, int, Segment] | None, method: str, max_error: float, run_times: Array,
+         ending: tuple[ShapeAt, list[Array]] | None = None) -> VectorRun:
+    keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
+    flips = shapes[0].reversed or (False,) * len(shapes[0].contours)
+    samples = [np.stack([_drawn(viewport, at.contours[i], flips[i]) for at in shapes]) for i in keep]  # (F, L_i, 2)
+    joined = np.concatenate(samples, axis=1) if samples else np.zeros((len(shapes), 0, 2))
+    every_pair = exact is not None and len(shapes[0].contours) == len(exact[2].pairs)
+    if ending is not None and len(shapes[0].contours) == len(ending[1]):
+        # the key at frame ``stop`` closes the run's keyframes (not drawn by it)
+        end_shape, end_points = ending
+        samples = [np.concatenate([s, _drawn(viewport, end_points[i], flips[i])[None]])
+                   for s, i in zip(samples, keep)]
+        shapes = [*shapes, end_shape]
+    closed = tuple(shapes[0].closed[i] for i in keep)
+    paths: tuple[Array, ...] = ()
+    if exact is not None and every_pair:
+        a, b, segment = exact
+        ends = pair_paths(segment, np.array([0.0, 1.0]), method)  # every pair, growing ones too: (2, L_i, 2)
+        path_frames: tuple[int, ...] = (a, b)
+        paths = tuple(np.stack([_drawn(viewport, ends[i][0], flips[i]), _drawn(viewport, ends[i][1], flips[i])])
+                      for i in keep)
+        ease = _timing(segment) or STRAIGHT
+        eases: tuple[Handles, ...] = (ease,)
+        # the eased chord must be what is drawn at every frame (a contour may grow otherwise than straight)
+        t = segment.local_t(run_times)
+        k0 = np.concatenate([p[0] for p in paths]) if paths else np.zeros((0, 2))
+        k1 = np.concatenate([p[1] for p in paths]) if paths else np.zeros((0, 2))
+        chord = k0 + t[:, None, None] * (k1 - k0)
+        if paths and float(np.linalg.norm(chord - joined, axis=-1).max()) > max_error:
+            paths = ()
+            exact = None
+    if exact is None or not every_pair:
+        path_frames, paths, eases = (first,), (), ()
+        if samples:
+            keyed = fit_keyframes(np.concatenate(samples, axis=1), max(max_error - _ROUNDING, max_error / 2))
+            path_frames = tuple(first + k for k in keyed.frames)
+            paths = tuple(np.split(keyed.values, np.cumsum([s.shape[1] for s in samples])[:-1], axis=1))
+            eases = keyed.handles()
+    scale = viewport.scale if shape.stroke_scales else 1.0
+    paints = [at.paint for at in shapes]
+    fill, stroke, width, opacity = _paint_arrays(paints, scale)
+    gradient = gradient_samples(paints, viewport, max_error)
+    if gradient is not None:
+        fill = None  # filled by the gradient, a plain key as a gradient of its one colour
+    channels = paint_channels(_or_clear(fill, len(shapes)), _or_clear(stroke, len(shapes)), width, opacity,
+                              max_error)
+    shares = np.array([[at.widths[i] if at.widths else 1.0 for i in keep] for at in shapes]).reshape(len(shapes), -1)
+    contour_widths = None
+    if stroke is not None and np.any(shares != 1.0):
+        contour_widths = width[:, None] * shares  # (F, C)
+        channels = np.concatenate([channels, contour_widths[:, :, None] / max_error], axis=1)
+    channels = np.pad(channels, ((0, 0), (0, 0), (0, 1)))  # (F, C, 2), beside the gradient's points
+    if gradient is not None:
+        channels = np.concatenate([channels, gradient.channels()], axis=1)
+    paint_keys = greedy_keyframes(channels, 1.0)
+    pick = np.array(paint_keys)
+    rule, cap, join, miter = _style(shape, shapes[0])
+    run = VectorRun(shape.name, first, stop, path_frames, paths, closed, eases, tuple(first + k for k in paint_keys),
+                    None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
+                    opacity[pick], rule, cap, join, miter, joined,
+                    None if contour_widths is None else contour_widths[pick],
+                    None if gradient is None else gradient.keys(pick),
+                    clip_keys(shapes, first, viewport, max_error))
+    return replace(run, gradient_paths=gradient_frame_paths(run, max_error))
+
+
+def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:
+    """The fill rule, caps, joins and miter limit ``shape`` is drawn with at one time: its key's own, else its own."""
+    key = at.key
+    if key is None:
+        return shape.fill_rule, shape.cap, shape.join, shape.miter_limit
+    return (key.fill_rule or shape.fill_rule, key.cap or shape.cap, key.join or shape.join,
+            key.miter_limit or shape.miter_limit)
+
+
+def _drawn(viewport: Viewport, points: Array, flip: bool) -> Array:
+    """A contour ``(N, 2)`` in output pixels, in the order it is drawn (reversed where its key winds so)."""
+    pixels = viewport.to_pixels(points)
+    return pixels[::-1] if flip else pixels
+
+
+def _paint_arrays(paints: list[Paint], scale: float) -> tuple[Array | None, Array | None, Array, Array]:
+    """Fill and stroke ``(F, 4)`` straight RGBA in [0, 1] (``None`` where never drawn), stroke width
+    ``(F,)`` pixels and opacity ``(F,)`` of each frame's paint."""
+    return (_colours([p.fill for p in paints]), _colours([p.stroke for p in paints]),
+            np.array([p.stroke_width * scale for p in paints], dtype=np.float64),
+            np.array([p.opacity for p in paints], dtype=np.float64))
+
+
+def _colours(colours: list[Color | None]) -> Array | None:
+    """``(F, 4)`` in [0, 1]; a missing colour is the nearest present one at alpha 0; ``None`` if none is."""
+    present = [i for i, c in enumerate(colours) if c is not None]
+    if not present:
+        return None
+    out = np.empty((len(colours), 4))
+    for f, colour in enumerate(colours):
+        if colour is None:
+            near = colours[min(present, key=lambda i: abs(i - f))]
+            out[f] = (*(np.array(near[:3]) / 255.0), 0.0)  # type: ignore[index]
+        else:
+            out[f] = np.array(colour, dtype=np.float64) / 255.0
+    return out
+
+
+def _or_clear(colours: Array | None, frames: int) -> Array:
+    return np.zeros((frames, 4)) if colours is None else colours

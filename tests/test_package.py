@@ -29,8 +29,9 @@ ALLOWED = {
     "reports": {"scenefile", "core", "plan", "raster", "vector", "encode", "pipeline"},
     "api": {"scenefile", "core", "plan", "raster", "vector", "encode", "pipeline", "reports"},
     "preview": {"api"},
-    "cli": {"api"},
+    "cli": {"api", "preview"},  # cli/preview.py starts the page; test below
 }
+FRONT_ENDS = ("cli", "preview")
 THIRD_PARTY_HOME = {"skia": {"raster"}, "imageio_ffmpeg": {"encode"}, "imageio": {"encode"},
                     "svgelements": {"scenefile"}, "argparse": {"cli"}, "watchfiles": {"preview"}}
 
@@ -141,6 +142,43 @@ def test_stages_import_only_the_stages_below_them() -> None:
         for target in targets:
             other = stage(target)
             assert other is None or other == own or other in ALLOWED[own], f"{module} imports {target}"
+
+
+def test_the_front_ends_use_only_the_front_door() -> None:
+    # the command line and the preview reach the package through api and errors only (and their own modules);
+    # the preview command alone starts the preview's page
+    allowed = {"tweenrender.api", "tweenrender.errors"}
+    seen = set()
+    for module, targets in graph().items():
+        own = stage(module)
+        if own not in FRONT_ENDS:
+            continue
+        seen.add(own)
+        for target in targets - allowed:
+            if target.startswith(f"tweenrender.{own}") or target == f"tweenrender.{own}":
+                continue
+            if module == "tweenrender.cli.preview" and target == "tweenrender.preview":
+                continue
+            raise AssertionError(f"{module} imports {target}")
+    assert seen == set(FRONT_ENDS)
+
+
+def _package_of(module: str) -> str:
+    spec = importlib.util.find_spec(module)
+    return module if spec.origin.endswith("__init__.py") else module.rpartition(".")[0]
+
+
+def test_no_private_name_is_imported_from_another_package() -> None:
+    # a name or module starting with _ belongs to its package (and the packages inside it)
+    known = set(modules()) | {"tweenrender"}
+    for name in known:
+        own = _package_of(name)
+        for target in imports_of(Path(importlib.util.find_spec(name).origin), name):
+            holder, _, leaf = target.rpartition(".")
+            if not leaf.startswith("_") or leaf.startswith("__") or holder not in known:
+                continue
+            owner = holder if target in known else _package_of(holder)  # a private module: its package's
+            assert own == owner or own.startswith(owner + "."), f"{name} imports {target}"
 
 
 @pytest.mark.parametrize("library", sorted(THIRD_PARTY_HOME))

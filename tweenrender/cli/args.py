@@ -128,7 +128,7 @@ def _ranged(parse: Callable[[str], Number], what: str, low: float, high: float,
 
 def max_frames_flag(p: Any) -> None:
     """``--max-frames N``: the guard against renders that would run for days (the library holds to it)."""
-    from ..plan.options import DEFAULT_MAX_FRAMES
+    from ..api import DEFAULT_MAX_FRAMES
 
     p.add_argument("--max-frames", type=int, default=DEFAULT_MAX_FRAMES, metavar="N",
                    help=f"refuse to render more frames than this (default {DEFAULT_MAX_FRAMES})")

@@ -11,7 +11,7 @@ from .args import print_json
 from .inputs import add_scene_argument, is_morph, timing
 
 if TYPE_CHECKING:
-    from ..model import Scene
+    from ..api import Scene
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -28,8 +28,7 @@ def _count(number: int, noun: str) -> str:
 def run(args: argparse.Namespace) -> int:
     """Check every scene; a bad one is reported on its own line and the others are still checked."""
     from ..errors import SceneError
-    from ..reports.analyses import describe
-    from ..pipeline.library import load_scene
+    from ..api import describe, load_scene
 
     morph = is_morph(args.scene)
     if args.json and len(args.scene) != 1 and not morph:

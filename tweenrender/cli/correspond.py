@@ -22,14 +22,13 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..reports.analyses import correspondence
-    from ..reports.match_report import correspond_text
+    from ..api import correspondence, correspondence_text
 
     picture = None if args.json and args.output is None else default_png(args, "correspond")
     report = correspondence(load_one(args), picture, **matching_options(args))
     if args.json:
         print_json(report)
         return 0
-    print(correspond_text(escaped(report)))
+    print(correspondence_text(escaped(report)))
     print_path(picture)
     return 0

@@ -10,7 +10,7 @@ from ..errors import UsageError
 from .args import pause, seconds
 
 if TYPE_CHECKING:
-    from ..model import Scene
+    from ..api import Scene
 
 __all__ = ["add_scene_argument", "is_morph", "load_one", "load_each", "timing", "stem", "default_png"]
 
@@ -42,7 +42,7 @@ def is_morph(inputs: list[str]) -> bool:
 
 def load_one(args: argparse.Namespace) -> Scene:
     """The one scene of ``args.scene``: a scene file, or its SVG drawings as one morph."""
-    from ..pipeline.library import load_scene
+    from ..api import load_scene
 
     if not is_morph(args.scene):
         if len(args.scene) > 1:
@@ -53,7 +53,7 @@ def load_one(args: argparse.Namespace) -> Scene:
 
 def load_each(args: argparse.Namespace) -> list[Scene]:
     """Every scene of ``args.scene``: one morph of SVG drawings, or each scene file."""
-    from ..pipeline.library import load_scene
+    from ..api import load_scene
 
     if is_morph(args.scene):
         return [load_scene(args.scene, args.step, **timing(args))]

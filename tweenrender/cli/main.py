@@ -14,7 +14,7 @@ import sys
 from importlib import import_module
 from typing import Iterator, NoReturn, Sequence
 
-from .. import __version__
+from ..api import __version__
 from ..errors import OptionError, TweenrenderError, UsageError, printable
 
 __all__ = ["COMMANDS", "main", "build_parser"]

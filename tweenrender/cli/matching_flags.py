@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS
+from ..api import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS
 
 __all__ = ["add_matching_flags", "add_balance_flag", "matching_options"]
 

@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from ..errors import UsageError
-from ..core.methods.registry import METHODS
+from ..api import method_names
 from .args import fps, method, seconds, size
 
 
@@ -20,7 +20,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--step", type=seconds, metavar="S", default=1.0,
                    help="seconds between the keys of SVG drawings given on the command line (default 1)")
     p.add_argument("--method", type=method, metavar="M",
-                   help=f"the method to start with (the page can change it): {', '.join(METHODS)}")
+                   help=f"the method to start with (the page can change it): {', '.join(method_names())}")
     p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (default the scene's)")
     p.add_argument("--fps", type=fps, metavar="N")
     p.set_defaults(run=run)

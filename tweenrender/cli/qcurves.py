@@ -19,8 +19,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..reports.analyses import qcurves
-    from ..reports.qcurve_report import qcurves_text
+    from ..api import qcurves, qcurves_text
 
     picture = None if args.json and args.output is None else default_png(args, "qcurves")
     report = qcurves(load_one(args), picture)

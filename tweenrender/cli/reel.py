@@ -11,7 +11,7 @@ from .matching_flags import add_balance_flag, add_matching_flags, matching_optio
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from ..reports.documents import REEL_FPS, REEL_SIZE
+    from ..api import REEL_FPS, REEL_SIZE
 
     p = sub.add_parser("reel", help="a demo reel: a title card and a comparison for each scene, one video")
     add_scene_argument(p, several_scenes=True)
@@ -33,7 +33,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..reports.documents import reel
+    from ..api import reel
     from .progress import ProgressBar
 
     names = [stem(args.scene)] if is_morph(args.scene) else [Path(path).stem for path in args.scene]

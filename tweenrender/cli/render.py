@@ -15,8 +15,7 @@ from .overlay_flags import add_overlay_flags
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from ..core.methods.registry import METHODS
-    from ..encode.formats import FORMATS
+    from ..api import format_names, method_names
 
     p = sub.add_parser("render", help="render a scene, or SVG drawings morphing into each other, to video, PNG, "
                                        "Lottie or animated SVG")
@@ -24,10 +23,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("-o", "--output", metavar="OUT",
                    help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png, "
                         "output/<stem>.json for lottie, output/<stem>.svg for svg)")
-    p.add_argument("--method", type=method, metavar="M", help=f"one method for every shape: {', '.join(METHODS)}")
+    p.add_argument("--method", type=method, metavar="M", help=f"one method for every shape: {', '.join(method_names())}")
     p.add_argument("--compare", nargs="?", const="", metavar="M,M..",
                    help="one labelled panel per method, side by side (default: the scene's compare list)")
-    p.add_argument("--format", choices=FORMATS, help="the output format (default: from -o's extension); lottie "
+    p.add_argument("--format", choices=format_names(), help="the output format (default: from -o's extension); lottie "
                                                      "(.json) and svg (animated SVG) hold the paths, keyframed")
     p.add_argument("--max-error", type=float, metavar="PX",
                    help="lottie and svg: how far (output pixels) the keyframed paths may stray from the exact "
@@ -54,44 +53,23 @@ def register(sub: argparse._SubParsersAction) -> None:
 def default_target(inputs: list[str], fmt: str | None, compare: bool) -> Path:
     """``output/<stem><suffix>`` (``<stem>-compare`` for comparisons; a folder ``output/<stem>`` for PNG
     frames); the stem of several drawings is theirs joined by ``-``."""
-    from ..encode.formats import DEFAULT, TABLE, lookup
+    from ..api import default_suffix
 
-    name = stem(inputs) + ("-compare" if compare else "")
-    return Path("output") / (name + (lookup(fmt) if fmt else TABLE[DEFAULT]).suffix)
+    return Path("output") / (stem(inputs) + ("-compare" if compare else "") + default_suffix(fmt))
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..pipeline.library import write
-    from ..plan.options import RenderOptions
+    from ..api import RenderOptions, encoder_search_done, start_encoder_search, write
     from .progress import ProgressBar
 
     compare = None if args.compare is None else (methods(args.compare) if args.compare else True)
     target = args.output if args.output is not None else default_target(args.scene, args.format, compare is not None)
-    _find_encoder_early(args.format, Path(target))
+    start_encoder_search(target, args.format)
     try:
         given = {name: getattr(args, name) for name in RenderOptions.names() if hasattr(args, name)}
         options = RenderOptions.create(**{**given, "compare": compare, "progress": ProgressBar(
             Path(target).name, enabled=False if args.quiet else None)})
         print_path(write(load_one(args), target, options=options))
     finally:
-        from ..encode.sinks import ffmpeg_search_done
-
-        ffmpeg_search_done()
+        encoder_search_done()
     return 0
-
-
-def _find_encoder_early(fmt: str | None, target: Path) -> None:
-    """Start looking for ffmpeg while the scene loads, when the output is a video it encodes (a format that
-    cannot be told is left for ``write`` to refuse)."""
-    from ..encode.formats import TABLE
-    from ..errors import OptionError
-    from ..pipeline.library import output_format
-
-    try:
-        chosen = TABLE[output_format(target, fmt)]
-    except OptionError:
-        return
-    if chosen.ffmpeg:
-        from ..encode.sinks import find_ffmpeg_early
-
-        find_ffmpeg_early()

@@ -25,7 +25,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..reports.documents import report
+    from ..api import report
     from .progress import ProgressBar
 
     target = Path(args.output) if args.output is not None else Path("output") / f"{stem(args.scene)}-report"

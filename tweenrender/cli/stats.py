@@ -17,8 +17,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..reports.analyses import stats
-    from ..reports.stats import stats_text
+    from ..api import stats, stats_text
 
     report = stats(load_one(args), args.t)
     print_json(report) if args.json else print(stats_text(escaped(report)))

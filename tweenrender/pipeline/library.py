@@ -1,4 +1,4 @@
-"""The library's front door, in the style of imageio's v3 API: a few functions that return fresh data.
+"""What the front door (:mod:`tweenrender.api`) calls to load, draw and write: functions that return fresh data.
 
 ::
 
@@ -26,13 +26,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import OptionError
-from ..model import BALANCES, EQUAL_COUNTS, Color, DrawnContour, Points, Scene
+from ..model import Color, DrawnContour, Points, Scene
 from ..plan.job import RenderJob, pick_frames, total_frames
 from .frames import Frames
-from ..plan.options import RenderOptions, canvas_limit, check_choice, check_color, check_fps, check_method, check_size
+from ..plan.options import RenderOptions, canvas_limit, check_color, check_fps, check_method, check_scene, check_size
 
-__all__ = ["load_scene", "frame", "frames", "outlines", "contours", "write", "render_job", "output_format", "with_matching",
-           "with_balance", "not_an_input"]
+__all__ = ["load_scene", "frame", "frames", "outlines", "contours", "write", "render_job", "output_format",
+           "not_an_input"]
 
 _CACHE_SIZE = 4
 # Frames objects of recent (scene, method, size, background) calls: building one costs the
@@ -96,7 +96,7 @@ def frames(scene: Scene, *, method: str | None = None, size: tuple[int, int] | N
            background: str | Color | None = None, fps: float | None = None) -> Iterator[NDArray[np.uint8]]:
     """Every frame of the clip at ``fps`` (default the scene's), frame ``f`` at ``f / fps`` seconds:
     ``ceil(last time · fps − 1e-9) + 1`` fresh ``(height, width, 4)`` uint8 arrays, straight RGBA."""
-    scene = _scene(scene)
+    scene = check_scene(scene)
     rate = scene.fps if fps is None else check_fps(fps)
     job = _job(scene, None if method is None else check_method(method), None if size is None else check_size(size),
                None if background is None else check_color(background), fps=rate)
@@ -178,7 +178,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     from .chunks import render_in_processes
     from .workers import default_workers
 
-    scene = _scene(scene)
+    scene = check_scene(scene)
     if options is not None and named:
         raise OptionError(f"give the options either as options= or by name, not both ({', '.join(named)})")
     opts = options if isinstance(options, RenderOptions) else RenderOptions.create(**named)
@@ -216,7 +216,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
 def render_job(scene: Scene, options: RenderOptions) -> RenderJob:
     """The job ``write`` renders: the scene with the options' matching and balance put over its own,
     the panels, size, rate, frames and overlays."""
-    scene = with_balance(with_matching(scene, options.cost, options.align, options.equal_counts), options.balance)
+    scene = options.match.over(scene)
     panels: tuple[str | None, ...]
     if options.compare is True:
         panels = scene.compare
@@ -255,7 +255,7 @@ def output_format(target: Path, fmt: str | None = None) -> str:
 def _frames_for(scene: Scene, method: str | None, size: tuple[int, int] | None,
                 background: str | Color | None) -> Frames:
     """A :class:`Frames` for one panel, reused across calls with the same arguments."""
-    scene = _scene(scene)
+    scene = check_scene(scene)
     method = None if method is None else check_method(method)
     size = None if size is None else check_size(size)
     color = None if background is None else check_color(background)
@@ -285,12 +285,6 @@ def _job(scene: Scene, method: str | None, size: tuple[int, int] | None, backgro
     return RenderJob(scene, panels, size=(width, height), **options)  # type: ignore[arg-type]
 
 
-def _scene(scene: object) -> Scene:
-    if not isinstance(scene, Scene):
-        raise OptionError(f"scene: expected a scene from load_scene(), found {type(scene).__name__}")
-    return scene
-
-
 def _finite_time(time: object) -> float:
     if isinstance(time, bool) or not isinstance(time, Real):
         raise OptionError(f"expected seconds as a number, found {time!r}", "time")
@@ -301,27 +295,6 @@ def _finite_time(time: object) -> float:
     if not math.isfinite(value):
         raise OptionError(f"expected a finite number of seconds, found {time!r}", "time")
     return value
-
-
-def with_matching(scene: Scene, cost: str | None = None, align: str | None = None,
-                  equal_counts: str | None = None) -> Scene:
-    """``scene`` with the given ``[correspondence]`` settings put over its own (itself when none is given)."""
-    from ..model import ALIGNS, COSTS
-
-    changes = {}
-    for name, value, choices in (("cost", cost, COSTS), ("align", align, ALIGNS),
-                                 ("equal_counts", equal_counts, EQUAL_COUNTS)):
-        if value is not None:
-            changes[name] = check_choice(value, choices, name)
-    return replace(scene, matching=replace(scene.matching, **changes)) if changes else scene
-
-
-def with_balance(scene: Scene, balance: str | None) -> Scene:
-    """``scene`` with every shape balanced by ``balance`` (``"copies"`` or ``"spread"``; None: as it is)."""
-    if balance is None:
-        return scene
-    balance = check_choice(balance, BALANCES, "balance")
-    return replace(scene, balance=balance, shapes=tuple(replace(shape, balance=None) for shape in scene.shapes))
 
 
 def not_an_input(target: Path, scenes: Sequence[Scene], folder: bool = False, files: Sequence[str] = ()) -> None:

@@ -9,15 +9,15 @@ the library says ``fps=: …`` and the command line ``--fps: …``.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 from numbers import Integral, Real
 from typing import Any, Callable, Sequence
 
 from ..core.methods.registry import METHODS, unknown_method
 from ..errors import OptionError
-from ..model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color
+from ..model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color, Scene
 
-__all__ = ["RenderOptions", "Progress", "MAX_ONION", "MAX_WORKERS", "DEFAULT_MAX_FRAMES", "canvas_limit",
+__all__ = ["RenderOptions", "MatchSettings", "check_scene", "Progress", "MAX_ONION", "MAX_WORKERS", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS", "canvas_limit",
            "check_method", "check_methods", "check_size", "check_fps", "check_color", "check_choice"]
 
 Progress = Callable[[int, int], None]
@@ -28,6 +28,12 @@ MAX_ONION = 20
 MAX_WORKERS = 256
 DEFAULT_MAX_FRAMES = 100_000
 """The guard against renders that would run for days (``max_frames``)."""
+SHEET_COUNT = 7
+"""Inbetweens per row of a sheet, unless told."""
+REEL_SIZE = (1280, 720)
+"""A demo reel's size, unless told."""
+REEL_FPS = 24.0
+"""A demo reel's frame rate, unless told."""
 
 
 def canvas_limit() -> int:
@@ -107,6 +113,13 @@ def check_color(value: object, option: str = "background") -> Color:
     return (r, g, b, a)
 
 
+def check_scene(scene: object) -> Scene:
+    """``scene`` itself, refused unless it is a :class:`~tweenrender.model.Scene`."""
+    if not isinstance(scene, Scene):
+        raise OptionError(f"scene: expected a scene from load_scene(), found {type(scene).__name__}")
+    return scene
+
+
 def check_choice(value: object, choices: Sequence[str], option: str) -> str:
     if not isinstance(value, str) or value not in choices:
         raise OptionError(f"expected one of {', '.join(choices)}, found {value!r}", option)
@@ -139,6 +152,49 @@ def _max_error(value: object) -> float:
 
 
 @dataclass(frozen=True, slots=True)
+class MatchSettings:
+    """How the keys are put in correspondence and balanced, over the scene's own: ``cost``, ``align`` and
+    ``equal_counts`` over its ``[correspondence]``, ``balance`` over every shape's (None keeps the scene's).
+
+    What ``--cost``, ``--align``, ``--equal-counts`` and ``--balance`` give every command; the values are
+    checked when they are put over a scene (:meth:`over`)."""
+
+    cost: str | None = None
+    align: str | None = None
+    equal_counts: str | None = None
+    balance: str | None = None
+
+    @classmethod
+    def names(cls) -> tuple[str, ...]:
+        return tuple(f.name for f in fields(cls))
+
+    @classmethod
+    def create(cls, **given: str | None) -> MatchSettings:
+        """The settings ``given`` by name; a name that is not one of :meth:`names` is refused."""
+        for name in given:
+            if name not in cls.names():
+                from ..errors import did_you_mean
+
+                raise OptionError(f"unknown option {name!r}{did_you_mean(name, cls.names())}; "
+                                  f"expected some of {', '.join(cls.names())}")
+        return cls(**given)
+
+    def over(self, scene: object) -> Scene:
+        """``scene`` (checked) with these settings put over its own; itself when none is given."""
+        scene = check_scene(scene)
+        changes = {name: check_choice(value, choices, name)
+                   for name, value, choices in (("cost", self.cost, COSTS), ("align", self.align, ALIGNS),
+                                                ("equal_counts", self.equal_counts, EQUAL_COUNTS))
+                   if value is not None}
+        if changes:
+            scene = replace(scene, matching=replace(scene.matching, **changes))
+        if self.balance is None:
+            return scene
+        balance = check_choice(self.balance, BALANCES, "balance")
+        return replace(scene, balance=balance, shapes=tuple(replace(shape, balance=None) for shape in scene.shapes))
+
+
+@dataclass(frozen=True, slots=True)
 class RenderOptions:
     """Everything ``render`` takes besides the scene and the target, validated (see :meth:`create`).
 
@@ -168,6 +224,11 @@ class RenderOptions:
     max_frames: int = DEFAULT_MAX_FRAMES
     progress: Progress | None = None
     max_error: float | None = None  # vector formats: output pixels the keyframed paths may stray
+
+    @property
+    def match(self) -> MatchSettings:
+        """The correspondence and balance settings among these options."""
+        return MatchSettings(self.cost, self.align, self.equal_counts, self.balance)
 
     @classmethod
     def names(cls) -> tuple[str, ...]:

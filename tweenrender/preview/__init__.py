@@ -26,11 +26,9 @@ def serve_preview(inputs: Sequence[str | Path], *, method: str | None = None, si
     A scene that fails to load is shown as its one-line error on the page, as a later bad save is.
     KeyboardInterrupt and SystemExit (the CLI's SIGTERM) end it after the threads are stopped.
     """
-    from ..plan.options import check_fps, check_method, check_size
+    from ..api import check_preview_settings
 
-    method = None if method is None else check_method(method)
-    size = None if size is None else check_size(size)
-    fps = None if fps is None else check_fps(fps)
+    method, size, fps = check_preview_settings(method, size, fps)
     paths = [Path(p) for p in inputs]
     previewer = Previewer(paths, step=step, method=method, size=size, fps=fps)
     watcher = FileWatcher(previewer.changed)

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any, Sequence
 
 from ..errors import TweenrenderError, printable
-from ..core.methods.registry import METHODS
+from ..api import method_names
 
 __all__ = ["Take", "Previewer", "MAX_FRAMES"]
 
@@ -75,7 +75,7 @@ class Previewer:
             if since >= self.version and wait > 0:
                 self._condition.wait_for(lambda: self.version > since or self._stop.is_set(), timeout=wait)
             return {"version": self.version, "error": self.error, "method": self.method,
-                    "scene_method": self.scene_method, "methods": list(METHODS),
+                    "scene_method": self.scene_method, "methods": list(method_names()),
                     "take": self.take.describe() if self.take else None}
 
     def frame(self, take: int, index: int) -> bytes | None:
@@ -87,8 +87,8 @@ class Previewer:
 
     def choose_method(self, name: str | None) -> None:
         """Draw with ``name`` from now on (None: each shape's own); a ValueError for an unknown one."""
-        if name is not None and name not in METHODS:
-            raise ValueError(f"unknown method {name!r}; expected one of {', '.join(METHODS)}")
+        if name is not None and name not in method_names():
+            raise ValueError(f"unknown method {name!r}; expected one of {', '.join(method_names())}")
         self.method = name
         self.changed()
 
@@ -128,8 +128,7 @@ class Previewer:
                 self._publish(error=printable(f"unexpected {type(error).__name__}: {text}"))
 
     def _draw_take(self, changed_at: float) -> None:
-        from ..plan.job import total_frames
-        from ..pipeline.library import frames, load_scene
+        from ..api import frame_count, frames, load_scene, png_bytes
 
         inputs = [str(p) for p in self.inputs]
         scene = load_scene(inputs if len(inputs) > 1 else inputs[0], self.step)
@@ -137,12 +136,10 @@ class Previewer:
             self.on_sources(scene.sources or tuple(self.inputs))
         method = self.method
         rate = self.fps or scene.fps
-        total = total_frames(scene, rate)
+        total = frame_count(scene, rate)
         if total > MAX_FRAMES:
             raise TweenrenderError(f"{self.inputs[0]}: {total} frames at {rate:g} fps; the preview shows at most "
                                    f"{MAX_FRAMES}")
-        from ..encode.images import png_bytes
-
         pictures = frames(scene, method=method, size=self.size, fps=rate)
         first = next(pictures)
         self._takes += 1

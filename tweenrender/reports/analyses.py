@@ -11,9 +11,10 @@ from typing import Any, Sequence
 
 from ..errors import OptionError
 from ..model import Scene
-from ..pipeline.library import _scene, not_an_input, with_balance, with_matching
+from ..pipeline.library import not_an_input
+from ..plan.options import MatchSettings, check_scene
 
-__all__ = ["stats", "correspondence", "qcurves", "describe", "scene_name", "tuned", "picture_target"]
+__all__ = ["stats", "correspondence", "qcurves", "describe", "scene_name", "picture_target"]
 
 
 def scene_name(scene: Scene) -> str | list[str] | None:
@@ -22,12 +23,6 @@ def scene_name(scene: Scene) -> str | list[str] | None:
     if scene.path is not None and scene.path.suffix.lower() == ".svg":
         return [str(p) for p in scene.sources] or [str(scene.path)]
     return str(scene.path) if scene.path is not None else None
-
-
-def tuned(scene: Scene, cost: str | None = None, align: str | None = None, equal_counts: str | None = None,
-          balance: str | None = None) -> Scene:
-    """``scene`` with a ``[correspondence]`` setting or balance rule put over its own (as the flags do)."""
-    return with_balance(with_matching(_scene(scene), cost, align, equal_counts), balance)
 
 
 def picture_target(path: str | os.PathLike[str], what: str) -> Path:
@@ -46,7 +41,7 @@ def stats(scene: Scene, t: Sequence[float] = (0.5,), methods: Sequence[str] | No
     from .stats import stats_dict
     from ..plan.options import check_methods
 
-    scene = _scene(scene)
+    scene = check_scene(scene)
     if isinstance(t, (str, bytes)) or not isinstance(t, Sequence) or not t or \
             not all(isinstance(v, (int, float)) and not isinstance(v, bool) and 0.0 <= v <= 1.0 for v in t):
         raise OptionError(f"expected numbers in [0, 1], found {t!r}", "t")
@@ -54,14 +49,14 @@ def stats(scene: Scene, t: Sequence[float] = (0.5,), methods: Sequence[str] | No
     return {"scene": scene_name(scene), **_without_scene(stats_dict(scene, [float(v) for v in t], chosen))}
 
 
-def correspondence(scene: Scene, picture: str | os.PathLike[str] | None = None, *, cost: str | None = None,
-                   align: str | None = None, equal_counts: str | None = None) -> dict[str, Any]:
+def correspondence(scene: Scene, picture: str | os.PathLike[str] | None = None,
+                   match: MatchSettings = MatchSettings()) -> dict[str, Any]:
     """The vertex correspondence of every segment: pairs, balanced count, work (what ``correspond
     --json`` prints); ``picture`` names a PNG to draw it in."""
     from .match_report import correspond_dict, write_match_picture
 
     target = None if picture is None else picture_target(picture, "the picture")
-    scene = tuned(scene, cost, align, equal_counts)
+    scene = match.over(scene)
     if target is not None:
         not_an_input(target, [scene])
     report = {"scene": scene_name(scene), **_without_scene(correspond_dict(scene, scene.matching))}
@@ -76,7 +71,7 @@ def qcurves(scene: Scene, picture: str | os.PathLike[str] | None = None) -> dict
     from .qcurve_report import qcurves_dict, write_qcurve_plot
 
     target = None if picture is None else picture_target(picture, "the plot")
-    scene = _scene(scene)
+    scene = check_scene(scene)
     if target is not None:
         not_an_input(target, [scene])
     report = {"scene": scene_name(scene), **_without_scene(qcurves_dict(scene))}
@@ -91,7 +86,7 @@ def describe(scene: Scene) -> dict[str, Any]:
     from .check_report import scene_dict
     from ..plan.job import scene_view
 
-    scene = _scene(scene)
+    scene = check_scene(scene)
     report = scene_dict(scene, scene_view(scene, tracks_of(scene), (None,)))
     report["scene"] = scene_name(scene)
     return report

@@ -10,22 +10,16 @@ from typing import Callable, Sequence
 
 from ..errors import OptionError
 from ..model import Scene
-from .analyses import picture_target, tuned
-from ..pipeline.library import _scene, not_an_input, output_format
-from ..plan.options import DEFAULT_MAX_FRAMES, MAX_ONION, Progress, check_fps, check_methods, check_size
+from .analyses import picture_target
+from ..pipeline.library import not_an_input, output_format
+from ..plan.options import DEFAULT_MAX_FRAMES, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, MAX_ONION, Progress, check_fps, check_methods, check_size
 
-__all__ = ["sheet", "report", "reel", "DEFAULT_COUNT", "REEL_SIZE", "REEL_FPS"]
-
-DEFAULT_COUNT = 7
-"""Inbetweens per row of a sheet."""
-REEL_SIZE = (1280, 720)
-REEL_FPS = 24.0
+__all__ = ["sheet", "report", "reel"]
 
 
 def sheet(scene: Scene, path: str | os.PathLike[str], *, methods: Sequence[str] | None = None,
-          count: int = DEFAULT_COUNT, size: tuple[int, int] | None = None, paths: bool = False,
-          cost: str | None = None, align: str | None = None, equal_counts: str | None = None,
-          balance: str | None = None) -> Path:
+          count: int = SHEET_COUNT, size: tuple[int, int] | None = None, paths: bool = False,
+          match: MatchSettings = MatchSettings()) -> Path:
     """A storyboard PNG like the thesis's figures: one row per method (default the scene's compare list),
     ``count`` inbetweens evenly spaced over the clip; returns the path written."""
     from ..core.timing.timeline import tracks_of
@@ -33,7 +27,7 @@ def sheet(scene: Scene, path: str | os.PathLike[str], *, methods: Sequence[str] 
     from .pictures import write_sheet
 
     target = picture_target(path, "a sheet")
-    scene = tuned(scene, cost, align, equal_counts, balance)
+    scene = match.over(scene)
     not_an_input(target, [scene])
     rows = scene.compare if methods is None else check_methods(methods, "methods")
     if isinstance(count, bool) or not isinstance(count, int) or not 0 <= count <= 200:
@@ -45,8 +39,8 @@ def sheet(scene: Scene, path: str | os.PathLike[str], *, methods: Sequence[str] 
 
 
 def report(scene: Scene, path: str | os.PathLike[str], *, compare: Sequence[str] | None = None,
-           cost: str | None = None, align: str | None = None, equal_counts: str | None = None,
-           balance: str | None = None, progress: Callable[[str], Progress | None] | None = None) -> Path:
+           match: MatchSettings = MatchSettings(),
+           progress: Callable[[str], Progress | None] | None = None) -> Path:
     """The HTML report folder ``path``: every method's animation in sync, sheet, correspondence,
     metric charts and table; returns its ``index.html``. ``progress(name)`` may give a callback per video."""
     from .html_report import write_report
@@ -54,13 +48,13 @@ def report(scene: Scene, path: str | os.PathLike[str], *, compare: Sequence[str]
     if not isinstance(path, (str, os.PathLike)):
         raise OptionError(f"expected a folder name, found {path!r}", "path")
     methods = None if compare is None else check_methods(compare, "compare")
-    return write_report(tuned(scene, cost, align, equal_counts, balance), Path(path), methods, progress)
+    return write_report(match.over(scene), Path(path), methods, progress)
 
 
 def reel(scenes: Sequence[Scene], path: str | os.PathLike[str], *, names: Sequence[str] | None = None,
          size: tuple[int, int] = REEL_SIZE, fps: float = REEL_FPS, methods: Sequence[str] | None = None,
-         onion: int = 0, plain: bool = False, cost: str | None = None, align: str | None = None,
-         equal_counts: str | None = None, balance: str | None = None, max_frames: int = DEFAULT_MAX_FRAMES,
+         onion: int = 0, plain: bool = False, match: MatchSettings = MatchSettings(),
+         max_frames: int = DEFAULT_MAX_FRAMES,
          progress: Progress | None = None) -> Path:
     """A demo reel: a title card and a comparison of ``methods`` (default each scene's compare list) for
     each scene, in one video or folder of frames; returns the path written. ``names`` label the scenes
@@ -77,7 +71,7 @@ def reel(scenes: Sequence[Scene], path: str | os.PathLike[str], *, names: Sequen
     if fmt in ("lottie", "svg"):
         raise OptionError(f"{target}: a reel is a video of title cards and labelled comparisons, which a {fmt} "
                           "file cannot hold; write .mp4, .webm, .mov, .gif or a folder of PNG frames", "path")
-    chosen = [tuned(_scene(s), cost, align, equal_counts, balance) for s in scenes]
+    chosen = [match.over(s) for s in scenes]
     from ..encode.formats import TABLE
 
     not_an_input(target, chosen, folder=TABLE[fmt].folder)

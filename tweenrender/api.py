@@ -1,0 +1,299 @@
+"""The front door: every public function of tweenrender, each a thin check-and-call.
+
+::
+
+    import tweenrender as tr
+    scene = tr.load_scene("scenes/square.toml")
+    img = tr.frame(scene, 1.0, method="rigid", size=(640, 360))   # (360, 640, 4) uint8, straight RGBA
+    tr.write(scene, "output/square.mp4", compare=["linear", "nonlinear"])
+
+Times are in seconds. Every refusal is a :class:`~tweenrender.errors.TweenrenderError` whose message is
+the line the command line prints. The command line and the preview use this module (and
+:mod:`tweenrender.errors`) only; the stages below it do the work. Each function imports its stage when
+first called, so ``import tweenrender`` stays light.
+
+Four settings of the correspondence come by name wherever keys are matched (``sheet``, ``report``,
+``reel``, ``correspondence``; ``write`` takes them among its options): ``cost`` (``distance`` or
+``sg``), ``align`` (``centroid`` or ``none``), ``equal_counts`` (``drawn`` or ``match``), put over the
+scene's ``[correspondence]``, and ``balance`` (``copies`` or ``spread``), put over every shape's.
+They travel as one :class:`MatchSettings`.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any, Callable, Iterator, Sequence
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color, DrawnContour, Key, Matching, Points, Scene, Shape
+from .plan.options import DEFAULT_MAX_FRAMES, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, RenderOptions
+
+__all__ = [
+    "load_scene", "parse_scene", "frame", "frames", "outlines", "contours", "write", "interpolate",
+    "stats", "correspondence", "qcurves", "describe", "sheet", "report", "reel",
+    "stats_text", "correspondence_text", "qcurves_text", "frame_count", "png_bytes",
+    "method_names", "format_names", "output_format", "default_suffix", "check_preview_settings",
+    "start_encoder_search", "encoder_search_done",
+    "RenderOptions", "MatchSettings", "Scene", "Shape", "Key", "Matching", "DrawnContour",
+    "COSTS", "ALIGNS", "EQUAL_COUNTS", "BALANCES", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS",
+    "__version__",
+]
+__version__ = "0.2.0"
+
+Progress = Callable[[int, int], None]
+
+
+# -- scenes ----------------------------------------------------------------------------------------
+
+
+def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0,
+               ease: str = "linear", hold: float = 0.0, stagger: float = 0.0) -> Scene:
+    """The scene at ``path`` (TOML; JSON by its ``.json`` suffix; one SVG drawing by ``.svg``), validated;
+    or, for a list of SVG files, their drawings morphing one into the next (what ``tweenrender render
+    a.svg b.svg`` renders): each shown ``hold`` seconds, then moving for ``step`` seconds under ``ease``,
+    element i of a drawing starting ``i × stagger`` seconds later and arriving on time."""
+    from .pipeline.library import load_scene as load
+
+    return load(path, step, ease, hold, stagger)
+
+
+def parse_scene(text: str, path: str | os.PathLike[str], fmt: str = "toml") -> Scene:
+    """The scene written in ``text`` (``fmt`` ``"toml"`` or ``"json"``); ``path`` names it in errors and
+    places its relative file names."""
+    from .scenefile import parse_scene as parse
+
+    return parse(text, Path(path), fmt)
+
+
+def describe(scene: Scene) -> dict[str, Any]:
+    """The scene as loaded, in world units (what ``check --json`` prints)."""
+    from .reports.analyses import describe as described
+
+    return described(scene)
+
+
+# -- pictures and outlines -------------------------------------------------------------------------
+
+
+def frame(scene: Scene, time: float, *, method: str | None = None, size: tuple[int, int] | None = None,
+          background: str | Color | None = None) -> NDArray[np.uint8]:
+    """The picture at ``time`` seconds: a fresh ``(height, width, 4)`` uint8 array, straight RGBA.
+
+    ``method`` overrides every shape's own; ``size`` is ``(width, height)`` in pixels (default the
+    scene's); ``background`` a colour (``"#rrggbbaa"``, ``"none"``, or an RGBA tuple). Before the
+    first key the first key is drawn, after the last the last."""
+    from .pipeline.library import frame as drawn
+
+    return drawn(scene, time, method=method, size=size, background=background)
+
+
+def frames(scene: Scene, *, method: str | None = None, size: tuple[int, int] | None = None,
+           background: str | Color | None = None, fps: float | None = None) -> Iterator[NDArray[np.uint8]]:
+    """Every frame of the clip at ``fps`` (default the scene's), frame ``f`` at ``f / fps`` seconds:
+    ``frame_count(scene, fps)`` fresh ``(height, width, 4)`` uint8 arrays, straight RGBA."""
+    from .pipeline.library import frames as drawn
+
+    return drawn(scene, method=method, size=size, background=background, fps=fps)
+
+
+def frame_count(scene: Scene, fps: float | None = None) -> int:
+    """How many frames :func:`frames` yields at ``fps`` (default the scene's): ``ceil(last time · fps −
+    1e-9) + 1``."""
+    from .plan.job import total_frames
+    from .plan.options import check_fps, check_scene
+
+    return total_frames(check_scene(scene), None if fps is None else check_fps(fps))
+
+
+def outlines(scene: Scene, time: float, *, method: str | None = None) -> list[Points]:
+    """Every drawn contour at ``time`` seconds under ``method`` (default each shape's own): fresh ``(N, 2)``
+    float64 arrays in scene units, y up, in paint order (see :func:`contours`)."""
+    from .pipeline.library import outlines as drawn
+
+    return drawn(scene, time, method=method)
+
+
+def contours(scene: Scene, time: float, method: str | None = None) -> list[DrawnContour]:
+    """Every drawn contour at ``time`` seconds as :class:`~tweenrender.model.DrawnContour` s, in the order
+    of :func:`outlines`: which are open strokes, which holes, their element and paint."""
+    from .pipeline.library import contours as drawn
+
+    return drawn(scene, time, method=method)
+
+
+def interpolate(k0: ArrayLike, k1: ArrayLike, t: ArrayLike, method: str, joints: Sequence[Any] = ()) -> NDArray:
+    """Two corresponding keys ``(N, 2)`` at times ``t`` (``(T,)``) under ``method``: ``(T, N, 2)``."""
+    from .core.methods.registry import interpolate as moved
+
+    return moved(k0, k1, t, method, tuple(joints))  # type: ignore[arg-type]
+
+
+def png_bytes(picture: NDArray[np.uint8]) -> bytes:
+    """A straight-RGBA picture ``(height, width, 4)`` as the bytes of a PNG file (quick to compress)."""
+    from .encode.images import png_bytes as encoded
+
+    return encoded(picture)
+
+
+# -- writing ---------------------------------------------------------------------------------------
+
+
+def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions | None = None,
+          **named: Any) -> Path:
+    """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
+
+    Options come by their long names (``RenderOptions.names()``: ``method, compare, format, size, fps,
+    frames, background, balance, paths, onion, strip, cost, align, equal_counts, workers, cluster,
+    max_frames, progress, max_error``) or as one ``options`` object. The format is ``format`` or
+    ``path``'s extension (:func:`format_names`); a name without one is a folder of PNG frames. The
+    target changes only when the whole output was written and checked."""
+    from .pipeline.library import write as written
+
+    return written(scene, path, options=options, **named)
+
+
+def sheet(scene: Scene, path: str | os.PathLike[str], *, methods: Sequence[str] | None = None,
+          count: int = SHEET_COUNT, size: tuple[int, int] | None = None, paths: bool = False,
+          **match: str | None) -> Path:
+    """A storyboard PNG like the thesis's figures: one row per method (default the scene's compare list),
+    ``count`` inbetweens evenly spaced over the clip; ``match`` the correspondence settings (module
+    docstring); returns the path written."""
+    from .reports.documents import sheet as drawn
+
+    return drawn(scene, path, methods=methods, count=count, size=size, paths=paths,
+                 match=MatchSettings.create(**match))
+
+
+def report(scene: Scene, path: str | os.PathLike[str], *, compare: Sequence[str] | None = None,
+           progress: Callable[[str], Progress | None] | None = None, **match: str | None) -> Path:
+    """The HTML report folder ``path``: every method's animation in sync, sheet, correspondence, metric
+    charts and table; returns its ``index.html``. ``progress(name)`` may give a callback per video."""
+    from .reports.documents import report as written
+
+    return written(scene, path, compare=compare, match=MatchSettings.create(**match), progress=progress)
+
+
+def reel(scenes: Sequence[Scene], path: str | os.PathLike[str], *, names: Sequence[str] | None = None,
+         size: tuple[int, int] = REEL_SIZE, fps: float = REEL_FPS, methods: Sequence[str] | None = None,
+         onion: int = 0, plain: bool = False, max_frames: int = DEFAULT_MAX_FRAMES,
+         progress: Progress | None = None, **match: str | None) -> Path:
+    """A demo reel: a title card and a comparison of ``methods`` (default each scene's compare list) for
+    each scene, in one video or folder of frames; returns the path written. ``names`` label the scenes
+    (default their files' stems); ``plain`` leaves out vertex paths and the perimeter strip."""
+    from .reports.documents import reel as written
+
+    return written(scenes, path, names=names, size=size, fps=fps, methods=methods, onion=onion, plain=plain,
+                   match=MatchSettings.create(**match), max_frames=max_frames, progress=progress)
+
+
+def output_format(path: str | os.PathLike[str], fmt: str | None = None) -> str:
+    """The format ``path`` is written in: ``fmt``, else its extension; a name without one is PNG frames."""
+    from .pipeline.library import output_format as chosen
+
+    return chosen(Path(path), fmt)
+
+
+def default_suffix(fmt: str | None = None) -> str:
+    """The ending of a default output name in ``fmt`` (default the default format; ``""`` for a folder)."""
+    from .encode.formats import DEFAULT, TABLE, lookup
+
+    return (lookup(fmt) if fmt else TABLE[DEFAULT]).suffix
+
+
+def format_names() -> tuple[str, ...]:
+    """Every output format's name, in the format table's order."""
+    from .encode.formats import FORMATS
+
+    return tuple(FORMATS)
+
+
+def method_names() -> tuple[str, ...]:
+    """Every interpolation method's name, in the registry's order."""
+    from .core.methods.registry import METHODS
+
+    return tuple(METHODS)
+
+
+def start_encoder_search(path: str | os.PathLike[str], fmt: str | None = None) -> None:
+    """Begin looking for ffmpeg on a thread while the scene loads, where ``path`` is a video it encodes (a
+    format that cannot be told is left for :func:`write` to refuse)."""
+    from .encode.formats import TABLE
+    from .errors import OptionError
+
+    try:
+        chosen = TABLE[output_format(path, fmt)]
+    except OptionError:
+        return
+    if chosen.ffmpeg:
+        from .encode.sinks import find_ffmpeg_early
+
+        find_ffmpeg_early()
+
+
+def encoder_search_done() -> None:
+    """Wait for the search :func:`start_encoder_search` began, so that no child process outlives a command."""
+    from .encode.sinks import ffmpeg_search_done
+
+    ffmpeg_search_done()
+
+
+def check_preview_settings(method: str | None, size: tuple[int, int] | None,
+                           fps: float | None) -> tuple[str | None, tuple[int, int] | None, float | None]:
+    """The preview's ``method``, ``size`` and ``fps``, each checked as :func:`write` checks it (None: the
+    scene's)."""
+    from .plan.options import check_fps, check_method, check_size
+
+    return (None if method is None else check_method(method), None if size is None else check_size(size),
+            None if fps is None else check_fps(fps))
+
+
+# -- reports ---------------------------------------------------------------------------------------
+
+
+def stats(scene: Scene, t: Sequence[float] = (0.5,), methods: Sequence[str] | None = None) -> dict[str, Any]:
+    """The thesis's ch. 6 perimeter report and the quality measures per shape, segment and method, at
+    ``t`` within each segment (what ``stats --json`` prints)."""
+    from .reports.analyses import stats as measured
+
+    return measured(scene, t, methods)
+
+
+def correspondence(scene: Scene, picture: str | os.PathLike[str] | None = None,
+                   **match: str | None) -> dict[str, Any]:
+    """The vertex correspondence of every segment: pairs, balanced count, work (what ``correspond --json``
+    prints); ``picture`` names a PNG to draw it in; ``match`` the correspondence settings."""
+    from .reports.analyses import correspondence as matched
+
+    return matched(scene, picture, MatchSettings.create(**match))
+
+
+def qcurves(scene: Scene, picture: str | os.PathLike[str] | None = None) -> dict[str, Any]:
+    """Every vertex's Q-curve, the motion it shows and auto's choice (what ``qcurves --json`` prints);
+    ``picture`` names a PNG to plot them in."""
+    from .reports.analyses import qcurves as curves
+
+    return curves(scene, picture)
+
+
+def stats_text(report: dict[str, Any]) -> str:
+    """:func:`stats`' report as the lines ``tweenrender stats`` prints."""
+    from .reports.stats import stats_text as text
+
+    return text(report)
+
+
+def correspondence_text(report: dict[str, Any]) -> str:
+    """:func:`correspondence`'s report as the lines ``tweenrender correspond`` prints."""
+    from .reports.match_report import correspond_text
+
+    return correspond_text(report)
+
+
+def qcurves_text(report: dict[str, Any]) -> str:
+    """:func:`qcurves`' report as the lines ``tweenrender qcurves`` prints."""
+    from .reports.qcurve_report import qcurves_text as text
+
+    return text(report)

@@ -3,8 +3,10 @@
 After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
 (2001), on Floater & Gotsman, "How to morph tilings injectively" (1999):
 
-1. the best-fit rigid motion (maths §5.2) is taken out: key 1 is turned back
-   by the best-fit angle φ about its vertex mean, both keys centred;
+1. a rigid turn is taken out: where key 1 is key 0 turned (to within ``_RIGID`` of its
+   size, after the best fit, maths §5.2), key 1 is turned back by that angle φ about its vertex
+   mean; between keys that differ φ = 0 (a best-fit turn of unlike shapes is arbitrary and
+   would swing the in-betweens round); both keys are centred;
 2. the contours of both keys get one compatible triangulation inside a common
    frame (:mod:`.compatible`);
 3. in each key every vertex but the frame's is the mean-value combination
@@ -13,10 +15,14 @@ After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
    vertices solve ``x_i = Σ_j λ_ij(t)·x_j`` with the frame held (one sparse LU
    per frame). By Tutte and Floater the result is a valid triangulation at every
    t, so no contour crosses itself or another, and a hole stays in its outline;
-4. the contours are scaled about their vertex mean to the keys' interpolated
-   area, ``(1-t)·A0 + t·A1`` (closed contours' signed areas summed): a
-   similarity keeps them simple, and the solve alone pulls shapes in mid-way;
-5. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
+4. that solve is valid but lets the shape wander and distort; the in-between drawn is the
+   shape-keeping solve of :mod:`.bounded_distortion` (each triangle turning and stretching by
+   a share of its own change, made injective by projection), blended toward step 3's where it
+   alone cannot keep every triangle's orientation;
+5. the contours are centred (their vertex mean follows the straight path) and scaled about it
+   to the keys' interpolated area, ``(1-t)·A0 + t·A1`` (closed contours' signed areas summed):
+   a similarity keeps them simple;
+6. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
    mean, which moves on a straight line.
 
 Copies of a vertex (balancing by copies) are spread along their edges first
@@ -37,6 +43,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..balance import coincident_runs, spread
+from .bounded_distortion import ShapeKeepingSolve, material_triangles
 from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
 from ..geometry import best_fit_rotation, centroid, rotate
 from .paths import as_times, rigid
@@ -47,6 +54,7 @@ Array = NDArray[np.float64]
 
 _CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
 _FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
+_RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off by this share of its size
 _cache: OrderedDict[bytes, Callable[[Array], list[Array]]] = OrderedDict()
 
 
@@ -99,7 +107,7 @@ class _Paths:
         self.scale = float(max(np.abs(k0).max(initial=0.0), np.abs(k1).max(initial=0.0))) or 1.0
         k0, k1 = k0 / self.scale, k1 / self.scale
         self.c0, self.c1 = centroid(k0), centroid(k1)
-        self.phi = float(best_fit_rotation(k0, k1))
+        self.phi = _rigid_turn(k0 - self.c0, k1 - self.c1)
         a0, a1 = k0 - self.c0, rotate(k1 - self.c1, -self.phi)
         self.mesh = mesh = compatible_triangulation(a0, a1, cuts, closed)
         rows, cols, self.w0 = mean_value_weights(mesh.p0, mesh.triangles)
@@ -120,6 +128,7 @@ class _Paths:
         self.frame = mesh.p0[mesh.frame]
         self.cuts, self.closed = list(cuts), list(closed)
         self.areas = (self._area(a0), self._area(a1))
+        self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed))
 
     def _area(self, points: Array) -> float:
         """Signed area of the closed contours of ``points (N, 2)`` together (holes wound the other way count less)."""
@@ -155,10 +164,22 @@ class _Paths:
             matrix = identity(size, format="csc") - csc_matrix((w[self.inner], (r_in, c_in)), shape=(size, size))
             rhs = np.zeros((size, 2))
             np.add.at(rhs, r_out, w[self.outer][:, None] * boundary)
-            x = splu(matrix).solve(rhs)
-            out[f] = self._sized(x[self.slot[:n]], s)
+            convex = np.array(mesh.p0)
+            convex[self.free] = splu(matrix).solve(rhs)
+            kept = self.keeping(s, convex)[:n]
+            out[f] = self._sized(kept - kept.mean(axis=0), s)  # its vertex mean on the straight path
         center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
         return self.scale * (center[:, None, :] + rotate(out, (t * self.phi)[:, None]))
+
+
+def _rigid_turn(a: Array, b: Array) -> float:
+    """The angle that turns ``a`` onto ``b`` (both ``(N, 2)``, centred) where ``b`` is ``a`` turned, to
+    within ``_RIGID`` of its size; else 0: between shapes that differ, a best-fit turn is arbitrary
+    and would swing the in-betweens round (each triangle's own turn is kept by the solve)."""
+    phi = float(best_fit_rotation(a, b))
+    size = float(np.sqrt(np.mean(np.sum(a * a, axis=1)) + np.mean(np.sum(b * b, axis=1)))) or 1.0
+    residual = float(np.sqrt(np.mean(np.sum((rotate(a, phi) - b) ** 2, axis=1))))
+    return phi if residual <= _RIGID * size else 0.0
 
 
 def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> Callable[[Array], list[Array]]:

@@ -1,0 +1,173 @@
+"""In-betweens on a compatible mesh that keep each triangle's shape, then made injective (maths §5.16).
+
+The convex-combination solve of :mod:`.injective` is valid at every t but lets a shape wander and
+distort: its weights, blended inside a far frame, say nothing of the triangles' own shapes. Here,
+after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013):
+
+1. each triangle's change from key 0 to key 1 is the affine map ``A = R(θ)·S`` (polar
+   decomposition, ``S`` symmetric positive definite; ``det A > 0`` since the mesh is valid in both
+   keys); at ``t`` its target is ``B(t) = R(t·θ)·((1 − t)·I + t·S)``, which turns and stretches by
+   a share of its own change and never flips;
+2. the vertices solve the least-squares fit of every triangle's Jacobian to its target, the frame
+   held (one sparse factorisation for all t), triangles weighted by area, those between the
+   contours (not inside any filled region) lightly: the shape's own triangles decide its form;
+3. where a triangle would flip (det ≤ 0), its target becomes the nearest Jacobian with a positive
+   determinant and singular values no less than ``_FLOOR`` of its target's least (projection onto
+   a bounded-distortion set) and its weight grows; a few rounds of this local-global projection end
+   where every triangle keeps its orientation;
+4. where they do not, the solve is blended toward the convex-combination solve (valid by Tutte and
+   Floater) by the least share that makes every triangle keep its orientation.
+
+Every triangle positively oriented and the frame convex and held make the mesh an embedding at
+every t (a locally injective map with a simple boundary is injective), so no contour crosses itself
+or another and a hole stays inside its outline.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..contours import inside
+from .compatible import CompatibleMesh
+
+__all__ = ["ShapeKeepingSolve", "material_triangles"]
+
+Array = NDArray[np.float64]
+
+_AIR = 1e-2  # weight of a triangle between the contours, against one inside a filled region
+_FLOOR = 0.25  # a projected triangle keeps this share of its target's least singular value
+_ROUNDS = 12  # projection rounds at most
+_GROWTH = 8.0  # weight factor of a triangle each round it is still projected
+_BLENDS = (0.875, 0.75, 0.5, 0.25, 0.125, 0.0)  # shares of the shape-keeping solve tried, else
+
+
+def material_triangles(mesh: CompatibleMesh, cuts: list[int], closed: list[bool]) -> NDArray[np.bool_]:
+    """Which triangles of ``mesh`` lie inside the filled region of the closed contours in key 0 (even-odd
+    over every closed contour, probed at the triangle's centroid): ``(F,)`` bool."""
+    middle = mesh.p0[mesh.triangles].mean(axis=1)
+    filled = np.zeros(len(middle), dtype=bool)
+    for start, end, shut in zip(cuts, cuts[1:], closed):
+        if shut and end - start >= 3:
+            filled ^= inside(middle, mesh.p0[start:end])
+    return filled
+
+
+class ShapeKeepingSolve:
+    """The shape-keeping positions of every mesh vertex at ``s`` in [0, 1]: call with ``s`` and the
+    convex-combination positions ``(V, 2)`` at ``s`` (for step 4) for ``(V, 2)``."""
+
+    def __init__(self, mesh: CompatibleMesh, material: NDArray[np.bool_]) -> None:
+        p0, p1, tri = mesh.p0, mesh.p1, mesh.triangles
+        self.mesh, self.tri = mesh, tri
+        e0 = np.stack([p0[tri[:, 1]] - p0[tri[:, 0]], p0[tri[:, 2]] - p0[tri[:, 0]]], axis=-1)  # (F, 2, 2) columns
+        e1 = np.stack([p1[tri[:, 1]] - p1[tri[:, 0]], p1[tri[:, 2]] - p1[tri[:, 0]]], axis=-1)
+        d0, d1 = np.linalg.det(e0), np.linalg.det(e1)
+        scale = float(np.abs(p0).max(initial=1.0)) ** 2
+        self.good = (d0 > 1e-12 * scale) & (d1 > 1e-12 * scale)  # slivers flat to rounding take no part
+        inv0 = np.zeros_like(e0)
+        inv0[self.good] = np.linalg.inv(e0[self.good])
+        self.inv0 = inv0
+        change = e1 @ inv0
+        u, sigma, vt = np.linalg.svd(change)
+        rotation = u @ vt
+        self.theta = np.arctan2(rotation[:, 1, 0], rotation[:, 0, 0])
+        self.stretch = np.einsum("fji,fj,fjk->fik", vt, sigma, vt)  # Vᵀ Σ V: symmetric, positive definite
+        area = 0.25 * (np.abs(d0) + np.abs(d1))
+        self.base = np.where(self.good, area * np.where(material, 1.0, _AIR), 0.0)
+        self.operator = self._gradient()
+        fixed = np.zeros(len(p0), dtype=bool)
+        fixed[mesh.frame] = True
+        self.free, self.fixed = np.flatnonzero(~fixed), np.flatnonzero(fixed)
+        self._factor: tuple[bytes, object, float] | None = None
+
+    def _gradient(self):  # noqa: ANN202 - a scipy sparse matrix
+        """The ``(2F, V)`` operator taking one coordinate of the vertices to the Jacobians' rows:
+        row ``2j + k`` is ``∂(that coordinate)/∂(key-0 coordinate k)`` on triangle j."""
+        from scipy.sparse import csr_matrix
+
+        tri, inv0 = self.tri, self.inv0
+        f = len(tri)
+        rows = np.repeat(np.arange(2 * f), 3)
+        a, b, c = (np.repeat(tri[:, i], 2) for i in range(3))
+        ga, gb = inv0[:, 0, :].reshape(-1), inv0[:, 1, :].reshape(-1)  # row 2j+k: inv0[j, 0, k], inv0[j, 1, k]
+        cols = np.stack([a, b, c], axis=1).reshape(-1)
+        values = np.stack([-(ga + gb), ga, gb], axis=1).reshape(-1)
+        return csr_matrix((values, (rows, cols)), shape=(2 * f, len(self.mesh.p0)))
+
+    def targets(self, s: float) -> Array:
+        """Each triangle's Jacobian at ``s``: ``R(s·θ)·((1 − s)·I + s·S)``, ``(F, 2, 2)``."""
+        angle = s * self.theta
+        cos, sin = np.cos(angle), np.sin(angle)
+        turn = np.stack([np.stack([cos, -sin], -1), np.stack([sin, cos], -1)], axis=-2)
+        return turn @ ((1.0 - s) * np.eye(2) + s * self.stretch)
+
+    def _solve(self, weights: Array, goal: Array, convex: Array) -> Array:
+        """The vertices ``(V, 2)`` whose Jacobians fit ``goal (F, 2, 2)`` best under ``weights (F,)``; a
+        vanishing pull toward ``convex (V, 2)`` places a vertex no triangle with area holds."""
+        from scipy.sparse import diags
+        from scipy.sparse.linalg import splu
+
+        g, free, fixed = self.operator, self.free, self.fixed
+        w = diags(np.repeat(weights, 2))
+        key = weights.tobytes()
+        if self._factor is None or self._factor[0] != key:
+            gf = g[:, free]
+            normal = (gf.T @ w @ gf).tocsc()
+            pull = 1e-9 * float(normal.diagonal().mean() or 1.0)
+            self._factor = (key, splu(normal + pull * _identity(len(free))), pull)
+        _, lu, pull = self._factor
+        out = np.array(self.mesh.p0, dtype=np.float64)
+        held = g[:, fixed] @ out[fixed]  # (2F, 2): the held frame's part of each Jacobian row
+        for r in range(2):
+            rhs = goal[:, r, :].reshape(-1) - held[:, r]
+            out[free, r] = lu.solve(g[:, free].T @ (w @ rhs) + pull * convex[free, r])  # type: ignore[attr-defined]
+        return out
+
+    def _orientation(self, x: Array) -> Array:
+        t = self.tri
+        a, b = x[t[:, 1]] - x[t[:, 0]], x[t[:, 2]] - x[t[:, 0]]
+        return a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+
+    def _valid(self, x: Array) -> bool:
+        return bool(np.all(self._orientation(x)[self.good] > 0.0)) and bool(np.all(np.isfinite(x)))
+
+    def __call__(self, s: float, convex: Array) -> Array:
+        if s <= 0.0:
+            return np.array(self.mesh.p0)
+        if s >= 1.0:
+            return np.array(self.mesh.p1)
+        goal = self.targets(s)
+        weights = self.base.copy()
+        x = self._solve(weights, goal, convex)
+        floor = _FLOOR * np.linalg.svd(goal, compute_uv=False)[:, 1]  # a share of each target's least stretch
+        for _ in range(_ROUNDS):
+            bad = self.good & (self._orientation(x) <= 0.0)
+            if not bad.any():
+                return x
+            u, sigma, vt = np.linalg.svd(self._jacobians(x))
+            flipped = np.linalg.det(u) * np.linalg.det(vt) < 0
+            u[flipped, :, 1] *= -1.0  # signed SVD: U, Vᵀ rotations, the smaller value carries the sign
+            sigma[flipped, 1] *= -1.0
+            sigma = np.maximum(sigma, floor[:, None])
+            goal = np.where(bad[:, None, None], (u * sigma[:, None, :]) @ vt, goal)
+            weights = np.where(bad, weights * _GROWTH, weights)
+            x = self._solve(weights, goal, convex)
+        if self._valid(x):
+            return x
+        for share in _BLENDS:
+            mixed = share * x + (1.0 - share) * convex
+            if self._valid(mixed):
+                return mixed
+        return convex
+
+    def _jacobians(self, x: Array) -> Array:
+        t = self.tri
+        e = np.stack([x[t[:, 1]] - x[t[:, 0]], x[t[:, 2]] - x[t[:, 0]]], axis=-1)
+        return e @ self.inv0
+
+
+def _identity(size: int):  # noqa: ANN202 - a scipy sparse matrix
+    from scipy.sparse import identity
+
+    return identity(size, format="csc")

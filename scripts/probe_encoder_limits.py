@@ -18,7 +18,7 @@ from pathlib import Path
 
 import imageio_ffmpeg
 
-from tweenrender.encode.limits import formats_for
+from tweenrender.encode.formats import formats_for
 from tweenrender.encode.sinks import ffmpeg_command
 
 THIN = [("mp4", 16384, 2), ("mp4", 16386, 2), ("mp4", 2, 16384), ("mp4", 2, 16386), ("webm", 16384, 2),
@@ -48,7 +48,7 @@ def main(argv: list[str]) -> int:
         predicted = fmt in formats_for(width, height)
         wrong += measured != predicted
         print(f"{fmt:5} {width:>6}x{height:<6} {'encoder' if encode else 'picture check':13} "
-              f"ffmpeg {'takes' if measured else 'refuses':8} limits.py {'takes' if predicted else 'refuses':8}"
+              f"ffmpeg {'takes' if measured else 'refuses':8} formats.py {'takes' if predicted else 'refuses':8}"
               f"{'' if measured == predicted else '  DISAGREE'}", flush=True)
     print(f"{len(cases) - wrong} of {len(cases)} agree")
     return 1 if wrong else 0

@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "EASES", "COSTS", "ALIGNS", "EQUAL_COUNTS",
+    "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "COSTS", "ALIGNS", "EQUAL_COUNTS",
     "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint", "Shape",
     "Matching", "Scene", "DrawnContour", "Gradient", "frozen_points",
 ]
@@ -27,8 +27,6 @@ Color = tuple[int, int, int, int]
 BALANCES: tuple[str, ...] = ("copies", "spread")
 DEFAULT_BALANCE = "copies"
 """The balance rule of scenes that name none (benchmarks/balance_rules.py measured the two)."""
-EASES: tuple[str, ...] = ("linear", "in", "out", "in-out")
-"""The older easing names; ``core.easing`` reads these and CSS's curves, ``steps`` and ``hold``."""
 COSTS: tuple[str, ...] = ("distance", "sg")
 ALIGNS: tuple[str, ...] = ("none", "centroid")
 EQUAL_COUNTS: tuple[str, ...] = ("drawn", "match")
@@ -120,8 +118,9 @@ class Key:
     (a drawing's keys carry their own). ``layer`` is a drawing's key's place in that drawing's
     paint order (0 first; ``None`` for shapes of a scene file, painted in file order); ``clips``
     its SVG clip paths in world units.
-    ``ease`` is the easing as written; ``easing`` the parsed one (a ``core.easing`` object;
-    ``None``: parsed from ``ease``), a spacing chart included. ``hints`` are this key's shape
+    ``ease`` is the easing as the scene writes it (``"spacing"`` for a spacing chart); ``easing`` the
+    curve it names (a :mod:`.core.timing.easing` object, a spacing chart included; ``None``: parsed
+    from ``ease`` when the timeline is built). ``hints`` are this key's shape
     hints; ``delay`` the seconds after ``time`` at which the segment starting here starts to
     move (a stagger or a hold; it still ends on time).
     """
@@ -237,9 +236,6 @@ class Scene:
 
     def method_of(self, shape: Shape) -> str:
         return shape.method or self.method
-
-    def unmatched_of(self, shape: Shape) -> str:
-        return shape.unmatched or self.unmatched
 
     def balance_of(self, shape: Shape) -> str:
         return shape.balance or self.balance

@@ -54,12 +54,12 @@ def test_the_message_says_which_formats_can() -> None:
 def _no_drawing_and_no_ffmpeg(monkeypatch) -> None:  # type: ignore[no-untyped-def]
     import subprocess
 
-    from tweenrender.plan import job
+    from tweenrender.pipeline import frames
 
     def refuse(*args: object, **kwargs: object) -> None:
         raise AssertionError("drew a frame or started ffmpeg before refusing the size")
 
-    monkeypatch.setattr(job.Frames, "_draw", refuse)
+    monkeypatch.setattr(frames.Frames, "_draw", refuse)
     monkeypatch.setattr(subprocess, "Popen", refuse)
 
 

@@ -1,4 +1,4 @@
-"""Paint order between keys that stack their elements differently (the design's "stacking switch").
+"""Paint order between keys that stack their elements differently (the stacking switch of docs/artwork.md).
 
 Every key of a drawing knows its element's place in that drawing's paint order (``Key.layer``).
 At a key the scene is painted in that key's order. Between two keys whose orders differ the

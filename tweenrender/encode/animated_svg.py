@@ -17,7 +17,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 from .atomic import replacing
 from .smil import animate, hex_colour, number, path_data
-from .svg_paint import clip_elements, gradient_element
+from .svg_paint import clip_path_elements, gradient_element
 from .vector_data import Array, VectorClip, VectorRun
 
 __all__ = ["svg_document", "write_animated_svg"]
@@ -63,9 +63,9 @@ def _run(run: VectorRun, ident: str, total: int, duration: str) -> list[str]:
                      f'keyTimes="{";".join(number(t, 9) for t in times)}" values="{";".join(values)}"/>')
     lines.append(animate("opacity", run.paint_frames, [number(o, 4) for o in run.opacity], total, duration))
     gradient = gradient_element(run, f"{ident}-fill", total, duration)
-    clips, opening, closing = clip_elements(run, f"{ident}-clip", total, duration)
-    if gradient or clips:
-        lines += ["<defs>", *gradient, *clips, "</defs>"]
+    clip_paths, opening, closing = clip_path_elements(run, f"{ident}-clip", total, duration)
+    if gradient or clip_paths:
+        lines += ["<defs>", *gradient, *clip_paths, "</defs>"]
     lines += opening
     fill = f"url(#{ident}-fill)" if gradient else None
     groups = run.stroke_groups() if run.stroke is not None else []

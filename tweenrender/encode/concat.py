@@ -9,7 +9,7 @@ from typing import Sequence
 
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, discard, prepare_folder, sibling
-from .formats import FORMATS, LOSSLESS, TABLE
+from .formats import FORMATS, LOSSLESS, TABLE, by_suffix
 from .lifeline import run_program
 
 __all__ = ["concat", "CONCAT_FORMATS"]
@@ -34,7 +34,7 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
     long as copying the files. A GIF is encoded from lossless parts with the same
     palette filter as a single render, so it comes out the same, byte for byte.
     ``expected`` is the total frame count to check, if known; ``fmt`` the target's
-    format when its name does not tell it; ``rate`` the frame rate, which a GIF
+    format (default: the one its name ends in, :func:`.formats.by_suffix`); ``rate`` the frame rate, which a GIF
     needs (each part lasts exactly its frames, so no frame overlaps the next part's);
     ``alpha`` keeps a GIF's transparency (its parts carry it).
     The target changes only if the joined file was written and reads back.
@@ -43,9 +43,11 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
 
     target = Path(target)
     paths = [Path(p) for p in parts]
-    fmt = fmt or target.suffix.lower().lstrip(".")
-    if fmt not in CONCAT_FORMATS:
-        raise OptionError(f"{target}: can join parts into {', '.join(CONCAT_FORMATS)} only, not .{fmt}")
+    named = TABLE.get(fmt) if fmt else by_suffix(target.suffix)
+    if named is None or named.name not in CONCAT_FORMATS:
+        asked = named.name if named is not None else fmt or target.suffix.lower()
+        raise OptionError(f"{target}: can join parts into {', '.join(CONCAT_FORMATS)} only, not {asked}")
+    fmt = named.name
     if not paths:
         raise OptionError(f"{target}: no parts to join")
     lossless = TABLE[fmt].join == "lossless"
@@ -72,7 +74,7 @@ def concat(parts: Sequence[Path | str], target: Path | str, expected: int | None
     if lossless:
         output = encoder_options(fmt, alpha=alpha)
     else:
-        output = ["-map", "0:v", "-c", "copy", *TABLE[fmt].container, "-f", fmt]
+        output = ["-map", "0:v", "-c", "copy", *TABLE[fmt].container, "-f", str(TABLE[fmt].muxer)]
     command = [ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
                "-f", "concat", "-safe", "0", "-i", str(listing), *output, str(temporary)]
     try:

@@ -1,23 +1,29 @@
 """Every output format, in one table: what a format is called, what its files are named, how ffmpeg
 encodes it, whether it keeps transparency, the largest frames its encoder takes, how a clip rendered
-in chunks is joined.
+in chunks is joined, what writes it and what reads a written file back.
 
-Adding a format is one :class:`Format` entry in :data:`TABLE` (and, for a new kind of file, one sink
-in :mod:`.sinks`). The sizes were measured with the bundled ffmpeg (``scripts/probe_encoder_limits.py``
-repeats it): x264 takes at most 16384 pixels a side (16386x2 fails) and needs even sides in yuv420p;
-VP9 takes 65536x2 and odd sizes; GIF stores a side in 16 bits; ProRes 4444 takes odd sizes and
-30000x16; every video format also goes through ffmpeg's picture check (:data:`PICTURE_LIMIT`).
+Adding a format is one :class:`Format` entry in :data:`TABLE` (and, for a new kind of file, the module
+that writes or reads it, which the entry names). Every format list of the help texts and messages is
+made from the table (:func:`names`, :func:`suffixes`, :func:`outputs_text`).
+
+The sizes were measured with the bundled ffmpeg (``scripts/probe_encoder_limits.py`` repeats it):
+x264 takes at most 16384 pixels a side (16386x2 fails) and needs even sides in yuv420p; VP9 takes
+65536x2 and odd sizes; GIF stores a side in 16 bits; ProRes 4444 takes odd sizes and 30000x16; every
+video format also goes through ffmpeg's picture check (:data:`PICTURE_LIMIT`).
 """
 
 from __future__ import annotations
 
+import importlib
 from dataclasses import dataclass
-from typing import Literal
+from pathlib import Path
+from typing import Any, Callable, Literal, Sequence
 
 from ..errors import OptionError, did_you_mean
 
 __all__ = ["Format", "TABLE", "FORMATS", "DEFAULT", "LOSSLESS", "PICTURE_LIMIT", "lookup", "by_suffix",
-           "formats_for", "check_frame_size", "check_alpha"]
+           "formats_for", "check_frame_size", "check_alpha", "writer", "reader", "tuning", "is_vector", "names",
+           "suffixes", "frame_folders", "listing", "outputs_text"]
 
 PICTURE_LIMIT = 2**31 - 1
 """ffmpeg's av_image_check_size: a frame passes while 8·(width + 128)·(height + 128) is below this."""
@@ -26,8 +32,6 @@ Join = Literal["copy", "lossless", "frames"]
 """How chunks of a clip become one output: video parts joined by stream copy (each starts on a key
 frame), lossless parts encoded once at the join (a GIF's palette must see every frame), or the
 frames' PNG files written in order."""
-Readback = Literal["boxes", "ebml", "gif", "ffmpeg"]
-"""Where a written file's frame count and size are read back from (see :class:`Format`)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,19 +44,25 @@ class Format:
     takes); ``even`` whether both sides must be even; ``join`` how chunks are joined; ``chunked`` whether
     several processes render it as chunks, each with an encoder of its own; ``container`` the
     container's options that a join by stream copy repeats; ``yuv420`` whether opaque frames go to
-    ffmpeg as yuv420p planes made here; ``readback`` where a written file's frame count and size are
-    read back from to check it: its own ISO base media boxes (``"boxes"``, MP4 and QuickTime:
-    :mod:`.media_boxes`), Matroska elements (``"ebml"``, WebM: :mod:`.webm_elements`) or GIF blocks
-    (``"gif"``: :mod:`.gif_blocks`), or one more ffmpeg run (``"ffmpeg"``); ``vector`` whether the
-    file holds the animated paths rather than pictures (written by :mod:`.lottie` or
-    :mod:`.animated_svg`, a player draws them: any size, any background). What encoding a frame costs
-    is measured in the run (:mod:`.encoder_cost`; PNG frames, compressed where they are drawn, by
-    timing that).
+    ffmpeg as yuv420p planes made here; ``vector`` whether the file holds the animated paths rather than
+    pictures (a player draws them: any size, any background).
+
+    ``writer``, ``reader`` and ``tuning`` name a function of this package's modules as
+    ``"module.name"``, imported where it is used (:func:`writer`, :func:`reader`, :func:`tuning`):
+    ``writer`` makes the output, for pictures a sink taking ``(fmt, target, width, height, fps,
+    frames, pixel_format, alpha)`` (:func:`.sinks.open_sink`), for a vector format a function writing
+    a :class:`~.vector_data.VectorClip` to a target; ``reader`` gives a written file's frame count and
+    size, to check it, from its own ISO base media boxes (MP4, QuickTime: :mod:`.media_boxes`),
+    Matroska elements (WebM: :mod:`.webm_elements`), GIF blocks (:mod:`.gif_blocks`) or one more
+    ffmpeg run (``None``: nothing is read back); ``tuning`` gives the encoder's options for a frame
+    size, put right after the ``-c:v`` choice in ``ffmpeg``. What encoding a frame costs is measured in
+    the run (:mod:`.encoder_cost`; PNG frames, compressed where they are drawn, by timing that).
     """
 
     name: str
     codec: str
     suffix: str
+    writer: str
     ffmpeg: tuple[str, ...] = ()
     alpha: tuple[tuple[str, str], ...] | None = None
     max_side: int | None = None
@@ -61,7 +71,8 @@ class Format:
     chunked: bool = False
     container: tuple[str, ...] = ()
     yuv420: bool = False
-    readback: Readback = "ffmpeg"
+    reader: str | None = None
+    tuning: str | None = None
     listed: bool = True  # False: an internal format (a GIF's lossless parts), never asked for by name
     vector: bool = False  # the paths themselves, keyframed (Lottie, animated SVG): no frames are drawn
 
@@ -73,6 +84,11 @@ class Format:
     def folder(self) -> bool:
         """Whether the output is a folder of frames rather than one file."""
         return self.suffix == ""
+
+    @property
+    def muxer(self) -> str | None:
+        """The name of the ffmpeg muxer ``ffmpeg`` writes with (its ``-f``), if any."""
+        return self.ffmpeg[self.ffmpeg.index("-f") + 1] if "-f" in self.ffmpeg else None
 
     def options(self, alpha: bool = False) -> list[str]:
         """ffmpeg's output options; with ``alpha``, those that keep transparency."""
@@ -93,32 +109,35 @@ class Format:
         return None
 
 
+_VIDEO = "sinks.FFmpegVideo"  # the writer of every format ffmpeg encodes
+
 TABLE: dict[str, Format] = {f.name: f for f in (
-    Format("mp4", "H.264", ".mp4",
+    Format("mp4", "H.264", ".mp4", _VIDEO,
            ("-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p",
             "-movflags", "+faststart", "-f", "mp4"),
            max_side=16384, even=True, join="copy", chunked=True, container=("-movflags", "+faststart"),
-           yuv420=True, readback="boxes"),
-    Format("webm", "VP9", ".webm",
+           yuv420=True, reader="media_boxes.video_track", tuning="sinks.x264_tuning"),
+    Format("webm", "VP9", ".webm", _VIDEO,
            ("-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-pix_fmt", "yuv420p",
             "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"),
            alpha=(("yuv420p", "yuva420p"),), max_side=65536, join="copy", chunked=True, yuv420=True,
-           readback="ebml"),
-    Format("mov", "ProRes 4444", ".mov",
+           reader="webm_elements.video_track"),
+    Format("mov", "ProRes 4444", ".mov", _VIDEO,
            ("-c:v", "prores_ks", "-profile:v", "4444", "-vendor", "apl0", "-pix_fmt", "yuv444p10le", "-f", "mov"),
-           alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536, readback="boxes"),
-    Format("gif", "GIF", ".gif",
+           alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536, reader="media_boxes.video_track"),
+    Format("gif", "GIF", ".gif", _VIDEO,
            ("-filter_complex", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=sierra2_4a",
             "-loop", "0", "-f", "gif"),
            alpha=(("palettegen=stats_mode=diff", "palettegen=stats_mode=diff:reserve_transparent=1"),
                   ("paletteuse=dither=sierra2_4a", "paletteuse=dither=sierra2_4a:alpha_threshold=128")),
-           max_side=65535, join="lossless", readback="gif"),
-    Format("png", "PNG", "", alpha=(), join="frames"),  # any size the canvas takes
-    Format("lottie", "Lottie", ".json", alpha=(), vector=True),
-    Format("svg", "animated SVG", ".svg", alpha=(), vector=True),
+           max_side=65535, join="lossless", reader="gif_blocks.video_track"),
+    # any size the canvas takes; each frame's file is counted as it is written
+    Format("png", "PNG", "", "sinks.frames_folder", alpha=(), join="frames"),
+    Format("lottie", "Lottie", ".json", "lottie.write_lottie", alpha=(), vector=True),
+    Format("svg", "animated SVG", ".svg", "animated_svg.write_animated_svg", alpha=(), vector=True),
     # a GIF's chunk: FFV1 in NUT, BGRA, exact frame times; encoded into the GIF when the parts are joined
-    Format("nut", "FFV1", ".nut", ("-c:v", "ffv1", "-pix_fmt", "bgra", "-f", "nut"), alpha=(), max_side=65536,
-           listed=False),
+    Format("nut", "FFV1", ".nut", _VIDEO, ("-c:v", "ffv1", "-pix_fmt", "bgra", "-f", "nut"), alpha=(),
+           max_side=65536, reader="sinks.probe_video", listed=False),
 )}
 
 FORMATS: tuple[str, ...] = tuple(name for name, f in TABLE.items() if f.listed)
@@ -158,14 +177,75 @@ def check_frame_size(fmt: str, width: int, height: int) -> None:
     if reason is None:
         return
     others = [f for f in formats_for(width, height) if f != fmt]
-    can = " and ".join([", ".join(others[:-1]), others[-1]] if len(others) > 2 else others)
-    raise OptionError(f"{fmt} cannot take {width}x{height} frames: {reason}; {can} can")
+    raise OptionError(f"{fmt} cannot take {width}x{height} frames: {reason}; {listing(others)} can")
 
 
 def check_alpha(fmt: str, alpha: bool) -> None:
     """Refuse a transparent background in a format that cannot keep it."""
     if alpha and not TABLE[fmt].keeps_alpha:
-        keep = ", ".join(f"{TABLE[f].suffix} ({TABLE[f].codec})" if TABLE[f].suffix else "PNG frames"
-                         for f in FORMATS if TABLE[f].keeps_alpha)
+        keep = ", ".join(f"{TABLE[f].codec} frames" if TABLE[f].folder else f"{TABLE[f].suffix} ({TABLE[f].codec})"
+                         for f in names(alpha=True))
         raise OptionError(f"{fmt} ({TABLE[fmt].codec}) cannot keep a transparent background; use {keep}, "
                           "or an opaque background")
+
+
+def _resolve(spec: str) -> Callable[..., Any]:
+    """The function ``spec`` (``"module.name"``, a module of this package) names, looked up now (so a
+    replaced one is the one found)."""
+    module, _, name = spec.partition(".")
+    return getattr(importlib.import_module(f"{__package__}.{module}"), name)
+
+
+def writer(fmt: str) -> Callable[..., Any]:
+    """What makes ``fmt`` output (:attr:`Format.writer`)."""
+    return _resolve(TABLE[fmt].writer)
+
+
+def reader(fmt: str) -> Callable[[Path], tuple[int, tuple[int, int]]] | None:
+    """What reads a written ``fmt`` file's frame count and ``(width, height)`` back, if anything does
+    (:attr:`Format.reader`)."""
+    spec = TABLE[fmt].reader
+    return None if spec is None else _resolve(spec)
+
+
+def tuning(fmt: str) -> Callable[[int, int], list[str]] | None:
+    """What gives ``fmt``'s encoder options for a frame size, if anything does (:attr:`Format.tuning`)."""
+    spec = TABLE[fmt].tuning
+    return None if spec is None else _resolve(spec)
+
+
+def is_vector(fmt: str) -> bool:
+    """Whether ``fmt`` is a format of the paths themselves, keyframed, rather than of pictures."""
+    found = TABLE.get(fmt)
+    return found is not None and found.vector
+
+
+def names(*, vector: bool | None = None, alpha: bool | None = None) -> tuple[str, ...]:
+    """The formats a user may ask for, in the order help texts list them; ``vector`` keeps only the formats
+    of paths (True) or of pictures (False), ``alpha`` only those that keep a transparent background (True)
+    or cannot (False)."""
+    return tuple(name for name in FORMATS
+                 if (vector is None or TABLE[name].vector == vector)
+                 and (alpha is None or TABLE[name].keeps_alpha == alpha))
+
+
+def suffixes(*, vector: bool | None = None) -> tuple[str, ...]:
+    """The file name endings of the formats :func:`names` gives (``.mp4`` …), folders of frames left out."""
+    return tuple(TABLE[name].suffix for name in names(vector=vector) if not TABLE[name].folder)
+
+
+def frame_folders(*, vector: bool | None = None) -> tuple[str, ...]:
+    """What the folders of frames among :func:`names` hold: ``("PNG frames",)``."""
+    return tuple(f"{TABLE[name].codec} frames" for name in names(vector=vector) if TABLE[name].folder)
+
+
+def listing(items: Sequence[str], last: str = "and") -> str:
+    """``items`` as a sentence lists them: ``a``, ``a and b``, ``a, b and c`` (``last`` joins the last two)."""
+    return f"{', '.join(items[:-1])} {last} {items[-1]}" if len(items) > 1 else "".join(items)
+
+
+def outputs_text(*, vector: bool | None = None, last: str = "or") -> str:
+    """What an output of the formats :func:`names` gives may be, for help texts and messages:
+    ``.mp4, .webm, .mov, .gif or a folder of PNG frames`` (``vector=False``)."""
+    folders = [f"a folder of {held}" for held in frame_folders(vector=vector)]
+    return listing([*suffixes(vector=vector), *folders], last)

@@ -88,12 +88,12 @@ def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
     layer = _shape_layer(run.element, opacity, shapes,
                          run.first - _EARLY_IN if run.first > 0 else 0, run.stop - _EARLY_OUT if run.stop < frames
                          else frames)
-    if run.clips is None:
+    if run.clip_paths is None:
         return [layer]
-    clipping = masks(run.clips)
+    clipping = masks(run.clip_paths)
     if clipping:
         layer.update(hasMask=True, masksProperties=clipping)
-    region = matte(run.clips)
+    region = matte(run.clip_paths)
     if region is None:
         return [layer]
     layer["tt"] = 1

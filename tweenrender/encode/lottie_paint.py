@@ -25,7 +25,7 @@ import numpy as np
 
 from ..errors import OptionError
 from .lottie_values import animated, contour, path_item, percent, scalar, static, transform
-from .vector_data import Array, ClipKeys, GradientKeys, VectorRun
+from .vector_data import Array, ClipPathKeys, GradientKeys, VectorRun
 
 __all__ = ["gradient_fill", "stretched_fill", "masks", "matte", "refuse_unsupported"]
 
@@ -39,7 +39,7 @@ def refuse_unsupported(run: VectorRun) -> None:
     if gradient is not None and gradient.spread != "pad":
         raise OptionError(f"element {run.element!r}: its gradient spreads by {gradient.spread}, which Lottie "
                           "cannot carry (its gradients pad); write an animated SVG, or pad the gradient", "format")
-    if run.clips is not None and sum(len(region) > 1 for region in run.clips.regions) > 1:
+    if run.clip_paths is not None and sum(len(region) > 1 for region in run.clip_paths.regions) > 1:
         raise OptionError(f"element {run.element!r}: it is clipped by several clip paths of several contours each, "
                           "which Lottie cannot carry (one is a matte, the others masks of one contour); write an "
                           "animated SVG", "format")
@@ -100,20 +100,20 @@ def stretched_fill(run: VectorRun, gradient: GradientKeys, rule: int) -> dict[st
     return {"ty": "gr", "nm": run.element, "it": items}
 
 
-def masks(clips: ClipKeys) -> list[dict[str, Any]]:
+def masks(clip_paths: ClipPathKeys) -> list[dict[str, Any]]:
     """A layer's masks: the clip paths of one contour each, intersected (none when there are none)."""
-    singles = [region[0] for region in clips.regions if len(region) == 1]
+    singles = [region[0] for region in clip_paths.regions if len(region) == 1]
     return [{"nm": f"clip {index}", "mode": "i" if index else "a", "inv": False, "o": static(100), "x": static(0),
-             "pt": contour(clips.frames, points, True)} for index, points in enumerate(singles)]
+             "pt": contour(clip_paths.frames, points, True)} for index, points in enumerate(singles)]
 
 
-def matte(clips: ClipKeys) -> dict[str, Any] | None:
+def matte(clip_paths: ClipPathKeys) -> dict[str, Any] | None:
     """The shapes of a matte layer (``td``) drawing the clip path of several contours (nonzero), for a
     layer to show through (``tt`` 1, alpha); ``None`` when there is none."""
-    several = [region for region in clips.regions if len(region) > 1]
+    several = [region for region in clip_paths.regions if len(region) > 1]
     if not several:
         return None
-    paths = [path_item(f"clip {i}", i, clips.frames, points, True) for i, points in enumerate(several[0])]
+    paths = [path_item(f"clip {i}", i, clip_paths.frames, points, True) for i, points in enumerate(several[0])]
     return {"ty": "gr", "nm": "clip", "it": [*paths, {"ty": "fl", "nm": "clip", "c": static([1, 1, 1, 1]),
                                                       "o": static(100), "r": 1},
                                              {"ty": "tr", **transform(static(100))}]}

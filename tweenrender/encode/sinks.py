@@ -21,14 +21,14 @@ from numpy.typing import NDArray
 from ..errors import EncodeError, OptionError
 from .atomic import commit_file, commit_folder, discard, os_reason, prepare_folder, sibling
 from .lifeline import run_program, start_program
-from .formats import TABLE, check_alpha, check_frame_size, lookup
+from .formats import TABLE, check_alpha, check_frame_size, lookup, reader, tuning, writer
 from .manifest import write_manifest
 from .targets import check_frames_folder
 from .yuv420 import PIXEL_ORDERS, Yuv420
 
-__all__ = ["PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "FFmpegVideo", "probe_video", "read_back",
-           "find_ffmpeg_early", "ffmpeg_search_done", "ffmpeg_command", "ffmpeg_exe", "encoder_options", "x264_tuning",
-           "png_bytes", "sends_yuv420", "YUV420_TAGS"]
+__all__ = ["PIXEL_FORMATS", "Sink", "open_sink", "PngSequence", "frames_folder", "FFmpegVideo", "probe_video",
+           "read_back", "find_ffmpeg_early", "ffmpeg_search_done", "ffmpeg_command", "ffmpeg_exe", "encoder_options",
+           "x264_tuning", "png_bytes", "sends_yuv420", "YUV420_TAGS"]
 
 PIXEL_FORMATS = ("rgba", "bgra", "rgb24")
 """Layouts a video sink takes (ffmpeg's names): bgra is skia's own surface layout. ffmpeg is also given
@@ -63,18 +63,20 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
 
     ``pixel_format`` is the layout of the arrays given to ``write`` (video
     sinks; PNG frames are always straight RGBA). ``alpha`` keeps transparency
-    (formats that can, :attr:`.formats.Format.keeps_alpha`).
+    (formats that can, :attr:`.formats.Format.keeps_alpha`). The sink is the format's
+    :attr:`~.formats.Format.writer`.
     """
     if fmt not in TABLE:
         lookup(fmt)  # refused, naming the formats there are
+    if TABLE[fmt].vector:
+        raise OptionError(f"a {fmt} file holds the animated paths, not frames: no sink takes them", "format")
     check_alpha(fmt, alpha)
     check_frame_size(fmt, width, height)
     if TABLE[fmt].folder:
         check_frames_folder(target)
     prepare_folder(target)
-    if TABLE[fmt].folder:
-        return PngSequence(target, frames)
-    return FFmpegVideo(fmt, target, width, height, fps, frames, pixel_format, alpha)
+    sink: Sink = writer(fmt)(fmt, target, width, height, fps, frames, pixel_format, alpha)
+    return sink
 
 
 _FOUND: list[str] = []  # the ffmpeg found, once a process
@@ -131,12 +133,14 @@ def x264_tuning(width: int, height: int, cpus: int | None = None) -> list[str]:
 
 
 def encoder_options(fmt: str, width: int = 0, height: int = 0, alpha: bool = False) -> list[str]:
-    """ffmpeg's output options (codec, pixel format, container) for ``fmt`` frames of ``width × height``;
-    with ``alpha``, those that keep transparency."""
+    """ffmpeg's output options (codec, pixel format, container) for ``fmt`` frames of ``width × height``,
+    with the format's :attr:`~.formats.Format.tuning` for that size after the encoder's name; with
+    ``alpha``, those that keep transparency."""
     codec = TABLE[fmt].options(alpha)
-    if "libx264" in codec and width and height:
-        after = codec.index("libx264") + 1
-        return [*codec[:after], *x264_tuning(width, height), *codec[after:]]
+    tune = tuning(fmt)
+    if tune is not None and width and height:
+        after = codec.index("-c:v") + 2
+        return [*codec[:after], *tune(width, height), *codec[after:]]
     return codec
 
 
@@ -168,6 +172,13 @@ def png_bytes(rgba: NDArray[np.uint8]) -> bytes:
     import imageio.v3 as iio
 
     return iio.imwrite("<bytes>", rgba, extension=".png")
+
+
+def frames_folder(fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
+                  pixel_format: str = "rgba", alpha: bool = False) -> PngSequence:
+    """The sink :func:`open_sink` makes for a folder of frames (:attr:`.formats.Format.writer`): ``frames``
+    PNG files of straight RGBA, whatever the size, rate, layout and transparency."""
+    return PngSequence(target, frames)
 
 
 class PngSequence:
@@ -328,18 +339,12 @@ def _grow_pipe(pipe: object) -> None:
 
 
 def read_back(path: Path, fmt: str) -> tuple[int, tuple[int, int]]:
-    """Frame count and ``(width, height)`` of a written ``fmt`` video, read from the file's own structure where
-    :attr:`.formats.Format.readback` names one, else by :func:`probe_video`."""
-    how = TABLE[fmt].readback
-    if how == "boxes":
-        from .media_boxes import video_track
-    elif how == "ebml":
-        from .webm_elements import video_track
-    elif how == "gif":
-        from .gif_blocks import video_track
-    else:
-        return probe_video(path)
-    return video_track(path)
+    """Frame count and ``(width, height)`` of a written ``fmt`` video, as the format's
+    :attr:`~.formats.Format.reader` reads them: from the file's own structure, or by :func:`probe_video`."""
+    read = reader(fmt)
+    if read is None:
+        raise ValueError(f"a written {fmt} output is not read back")
+    return read(path)
 
 
 def probe_video(path: Path) -> tuple[int, tuple[int, int]]:

@@ -16,7 +16,7 @@ import numpy as np
 from .smil import animate, hex_colour, number, path_data
 from .vector_data import Array, GradientKeys, VectorRun
 
-__all__ = ["gradient_element", "clip_elements"]
+__all__ = ["gradient_element", "clip_path_elements"]
 
 
 def gradient_element(run: VectorRun, ident: str, total: int, duration: str) -> list[str]:
@@ -70,16 +70,17 @@ def _placement(run: VectorRun, gradient: GradientKeys, total: int, duration: str
     return attribute, "\n".join(lines)
 
 
-def clip_elements(run: VectorRun, ident: str, total: int, duration: str) -> tuple[list[str], list[str], list[str]]:
+def clip_path_elements(run: VectorRun, ident: str, total: int, duration: str
+                       ) -> tuple[list[str], list[str], list[str]]:
     """The run's clip paths: their ``<clipPath>`` elements (ids ``ident-0``, ``ident-1``, …), and the group
     tags that open and close around what they clip (nothing when unclipped)."""
-    if run.clips is None:
+    clip_paths = run.clip_paths
+    if clip_paths is None:
         return [], [], []
-    clips = run.clips
     elements, opening = [], []
-    for index, region in enumerate(clips.regions):
-        d_values = [path_data([c[k] for c in region], (True,) * len(region)) for k in range(len(clips.frames))]
-        moves = animate("d", clips.frames, d_values, total, duration)
+    for index, region in enumerate(clip_paths.regions):
+        d_values = [path_data([c[k] for c in region], (True,) * len(region)) for k in range(len(clip_paths.frames))]
+        moves = animate("d", clip_paths.frames, d_values, total, duration)
         path = f'<path d="{d_values[0]}" clip-rule="nonzero"'
         elements += [f'<clipPath id="{ident}-{index}">', *([path + ">", moves, "</path>"] if moves else [path + "/>"]),
                      "</clipPath>"]

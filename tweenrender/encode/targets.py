@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from ..errors import OptionError, printable
+from .formats import frame_folders, listing, suffixes
 from .manifest import foreign_entry, frame_names
 
 __all__ = ["FRAME_NAME", "check_output_name", "check_name_fits", "check_frames_folder", "check_own_folder",
@@ -22,7 +23,7 @@ __all__ = ["FRAME_NAME", "check_output_name", "check_name_fits", "check_frames_f
 FRAME_NAME = re.compile(r"frame_\d{4,}\.png")
 """The files of a frame set (``frame_0000.png`` …): the only names a frames manifest may list."""
 
-_NOT_A_NAME = "expected a file name (.mp4, .webm, .gif) or a folder's name for PNG frames"
+_NOT_A_NAME = f"expected a file name ({', '.join(suffixes())}) or a folder's name for {listing(frame_folders(), 'or')}"
 
 
 _TEMPORARY_EXTRA = 32

@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from ..model import Color
 
-__all__ = ["Handles", "STRAIGHT", "EASE_HANDLES", "GradientKeys", "ClipKeys", "VectorRun", "VectorClip"]
+__all__ = ["Handles", "STRAIGHT", "GradientKeys", "ClipPathKeys", "VectorRun", "VectorClip"]
 
 Array = NDArray[np.float64]
 
@@ -22,14 +22,6 @@ Handles = tuple[float, float, float, float]
 
 STRAIGHT: Handles = (0.0, 0.0, 1.0, 1.0)
 """Even timing: a straight line through (0, 0) and (1, 1)."""
-
-EASE_HANDLES: dict[str, Handles] = {
-    "linear": (0.0, 0.0, 1.0, 1.0),
-    "in": (1 / 3, 0.0, 2 / 3, 1 / 3),  # x(u) = u, y(u) = u²
-    "out": (1 / 3, 2 / 3, 2 / 3, 1.0),  # y(u) = 1 - (1 - u)²
-    "in-out": (1 / 3, 0.0, 2 / 3, 1.0),  # y(u) = 3u² - 2u³
-}
-"""Each easing as the CSS ``cubic-bezier(x1, y1, x2, y2)`` that draws it exactly (its x(u) is u)."""
 
 
 @dataclass(frozen=True)
@@ -60,7 +52,7 @@ class GradientKeys:
 
 
 @dataclass(frozen=True)
-class ClipKeys:
+class ClipPathKeys:
     """A run's clip paths as keyframes: at clip ``frames (K,)``, ``regions``, each a tuple of closed contours
     ``(K, N, 2)`` in output pixels filled nonzero; what is drawn is the intersection of the regions."""
 
@@ -80,7 +72,7 @@ class VectorRun:
     contour's exact pixels at every frame of the run, side by side, ``(stop - first, sum L_i, 2)``,
     kept for measuring. ``contour_widths (P, C)``: each contour's stroke width where some contour grows
     from (or shrinks to) a point and is stroked with its share of the width (``None``: all ``width``).
-    ``gradient``: the fill as a gradient at the paint keyframes (``fill`` is then ``None``); ``clips``:
+    ``gradient``: the fill as a gradient at the paint keyframes (``fill`` is then ``None``); ``clip_paths``:
     the clip paths the run is drawn through (``None``: not clipped). ``gradient_paths``: for an elliptical
     radial gradient, the contours in the gradient's own frame (a Lottie group's transform places that
     frame), as ``(frames (K',), ((K', L_i, 2) per contour), eases (K' - 1,))``.
@@ -105,7 +97,7 @@ class VectorRun:
     exact_frames: Array
     contour_widths: Array | None = None
     gradient: GradientKeys | None = None
-    clips: ClipKeys | None = None
+    clip_paths: ClipPathKeys | None = None
     gradient_paths: tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None = None
 
     def stroke_groups(self) -> list[tuple[list[int], Array]]:

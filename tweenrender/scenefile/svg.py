@@ -13,9 +13,9 @@ A whole drawing (:func:`read_drawing`) gives every visible shape element —
 paint as an SVG renderer resolves it (:mod:`.svg_document`). Invisible
 elements (no fill and no stroke, ``display:none``, ``visibility:hidden``, zero
 opacity) are left out. Linear and radial gradient fills are kept
-(:mod:`.svg_gradients`). Not drawn: clip paths and masks (their content is drawn
-unclipped), filters, markers; gradient strokes and patterns are painted with the
-average colour of their stops.
+(:mod:`.svg_gradients`), and clip paths as clip regions (``Element.clips``). Refused:
+masks. Not drawn: filters, markers; gradient strokes and patterns are painted with
+the average colour of their stops.
 """
 
 from __future__ import annotations
@@ -49,6 +49,8 @@ SUPPORTED: tuple[str, ...] = SHAPES
 
 _DRAWING_TOLERANCE = 1 / 5000
 """A whole drawing's default tolerance, as a fraction of its view box's diagonal (0.2 px at 1080p)."""
+_EXTENT_TOLERANCE = 1.0
+"""User units a drawing without a view box or size is flattened within to find its extent (its box only)."""
 _NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
 _PATH_TOKEN = re.compile(r"[\s,]*(?:[MmZzLlHhVvCcSsQqTtAa]|" + _NUMBER + ")")
 _POINTS_TOKEN = re.compile(r"[\s,]*(" + _NUMBER + ")")
@@ -258,7 +260,7 @@ def _extent(drawn: list[Drawn]) -> tuple[float, float, float, float]:
     """A view box around every element's geometry (user units), for drawings with no viewBox or size."""
     points = []
     for d in drawn:
-        for contour, _ in _contours(d, d.ctm, 1e-3 * 1000, Budget(MAX_VERTICES, 1.0)):
+        for contour, _ in _contours(d, d.ctm, _EXTENT_TOLERANCE, Budget(MAX_VERTICES, _EXTENT_TOLERANCE)):
             points.append(contour)
     if not points:
         return (0.0, 0.0, 1.0, 1.0)
@@ -276,14 +278,14 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     if not contours:
         return None
     paint = _with_gradient(paint, d, to_world, contours)
-    clips = tuple(_clip(ident, space, d, to_world, tol, budget) for ident, space in d.clips)
+    clips = tuple(_clip_region(ident, space, d, to_world, tol, budget) for ident, space in d.clips)
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
                    tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
                    miter, tuple(c for c in clips if c is not None))
 
 
-def _clip(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,
-          budget: Budget) -> tuple[Contour, ...] | None:
+def _clip_region(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,
+                 budget: Budget) -> tuple[Contour, ...] | None:
     """The region of ``<clipPath id=ident>`` in world units (its shapes' closed contours, nonzero), applied
     in the user ``space`` of the element that names it; None when ``ident`` is no clip path."""
     from .svg_document import _Walk

@@ -8,7 +8,7 @@ element shown over those frames (SVG). Keyframes come from :mod:`..core.keyframe
 segment whose keys fall on whole frames is exact with two keyframes and the segment's easing;
 every other run's paths are fitted within ``max_error`` pixels (keyframe values free within it, each
 span with its own timing; the run's first and last keyframes exact); paint within 1/255 (width, a
-gradient's geometry and clip paths within ``max_error``; see :mod:`.vector_paint`).
+gradient's geometry and clip paths within ``max_error``; see :mod:`.paint_keys`).
 """
 
 from __future__ import annotations
@@ -21,14 +21,15 @@ from numpy.typing import NDArray
 
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
-from ..encode.vector_data import EASE_HANDLES, STRAIGHT, Handles, VectorClip, VectorRun
+from ..encode.formats import is_vector, listing, names, writer
+from ..encode.vector_data import STRAIGHT, Handles, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Scene, Shape
 from ..core.view import Viewport
 from ..core.stacking import order_at
 from ..plan.job import RenderJob, scene_view, stacking_of, tracks_of
 from ..plan.options import RenderOptions
-from .paint_keys import clip_keys, clip_make, gradient_frame_paths, gradient_look, gradient_samples
+from .paint_keys import clip_path_keys, clip_path_make, gradient_frame_paths, gradient_look, gradient_samples
 
 __all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR"]
 
@@ -54,14 +55,13 @@ def refuse_raster_options(fmt: str, options: RenderOptions) -> None:
 
 
 def write_vector(job: RenderJob, fmt: str, target: Path, max_error: float | None = None) -> Path:
-    """Write ``job`` (one panel, no overlays) as ``fmt`` (``lottie`` or ``svg``) to ``target``, atomically."""
-    from ..encode.animated_svg import write_animated_svg
-    from ..encode.lottie import write_lottie
-
-    if fmt not in ("lottie", "svg"):
-        raise OptionError(f"expected a vector format, lottie or svg, found {fmt!r}", "format")
+    """Write ``job`` (one panel, nothing drawn over it) as the vector format ``fmt`` (``lottie`` or ``svg``:
+    :func:`~..encode.formats.is_vector`) to ``target``, atomically, by the format's writer."""
+    if not is_vector(fmt):
+        raise OptionError(f"expected a vector format, {listing(names(vector=True), 'or')}, found {fmt!r}", "format")
     clip = vector_clip(job, DEFAULT_MAX_ERROR if max_error is None else max_error)
-    return (write_lottie if fmt == "lottie" else write_animated_svg)(clip, target)
+    written: Path = writer(fmt)(clip, target)
+    return written
 
 
 def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorClip:
@@ -96,7 +96,8 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
 
 def _stacking(scene: Scene, tracks: tuple[Track, ...], times: Array) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:
     """The paint orders the clip passes through (shape indices, first painted first) and, per frame, which
-    of them is in force: ``(F,)``. A layer is split where the order switches (DESIGN: stacking switch)."""
+    of them is in force: ``(F,)``. A layer is split where the order switches (docs/artwork.md;
+    :mod:`..core.stacking`)."""
     plan = stacking_of(scene, tracks)
     orders: list[tuple[int, ...]] = []
     phases = np.zeros(len(times), dtype=np.intp)
@@ -123,7 +124,7 @@ def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
     def look(f: int) -> tuple[object, ...]:
         at = shapes[f]
         return (int(segments[f]), int(phases[f]), len(at.contours), at.reversed, _style(shape, at), gradients[f],
-                clip_make(at))
+                clip_path_make(at))
 
     out: list[tuple[int, int]] = []
     start = None
@@ -183,24 +184,14 @@ def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int
 
 
 def _timing(segment: Segment) -> Handles | None:
-    """The cubic-bezier handles of a segment's easing curve (else of its easing's name), if a Bézier draws it
-    and both files can carry it: SMIL's ``keySplines`` take values in [0, 1] only, so a curve that
-    overshoots is baked."""
-    handles = _handles(segment.easing) or _handles(segment.ease)
+    """The cubic-bezier handles of a segment's easing, if a Bézier draws it exactly (``linear``, or a curve
+    such as ``in-out`` or ``cubic-bezier(…)``: :data:`..core.timing.easing.NAMED`) and both files can
+    carry it: SMIL's ``keySplines`` take values in [0, 1] only, so a curve that overshoots is baked."""
+    easing = segment.easing
+    handles = STRAIGHT if easing.text == "linear" else getattr(easing, "handles", None)
     if handles is None or not all(0.0 <= h <= 1.0 for h in handles):
         return None
-    return handles
-
-
-def _handles(ease: object) -> Handles | None:
-    """The cubic-bezier handles that draw a segment's easing exactly: its name's (``in``, ``out``, ``in-out``,
-    ``linear``), or those an easing object carries; ``None`` where no Bézier draws it."""
-    if isinstance(ease, str):
-        return EASE_HANDLES.get(ease)
-    if getattr(ease, "text", None) == "linear":
-        return STRAIGHT
-    handles = getattr(ease, "handles", None)
-    return None if handles is None else tuple(float(h) for h in handles)  # type: ignore[return-value]
+    return tuple(float(h) for h in handles)  # type: ignore[return-value]
 
 
 def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offset: int,
@@ -284,7 +275,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                     opacity[pick], rule, cap, join, miter, joined,
                     None if contour_widths is None else contour_widths[pick],
                     None if gradient is None else gradient.keys(pick),
-                    clip_keys(shapes, first, viewport, max_error))
+                    clip_path_keys(shapes, first, viewport, max_error))
     return replace(run, gradient_paths=gradient_frame_paths(run, max_error))
 
 

@@ -21,11 +21,11 @@ from numpy.typing import NDArray
 
 from .keyframes import greedy_keyframes
 from ..core.timing.timeline import ShapeAt
-from ..encode.vector_data import ClipKeys, GradientKeys, Handles, VectorRun
+from ..encode.vector_data import ClipPathKeys, GradientKeys, Handles, VectorRun
 from ..model import Gradient, Paint
 from ..core.view import Viewport, pixel_affine
 
-__all__ = ["GradientSamples", "gradient_samples", "gradient_look", "clip_make", "clip_keys"]
+__all__ = ["GradientSamples", "gradient_samples", "gradient_look", "clip_path_make", "clip_path_keys"]
 
 Array = NDArray[np.float64]
 _DIGITS = 9  # offsets equal to this many decimals are one offset
@@ -253,23 +253,23 @@ def _wrapped(turn: float) -> float:
     return abs((turn + np.pi) % (2 * np.pi) - np.pi)
 
 
-def clip_make(at: ShapeAt) -> tuple[tuple[int, ...], ...]:
-    """What splits a run where it changes: how many regions, contours and vertices a frame's clip has."""
+def clip_path_make(at: ShapeAt) -> tuple[tuple[int, ...], ...]:
+    """What splits a run where it changes: how many regions, contours and vertices a frame's clip paths have."""
     return tuple(tuple(len(c) for c in region) for region in at.clips)
 
 
-def clip_keys(shapes: list[ShapeAt], first: int, viewport: Viewport, tolerance: float) -> ClipKeys | None:
+def clip_path_keys(shapes: list[ShapeAt], first: int, viewport: Viewport, tolerance: float) -> ClipPathKeys | None:
     """The clip paths of a run's frames ``shapes`` (the run starts at clip frame ``first``; a last frame
     clipped otherwise than the first, the next key, is left out), keyframed within ``tolerance`` pixels;
     ``None`` when unclipped."""
-    make = clip_make(shapes[0])
+    make = clip_path_make(shapes[0])
     if not make:
         return None
-    shapes = [at for at in shapes if clip_make(at) == make]
+    shapes = [at for at in shapes if clip_path_make(at) == make]
     regions = [[np.stack([viewport.to_pixels(at.clips[r][c]) for at in shapes]) for c in range(len(region))]
                for r, region in enumerate(make)]  # (F, N, 2) each
     keys = greedy_keyframes(np.concatenate([c for region in regions for c in region], axis=1), tolerance)
-    return ClipKeys(tuple(first + k for k in keys), tuple(tuple(c[keys] for c in region) for region in regions))
+    return ClipPathKeys(tuple(first + k for k in keys), tuple(tuple(c[keys] for c in region) for region in regions))
 
 
 def gradient_frame_paths(run: VectorRun, tolerance: float

@@ -2,14 +2,14 @@
 
 A *piece* of a hinted correspondence runs from one hinted pair to the next through the grid of
 ``rows (R + 1,)`` vertices of a and ``cols (C + 1,)`` vertices of b (walked), from node (0, 0) to
-node (R, C). Steps are named as in ``_cyclic_dtw``: STEP_B (0, +1), STEP_AB (+1, +1), STEP_A (+1, 0).
+node (R, C). Steps are named as in ``_dtw_grid``: STEP_B (0, +1), STEP_AB (+1, +1), STEP_A (+1, 0).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from ._cyclic_dtw import STEP_A, STEP_B
+from ._dtw_grid import STEP_A, STEP_B
 from ..jit import cached_jit as _jit
 
 __all__ = ["sg_piece", "trace_piece"]
@@ -20,7 +20,7 @@ def sg_piece(stretch: np.ndarray, bend: np.ndarray, rows: np.ndarray, cols: np.n
              choice: np.ndarray) -> np.ndarray:
     """Least energy from (0, 0), entered by ``start_step``, to (R, C), for each step entering (R, C): ``(3,)``.
 
-    ``stretch (m, n, 3)`` and ``bend (m, n, 3, 3)`` are ``_cyclic_dtw.sg_tables``'; a node's bending
+    ``stretch (m, n, 3)`` and ``bend (m, n, 3, 3)`` are ``_sg_kernel.sg_tables``'; a node's bending
     is paid when the path leaves it (the start's with ``start_step`` as its entering step), the end's
     is left to the next piece. ``choice (R + 1, C + 1, 3)`` receives, per node and entering step, the
     step that entered its predecessor, for :func:`trace_piece`.

@@ -9,7 +9,7 @@ stretch of ``K`` rows at a time from the checkpoint above it, keeping their step
 whose band is narrow, as most of ``maes_search``'s are, keeps its band's steps at once). The rows
 recomputed are the very rows of the first pass (the same arithmetic on the same inputs), so
 the path is the one ``maes_search`` returns, node for node, for about twice the work of a row.
-Grid, steps and tie rules are those of ``_cyclic_dtw``.
+Grid, steps and tie rules are those of ``_dtw_grid`` and ``_cyclic_dtw``.
 """
 
 from __future__ import annotations
@@ -18,7 +18,8 @@ import math
 
 import numpy as np
 
-from ._cyclic_dtw import STEP_A, STEP_AB, STEP_B, _copy_nodes, maes_slots, middle_band, push_halves, start_again
+from ._cyclic_dtw import maes_slots, middle_band, push_halves, start_again
+from ._dtw_grid import STEP_A, STEP_AB, STEP_B, copy_nodes
 from ..jit import cached_jit as _jit
 
 __all__ = ["lean_maes_search", "checkpoint_rows"]
@@ -177,6 +178,6 @@ def lean_maes_search(a: np.ndarray, b: np.ndarray, every: int) -> tuple[float, n
                                         row_first[slot], row_last[slot], nodes)
         if value < best:
             best, best_count = value, count
-            _copy_nodes(nodes, best_nodes, count)
+            copy_nodes(nodes, best_nodes, count)
         top = push_halves(stack, top, s_lo, mid, s_hi, slot_lo, slot, slot_hi, depth)
-    return best, _copy_nodes(best_nodes, np.empty((best_count, 2), np.int64), best_count)
+    return best, copy_nodes(best_nodes, np.empty((best_count, 2), np.int64), best_count)

@@ -1,7 +1,7 @@
 """The Sederberg–Greenwood closed search by branch and bound over spans of starts (maths §2.1).
 
-Grid, steps, energies and tie rules are those of ``_cyclic_dtw``; the result is, path for path,
-that of ``_cyclic_dtw.sg_every_start_search``, which solves each of the n starts for each of the
+Grid, steps, energies and tie rules are those of ``_dtw_grid`` and ``_sg_kernel``; the result is, path
+for path, that of ``_sg_kernel.sg_every_start_search``, which solves each of the n starts for each of the
 three closing steps (O(27 m n²)). Here a *span*, starts ``first .. first + width - 1`` with a
 closing step, is bounded from below by one relaxed dynamic program (``sg_forward``): the closed
 paths of all its starts at once, a path being allowed to end at another start of the span than
@@ -22,7 +22,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from ._cyclic_dtw import STEP_A, STEP_AB, STEP_B, sg_every_start_search, sg_forward, sg_trace
+from ._dtw_grid import STEP_A, STEP_AB, STEP_B
+from ._sg_kernel import sg_every_start_search, sg_forward, sg_trace
 from ..jit import cached_jit as _jit
 
 __all__ = ["SgSearch", "sg_search"]
@@ -43,7 +44,7 @@ class SgSearch(NamedTuple):
 
 def sg_search(stretch: NDArray[np.float64], bend: NDArray[np.float64]) -> SgSearch:
     """The least-energy closed path over every start and closing step, for ``stretch (m, n, 3)``
-    and ``bend (m, n, 3, 3)`` of ``_cyclic_dtw.sg_tables``: the result of ``sg_every_start_search``.
+    and ``bend (m, n, 3, 3)`` of ``_sg_kernel.sg_tables``: the result of ``sg_every_start_search``.
 
     Tables with a negative or NaN entry (constants outside the scene file's range) are searched
     start by start: the rounding allowances below assume non-negative energies.

@@ -3,7 +3,7 @@ kernels of ``_cyclic_dtw`` (same sums in the same order, same tie rules), withou
 
 Loading numba and its cached kernels costs 0.3–0.5 s of a command's start; for keys of a
 hundred vertices these searches take milliseconds. The grids and step names are those of
-``_cyclic_dtw``. Each dynamic program runs along anti-diagonals (every node of a diagonal
+``_dtw_grid``. Each dynamic program runs along anti-diagonals (every node of a diagonal
 depends only on the two before it), so a diagonal is one vectorised numpy step; the closed
 search solves every start at once, one row of the arrays per start.
 """
@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 
 __all__ = ["SEARCH_NODES", "PROCESS_NODES", "takes", "distance_matrix", "maes_search", "open_search"]
 
-STEP_B, STEP_AB, STEP_A = 0, 1, 2  # as in _cyclic_dtw (importing it would load numba)
+STEP_B, STEP_AB, STEP_A = 0, 1, 2  # as in _dtw_grid (importing it would load numba)
 
 SEARCH_NODES = 1_500_000
 """The largest search done here, in nodes visited (``(m + 1)(n + 1)`` per start, ``n`` starts):

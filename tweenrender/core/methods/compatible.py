@@ -24,7 +24,7 @@ triangles and every triangle is counter-clockwise in both keys:
    other becomes a Steiner point (Aronov, Seidel & Souvaine 1993), and each
    cell of the overlay — the meet of a triangle of each — is cut into a fan.
    A cell lies inside one triangle of each key, so its image is positive in
-   both (:mod:`.overlay`); Steiner points are then relaxed towards fatter triangles.
+   both (:mod:`.mesh_overlay`); Steiner points are then relaxed towards fatter triangles.
 
 Pure numpy (and scipy's Delaunay triangulation, imported when it runs).
 Keys whose contours cross themselves or each other, wind the other way round, or

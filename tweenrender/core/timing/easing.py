@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import Union
+from typing import Callable, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -54,14 +54,6 @@ class Linear:
     @property
     def overshoots(self) -> bool:
         return False
-
-
-_POLYNOMIALS = {
-    # the older names: exact cubic Béziers whose x(s) = s, evaluated as they always were
-    (1 / 3, 0.0, 2 / 3, 1 / 3): lambda u: u * u,
-    (1 / 3, 2 / 3, 2 / 3, 1.0): lambda u: 1.0 - (1.0 - u) ** 2,
-    (1 / 3, 0.0, 2 / 3, 1.0): lambda u: u * u * (3.0 - 2.0 * u),
-}
 
 
 @dataclass(frozen=True, slots=True)
@@ -163,15 +155,23 @@ Easing = Union[Linear, CubicBezier, Steps, Hold, Spacing]
 
 LINEAR = Linear()
 NAMED: dict[str, tuple[float, float, float, float]] = {
-    "in": (1 / 3, 0.0, 2 / 3, 1 / 3),
-    "out": (1 / 3, 2 / 3, 2 / 3, 1.0),
-    "in-out": (1 / 3, 0.0, 2 / 3, 1.0),
+    "in": (1 / 3, 0.0, 2 / 3, 1 / 3),  # x(s) = s, y(s) = s²
+    "out": (1 / 3, 2 / 3, 2 / 3, 1.0),  # y(s) = 1 - (1 - s)²
+    "in-out": (1 / 3, 0.0, 2 / 3, 1.0),  # y(s) = 3s² - 2s³
     "ease": (0.25, 0.1, 0.25, 1.0),
     "ease-in": (0.42, 0.0, 1.0, 1.0),
     "ease-out": (0.0, 0.0, 0.58, 1.0),
     "ease-in-out": (0.42, 0.0, 0.58, 1.0),
 }
-"""Named easings that are cubic Béziers: the four older names and CSS's four keywords."""
+"""Named easings that are cubic Béziers, by their handles ``(x1, y1, x2, y2)``: the older names ``in``,
+``out``, ``in-out`` and CSS's four keywords (``linear`` is :data:`LINEAR`). The one table of easing
+names and numbers: the scene files, the command line and the vector files' timing all read it."""
+_POLYNOMIALS: dict[tuple[float, float, float, float], Callable[[Array], Array]] = {
+    # the older names: exact cubic Béziers whose x(s) = s, evaluated as they always were
+    NAMED["in"]: lambda u: u * u,
+    NAMED["out"]: lambda u: 1.0 - (1.0 - u) ** 2,
+    NAMED["in-out"]: lambda u: u * u * (3.0 - 2.0 * u),
+}
 JUMPS = ("jump-start", "jump-end", "jump-none", "jump-both")
 _JUMP_ALIASES = {"start": "jump-start", "end": "jump-end"}
 EASING_FORMS = ("linear", *NAMED, "hold", "cubic-bezier(x1, y1, x2, y2)", "steps(n[, jump])")

@@ -35,7 +35,7 @@ __all__ = [
     "load_scene", "parse_scene", "frame", "frames", "outlines", "contours", "write", "interpolate",
     "stats", "correspondence", "qcurves", "describe", "sheet", "report", "reel",
     "stats_text", "correspondence_text", "qcurves_text", "frame_count", "png_bytes",
-    "method_names", "format_names", "output_format", "default_suffix", "check_preview_settings",
+    "method_names", "format_names", "output_kinds", "listing", "output_format", "default_suffix", "check_preview_settings",
     "start_encoder_search", "encoder_search_done",
     "RenderOptions", "MatchSettings", "Scene", "Shape", "Key", "Matching", "DrawnContour",
     "COSTS", "ALIGNS", "EQUAL_COUNTS", "BALANCES", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS",
@@ -203,11 +203,27 @@ def default_suffix(fmt: str | None = None) -> str:
     return (lookup(fmt) if fmt else TABLE[DEFAULT]).suffix
 
 
-def format_names() -> tuple[str, ...]:
-    """Every output format's name, in the format table's order."""
-    from .encode.formats import FORMATS
+def format_names(*, vector: bool | None = None, alpha: bool | None = None) -> tuple[str, ...]:
+    """The output formats a user may ask for, in the format table's order: ``vector`` keeps those of paths
+    (True) or of pictures (False), ``alpha`` those that keep a transparent background (True) or not."""
+    from .encode.formats import names
 
-    return tuple(FORMATS)
+    return names(vector=vector, alpha=alpha)
+
+
+def output_kinds(*, vector: bool | None = None) -> str:
+    """What an output may be, in words made from the format table (``.mp4, .webm, … or a folder of PNG
+    frames``)."""
+    from .encode.formats import outputs_text
+
+    return outputs_text(vector=vector)
+
+
+def listing(items: Sequence[str], last: str = "and") -> str:
+    """``items`` as a sentence lists them: ``a``, ``a and b``, ``a, b and c``."""
+    from .encode.formats import listing as listed
+
+    return listed(items, last)
 
 
 def method_names() -> tuple[str, ...]:

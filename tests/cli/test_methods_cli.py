@@ -60,13 +60,13 @@ def test_a_misspelt_balance_is_a_usage_error(tmp_path: Path) -> None:
 def test_balance_changes_what_is_drawn_and_keeps_the_keys(tmp_path: Path) -> None:
     scene = tr.load_scene(SCENES / "eight-to-three.toml")
     copies = tr.outlines(scene, 1.0, method="linear")[0]
-    from tweenrender.pipeline.library import with_balance
+    from tweenrender.plan.options import MatchSettings
 
-    spread = tr.outlines(with_balance(scene, "spread"), 1.0, method="linear")[0]
+    spread = tr.outlines(MatchSettings(balance="spread").over(scene), 1.0, method="linear")[0]
     assert not np.allclose(copies, spread)
     # at the last key the outline is the key as drawn, whichever rule placed the copies
     last_copies = tr.outlines(scene, 2.0)[0]
-    last_spread = tr.outlines(with_balance(scene, "spread"), 2.0)[0]
+    last_spread = tr.outlines(MatchSettings(balance="spread").over(scene), 2.0)[0]
     from tweenrender.core.geometry import perimeter, signed_area
 
     assert float(perimeter(last_copies)) == pytest.approx(float(perimeter(last_spread)))

@@ -11,12 +11,12 @@ from .matching_flags import add_balance_flag, add_matching_flags, matching_optio
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from ..api import REEL_FPS, REEL_SIZE
+    from ..api import REEL_FPS, REEL_SIZE, default_suffix, output_kinds
 
     p = sub.add_parser("reel", help="a demo reel: a title card and a comparison for each scene, one video")
     add_scene_argument(p, several_scenes=True)
     p.add_argument("-o", "--output", metavar="OUT", default="output/reel.mp4",
-                   help="a .mp4, .webm or .gif file, or a folder of PNG frames (default output/reel.mp4)")
+                   help=f"{output_kinds(vector=False)} (default output/reel{default_suffix()})")
     p.add_argument("--size", type=size, default=REEL_SIZE, metavar="WxH",
                    help="size of the whole reel (default 1280x720); comparisons are fitted inside")
     p.add_argument("--fps", type=fps, default=REEL_FPS, metavar="N", help="frame rate of the whole reel (default 24)")

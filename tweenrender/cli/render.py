@@ -15,27 +15,32 @@ from .overlay_flags import add_overlay_flags
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from ..api import format_names, method_names
+    from ..api import default_suffix, format_names, listing, method_names
+
+    vector = format_names(vector=True)
 
     p = sub.add_parser("render", help="render a scene, or SVG drawings morphing into each other, to video, PNG, "
                                        "Lottie or animated SVG")
     add_scene_argument(p)
     p.add_argument("-o", "--output", metavar="OUT",
-                   help="output file or folder (default output/<stem>.mp4, output/<stem>/ for png, "
-                        "output/<stem>.json for lottie, output/<stem>.svg for svg)")
+                   help="output file or folder (default " + ", ".join(
+                       f"output/<stem>{default_suffix(n) or '/'}" + (f" for {n}" if i else "")
+                       for i, n in enumerate(format_names())) + ")")
     p.add_argument("--method", type=method, metavar="M", help=f"one method for every shape: {', '.join(method_names())}")
     p.add_argument("--compare", nargs="?", const="", metavar="M,M..",
                    help="one labelled panel per method, side by side (default: the scene's compare list)")
-    p.add_argument("--format", choices=format_names(), help="the output format (default: from -o's extension); lottie "
-                                                     "(.json) and svg (animated SVG) hold the paths, keyframed")
+    p.add_argument("--format", choices=format_names(),
+                   help="the output format (default: from -o's extension); "
+                        f"{listing([f'{n} ({default_suffix(n)})' for n in vector])} hold the paths, keyframed")
     p.add_argument("--max-error", type=float, metavar="PX",
-                   help="lottie and svg: how far (output pixels) the keyframed paths may stray from the exact "
+                   help=f"{listing(vector)}: how far (output pixels) the keyframed paths may stray from the exact "
                         "inbetween at a frame (default 0.25)")
     p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (of each panel)")
     p.add_argument("--fps", type=fps, metavar="N")
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")
     p.add_argument("--background", metavar="COLOR|none",
-                   help="#rgb, #rgba, #rrggbb or #rrggbbaa, or none (transparent: webm, mov, gif and png keep it)")
+                   help="#rgb, #rgba, #rrggbb or #rrggbbaa, or none (transparent: "
+                        f"{listing(format_names(vector=False, alpha=True))} keep it)")
     add_overlay_flags(p)
     add_matching_flags(p)
     add_balance_flag(p)

@@ -158,7 +158,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     Options come by their long names (``method, compare, format, size, fps, frames, background, balance,
     paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress, max_error``; see
     :class:`~.options.RenderOptions`) or as one ``options`` object. The format is ``format`` or
-    ``path``'s extension (``.mp4``, ``.webm``, ``.mov``, ``.gif``; a name without one is a folder of PNG
+    ``path``'s extension (any of ``encode.formats.suffixes()``; a name without one is a folder of PNG
     frames). ``background`` overrides the scene's (``"none"``: transparent, kept by every format but MP4).
     ``compare`` lists the methods of side-by-side labelled panels (``True``: the scene's ``compare``
     list); ``size`` is each panel's. ``frames`` picks part of the clip (``"A:B"`` or a ``range``).
@@ -194,7 +194,10 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
 
         refuse_raster_options(fmt, opts)
     elif opts.max_error is not None:
-        raise OptionError(f"applies to the vector formats (lottie, svg) only, not {fmt}", "max_error")
+        from ..encode.formats import names
+
+        raise OptionError(f"applies to the vector formats ({', '.join(names(vector=True))}) only, not {fmt}",
+                          "max_error")
     job = render_job(scene, opts)
     if len(job.frame_range) > opts.max_frames:
         raise OptionError(f"{len(job.frame_range)} frames is more than {opts.max_frames}; "
@@ -233,7 +236,7 @@ def render_job(scene: Scene, options: RenderOptions) -> RenderJob:
 
 def output_format(target: Path, fmt: str | None = None) -> str:
     """The format to write ``target`` in: ``fmt``, else its extension; a name without one is PNG frames."""
-    from ..encode.formats import FORMATS, TABLE, by_suffix, lookup
+    from ..encode.formats import by_suffix, lookup, suffixes
 
     suffix = target.suffix.lower()
     named = by_suffix(suffix)
@@ -244,7 +247,7 @@ def output_format(target: Path, fmt: str | None = None) -> str:
         return fmt
     if named is not None:
         return named.name
-    files = ", ".join(TABLE[f].suffix for f in FORMATS if not TABLE[f].folder)
+    files = ", ".join(suffixes())
     raise OptionError(f"{target}: cannot tell the format from {suffix}; expected a name ending in {files}, "
                       "or one without extension for a folder of PNG frames")
 

@@ -68,9 +68,11 @@ def reel(scenes: Sequence[Scene], path: str | os.PathLike[str], *, names: Sequen
         raise OptionError(f"expected a file or folder name, found {path!r}", "path")
     target = check_output_name(path)
     fmt = output_format(target)
-    if fmt in ("lottie", "svg"):
+    from ..encode.formats import is_vector, outputs_text
+
+    if is_vector(fmt):
         raise OptionError(f"{target}: a reel is a video of title cards and labelled comparisons, which a {fmt} "
-                          "file cannot hold; write .mp4, .webm, .mov, .gif or a folder of PNG frames", "path")
+                          f"file cannot hold; write {outputs_text(vector=False)}", "path")
     chosen = [match.over(s) for s in scenes]
     from ..encode.formats import TABLE
 

@@ -45,7 +45,7 @@ def test_sheet_shows_linear_shrinking_and_nonlinear_keeping_size(cli, tmp_path: 
         area = picture[int(top):int(top + height), columns]
         inked = np.flatnonzero((np.abs(area - 255).max(axis=-1) > 40).any(axis=1))
         extents.append((inked.max() - inked.min() + 1) / scale)
-    linear, nonlinear = extents
+    nonlinear, linear = extents  # the scene's own method (nonlinear) is the first row
     # linear: the mid square's corners at (3.5, 0.5) and (3.5, 2.5): 2 tall; nonlinear 2√2 tall (±1 px of stroke)
     assert linear == pytest.approx(2.0, abs=0.1)
     assert nonlinear == pytest.approx(2 * np.sqrt(2), abs=0.1)

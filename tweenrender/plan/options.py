@@ -17,7 +17,7 @@ from ..core.methods.registry import METHODS, unknown_method
 from ..errors import OptionError
 from ..model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color, Scene
 
-__all__ = ["RenderOptions", "MatchSettings", "check_scene", "Progress", "MAX_ONION", "MAX_WORKERS", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS", "canvas_limit",
+__all__ = ["RenderOptions", "MatchSettings", "check_scene", "own_method_first", "Progress", "MAX_ONION", "MAX_WORKERS", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS", "canvas_limit",
            "check_method", "check_methods", "check_size", "check_fps", "check_color", "check_choice"]
 
 Progress = Callable[[int, int], None]
@@ -118,6 +118,13 @@ def check_scene(scene: object) -> Scene:
     if not isinstance(scene, Scene):
         raise OptionError(f"scene: expected a scene from load_scene(), found {type(scene).__name__}")
     return scene
+
+
+def own_method_first(scene: Scene, methods: Sequence[str] | None = None) -> tuple[str, ...]:
+    """``methods`` (default the scene's compare list) with the scene's own method first: the rows and panels
+    of a sheet, reel or report open with what ``render`` draws."""
+    listed = scene.compare if methods is None else tuple(methods)
+    return (scene.method, *(m for m in listed if m != scene.method))
 
 
 def check_choice(value: object, choices: Sequence[str], option: str) -> str:

@@ -22,6 +22,7 @@ from ..errors import RenderError
 from ..model import Scene
 from ..pipeline.frames import Frames
 from ..plan.job import Progress, RenderJob
+from ..plan.options import own_method_first
 from ..pipeline.stream import stream_into
 from ..pipeline.workers import draw_frame
 
@@ -103,7 +104,7 @@ def plan_reel(scenes: Sequence[Scene], names: Sequence[str], size: tuple[int, in
     band = band_height(height)
     parts = []
     for scene, name in zip(scenes, names):
-        panels = tuple(methods) if methods else scene.compare
+        panels = tuple(methods) if methods else own_method_first(scene)
         box = (width, height - band)
         panel, columns = panel_fit(scene.size, len(panels), box, strip)
         job = RenderJob(scene, panels, labels=True, size=panel, fps=fps, paths=paths, onion=onion,

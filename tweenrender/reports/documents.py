@@ -12,7 +12,8 @@ from ..errors import OptionError
 from ..model import Scene
 from .analyses import picture_target
 from ..pipeline.library import not_an_input, output_format
-from ..plan.options import DEFAULT_MAX_FRAMES, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, MAX_ONION, Progress, check_fps, check_methods, check_size
+from ..plan.options import (DEFAULT_MAX_FRAMES, MAX_ONION, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, Progress,
+                            check_fps, check_methods, check_size, own_method_first)
 
 __all__ = ["sheet", "report", "reel"]
 
@@ -29,7 +30,7 @@ def sheet(scene: Scene, path: str | os.PathLike[str], *, methods: Sequence[str] 
     target = picture_target(path, "a sheet")
     scene = match.over(scene)
     not_an_input(target, [scene])
-    rows = scene.compare if methods is None else check_methods(methods, "methods")
+    rows = own_method_first(scene) if methods is None else check_methods(methods, "methods")
     if isinstance(count, bool) or not isinstance(count, int) or not 0 <= count <= 200:
         raise OptionError(f"expected a whole number from 0 to 200, found {count!r}", "count")
     checked = None if size is None else check_size(size)

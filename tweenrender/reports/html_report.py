@@ -21,6 +21,7 @@ from typing import Any, Callable, Sequence
 from ..core.methods.registry import METHODS, measured_methods
 from ..core.stacking import Switch, layered
 from ..errors import OptionError, printable
+from ..plan.options import own_method_first
 from ..model import Scene
 from .stats import crossing_runs
 
@@ -34,9 +35,9 @@ _WIDTH = 384  # pixels of each animation's width (three to a row); the height fo
 
 
 def report_methods(scene: Scene) -> tuple[str, ...]:
-    """Every method, ``jointed`` only when some shape has joints."""
+    """Every method, ``jointed`` only when some shape has joints; the scene's own first."""
     jointed = any(shape.joints for shape in scene.shapes)
-    return measured_methods(jointed)
+    return own_method_first(scene, measured_methods(jointed))
 
 
 def _check_target(target: Path) -> None:

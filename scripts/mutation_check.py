@@ -49,7 +49,7 @@ STROKE = ("tests/raster/test_round_stroke.py",)
 CONTROLS = ("tests/core/test_easing.py", "tests/core/test_hints.py", "tests/scenefile/test_controls.py",
             "tests/cli/test_timing_flags.py")
 ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
-VECTOR = ("tests/core/test_keyframes.py", "tests/pipeline/test_vector_output.py")
+VECTOR = ("tests/vector/test_keyframes.py", "tests/vector/test_vector_output.py")
 PAINT = ("tests/encode/test_vector_paint_players.py",)
 OWNED = ("tests/encode/test_manifest.py", "tests/cli/test_targets.py")
 _CLUSTER_TESTS = "tests/pipeline/test_cluster_failures.py::"
@@ -350,7 +350,7 @@ MUTANTS = [
     Mutant("preview: a bad save replaces the shown take", "tweenrender/preview/takes.py",
            "            elif error is not None:\n                self.error = error",
            "            elif error is not None:\n                self.error, self.take = error, None",
-           ("tests/pipeline/test_preview.py",)),
+           ("tests/preview/test_preview.py",)),
     # -- this round's start-up and memory work -------------------------------------------------------
     Mutant("boxes: the sample count read from the wrong field", "tweenrender/encode/media_boxes.py",
            'return struct.unpack_from(">I", stsz, 8)[0]', 'return struct.unpack_from(">I", stsz, 4)[0]',

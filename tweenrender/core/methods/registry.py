@@ -109,11 +109,11 @@ REGISTRY: dict[str, Method] = {m.name: m for m in (
            "the same as `intrinsic`, the closing change weighted by edge length", per_outline=True,
            closure="length"),
     Method("injective", _injective,
-           "never crosses itself (Gotsman & Surazhsky 2001): a compatible triangulation of both keys, "
-           "convex-combination weights blended over t"),
+           "never crosses itself: every contour of an element in one compatible triangulation of both keys, "
+           "each triangle turning and stretching by a share of its own change, made injective by projection"),
     Method("auto", _auto,
-           "reads the Q-curves: nonlinear where a shape (or body) turns rigidly; else linear where its "
-           "in-betweens never cross, injective where they would"),
+           "by measured quality: nonlinear where the Q-curves show a rigid turn and it does not tangle; else "
+           "straight paths where they do not tangle; else injective where it tangles less without sweeping far"),
 )}
 
 METHODS: tuple[str, ...] = tuple(REGISTRY)

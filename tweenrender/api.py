@@ -28,6 +28,7 @@ from typing import Any, Callable, Iterator, Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ._version import __version__
 from .model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color, DrawnContour, Key, Matching, Points, Scene, Shape
 from .plan.options import DEFAULT_MAX_FRAMES, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, RenderOptions
 
@@ -41,7 +42,6 @@ __all__ = [
     "COSTS", "ALIGNS", "EQUAL_COUNTS", "BALANCES", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS",
     "__version__",
 ]
-__version__ = "0.2.0"
 
 Progress = Callable[[int, int], None]
 

@@ -28,6 +28,15 @@ def test_roles_by_nesting_whatever_the_winding() -> None:
     assert roles([island, outer], [True, True]) == ["hole", "outer"]
 
 
+def test_roles_pass_over_the_copies_balancing_stacks_on_a_vertex() -> None:
+    """Balancing by copies stacks vertices (a zero-length first edge); the outline of a ring stays the
+    outer one though its vertex mean lies in the hole."""
+    outer = np.array([[0, 0], [0, 0], [0, 0], [10, 0], [10, 10], [0, 10]], dtype=float)
+    hole = square(3, 3, 4, clockwise=True)
+    assert roles([outer, hole], [True, True]) == ["outer", "hole"]
+    assert roles([hole, outer[::-1]], [True, True]) == ["hole", "outer"]
+
+
 def test_contours_pair_by_position_not_drawing_order() -> None:
     left, right = square(0, 0, 2), square(10, 0, 4)
     a = [left, right]

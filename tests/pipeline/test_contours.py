@@ -63,7 +63,7 @@ def test_the_second_key_of_a_reversed_partner_is_flagged() -> None:
 
 def test_nothing_of_an_element_without_a_partner_is_drawn_at_a_key(tmp_path: Path) -> None:
     # b has a stroked circle that a has not: at a's key it is not there at all (no dot), halfway it is
-    # there at half its size, with half its stroke width
+    # there at half its area (SPEC §5.17): √½ its size, with √½ its stroke width
     a, b = tmp_path / "a.svg", tmp_path / "b.svg"
     square = '<rect id="sq" x="2" y="2" width="6" height="6" fill="#000000"/>'
     a.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40">{square}</svg>')
@@ -72,6 +72,6 @@ def test_nothing_of_an_element_without_a_partner_is_drawn_at_a_key(tmp_path: Pat
     scene = tr.load_scene([a, b])
     assert [c.element for c in contours(scene, 0.0)] == ["sq"]
     (ring,) = [c for c in contours(scene, 0.5, method="linear") if c.element == "ring"]
-    assert ring.stroke_width == pytest.approx(1.0)
-    assert np.ptp(ring.points[:, 0]) == pytest.approx(5.0, rel=0.02)
+    assert ring.stroke_width == pytest.approx(2.0 * np.sqrt(0.5))
+    assert np.ptp(ring.points[:, 0]) == pytest.approx(10.0 * np.sqrt(0.5), rel=0.02)
     assert [c.element for c in contours(scene, 1.0)] == ["sq", "ring"]

@@ -6,7 +6,7 @@ contour is a stroke. Contours of consecutive keys are paired by a minimum-cost
 assignment within each role — outer with outer, hole with hole, open with
 open — on where they sit in their shape and how large they are, never by
 drawing order. A contour left without a partner grows from (or shrinks to) an
-*anchor*: the nearest point of the partner key's drawing.
+*anchor*: the point of the partner key's drawing nearest its centre of area (maths §5.17).
 """
 
 from __future__ import annotations
@@ -19,7 +19,8 @@ from numpy.typing import NDArray
 from .correspondence.assignment import min_cost_assignment
 from .geometry import signed_area
 
-__all__ = ["ROLES", "inside", "roles", "pair_contours", "nearest_point", "anchor", "contour_size"]
+__all__ = ["ROLES", "inside", "roles", "pair_contours", "nearest_point", "anchor", "centre_of_area",
+           "contour_size"]
 
 Array = NDArray[np.float64]
 ROLES = ("outer", "hole", "open")
@@ -53,10 +54,12 @@ def roles(contours: Sequence[Array], closed: Sequence[bool]) -> list[str]:
 
 
 def _probe(points: Array) -> Array:
-    """A point just inside the contour near its first edge (not on another contour's boundary by chance)."""
+    """A point just inside the contour near its first edge of some length (not on another contour's
+    boundary by chance); copies of a vertex, which balancing stacks, are passed over."""
     if len(points) < 3 or signed_area(points) == 0:
         return points.mean(axis=0)
-    a, b = points[0], points[1]
+    k = int(np.argmax(np.any(np.roll(points, -1, axis=0) != points, axis=1)))
+    a, b = points[k], points[(k + 1) % len(points)]
     mid = 0.5 * (a + b)
     edge = b - a
     normal = np.array([-edge[1], edge[0]])  # left of the edge: inside for counter-clockwise
@@ -64,8 +67,6 @@ def _probe(points: Array) -> Array:
         normal = -normal
     span = float(np.ptp(points, axis=0).max())
     length = float(np.hypot(*normal))
-    if length == 0:
-        return points.mean(axis=0)
     step = normal / length * min(1e-6 * span, 0.25 * length)
     return mid + step
 
@@ -157,10 +158,45 @@ def nearest_point(point: Array, contours: Sequence[Array], closed: Sequence[bool
     return np.asarray(best, dtype=np.float64)
 
 
-def anchor(contour: Array, partner: Sequence[Array], partner_closed: Sequence[bool], fill_rule: str) -> Array:
-    """Where a contour without a partner grows from or shrinks to: its centre if that lies in the
+def centre_of_area(contours: Sequence[Array], closed: Sequence[bool]) -> Array:
+    """The centre of area of the region the contours ``(N_i, 2)`` enclose, holes (by nesting) taken
+    away: ``(2,)``. Without area (open strokes, flat contours) the centre of their length, and
+    without length the mean of their vertices."""
+    kinds = roles(contours, closed)
+    total, moment = 0.0, np.zeros(2)
+    for points, kind in zip(contours, kinds):
+        if kind == "open" or len(points) < 3:
+            continue
+        x, y = points[:, 0], points[:, 1]
+        x1, y1 = np.roll(x, -1), np.roll(y, -1)
+        cross = x * y1 - x1 * y
+        area = 0.5 * float(cross.sum())
+        if area == 0.0:
+            continue
+        centre = np.array([((x + x1) * cross).sum(), ((y + y1) * cross).sum()]) / (6.0 * area)
+        weight = -abs(area) if kind == "hole" else abs(area)
+        total += weight
+        moment += weight * centre
+    if total > 0.0:
+        return moment / total
+    length, moment = 0.0, np.zeros(2)
+    for points, shut in zip(contours, closed):
+        ends = np.roll(points, -1, axis=0) if shut else points[1:]
+        starts = points if shut else points[:-1]
+        pieces = np.hypot(*(ends - starts).T)
+        length += float(pieces.sum())
+        moment += (0.5 * (starts + ends) * pieces[:, None]).sum(axis=0)
+    if length > 0.0:
+        return moment / length
+    return np.concatenate(list(contours)).mean(axis=0)
+
+
+def anchor(contour: Array, partner: Sequence[Array], partner_closed: Sequence[bool], fill_rule: str,
+           closed: bool = True) -> Array:
+    """Where a contour ``(N, 2)`` without a partner grows from or shrinks to: the point of the partner
+    key's drawing nearest its centre of area (:func:`centre_of_area`) — that centre if it lies in the
     partner key's filled region, else the nearest point of the partner's outlines: ``(2,)``."""
-    centre = contour.mean(axis=0)
+    centre = centre_of_area([contour], [closed])
     shut = [p for p, c in zip(partner, partner_closed) if c and len(p) >= 3]
     if shut:
         hits = np.array([int(inside(centre[None], p)[0]) for p in shut])

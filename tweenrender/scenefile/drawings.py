@@ -4,8 +4,8 @@ Elements of consecutive drawings are matched by id where both drawings have it,
 else by a minimum-cost assignment on position (relative to the view), size and
 colour. A chain of matched elements becomes one :class:`~tweenrender.model.Shape`.
 An element with no partner in the next (previous) drawing shrinks to (grows from)
-its own centre during that segment — or fades, with ``unmatched = "fade"``: its
-shape gets a *hidden* key there.
+its own centre of area over that segment, its area linear in time (maths §5.17) —
+or fades, with ``unmatched = "fade"``: its shape gets a *hidden* key there.
 
 Coordinates: the first drawing's view box (flipped so y is up) is the scene's
 world; every later drawing's view box is fitted into it, centred, aspect kept
@@ -20,6 +20,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
+from ..core.contours import centre_of_area
 from ..core.correspondence.assignment import min_cost_assignment
 from ..core.timing.easing import Easing
 from ..errors import SceneError
@@ -36,6 +37,7 @@ _SIZE_WEIGHT = 0.5
 _COLOR_WEIGHT = 1.0
 _KIND_COST = 0.5  # a filled element with a stroke-only one
 _UNMATCHED_COST = 0.6  # leaving an element without a partner: beyond this, it goes and another comes
+_SETTLING = 4  # passes placing the elements that come or go in the paint order
 
 
 @dataclass(frozen=True, slots=True)
@@ -95,6 +97,7 @@ def drawing_shapes(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], unma
                 chains.append([(k, b)])
         order = _merge_order(order, [now[b] for b in range(len(drawings[k].elements))])
         last_of = now
+    order = _settled(order, chains, len(drawings))
     names = _names([[drawings[k].elements[e] for k, e in chain] for chain in chains])
     delays = _delays(chains, drawings, keys, fail)
     shapes = [_shape(chains[c], names[c], drawings, keys, unmatched, hints, delays[c]) for c in order]
@@ -261,6 +264,71 @@ def _merge_order(order: list[int], drawn: list[int]) -> list[int]:
     return out
 
 
+def _settled(order: list[int], chains: list[list[tuple[int, int]]], count: int) -> list[int]:
+    """``order`` with each chain that comes after the first drawing or goes before the last put where it
+    changes places with the fewest others between its hidden key and the key beside it, and then, of
+    those places, where it is over the most elements that go as it comes (under those that come as it goes).
+
+    At its hidden key an element is painted right after the chain before it in ``order`` that is drawn
+    there (:func:`..core.stacking.key_order`). Were it on the other side of a chain there than beside,
+    the paint order's one switch between the keys (which other elements may put late) would keep it
+    under that chain for part of its growth (or put it there for part of its shrinking), and it would
+    pop into (out of) view at the switch; and under an element that shrinks away as it grows, it would
+    show only as that one goes (maths §5.17). Ties keep its place.
+    """
+    layers: list[dict[int, int]] = [{} for _ in range(count)]  # per drawing: chain -> its place in the paint
+    for c, chain in enumerate(chains):
+        for k, e in chain:
+            layers[k][c] = e
+    out = list(order)
+    moving = [c for c in order if chains[c][0][0] > 0 or chains[c][-1][0] < count - 1]
+    for _ in range(_SETTLING):  # where one goes may change where another is best: a few passes
+        before = list(out)
+        for c in moving:
+            out = _settle(c, out, chains[c], layers)
+        if out == before:
+            break
+    return out
+
+
+def _settle(c: int, out: list[int], chain: list[tuple[int, int]], layers: list[dict[int, int]]) -> list[int]:
+    """``out`` with chain ``c`` (drawn in ``chain``, its drawings and places) moved where it changes places
+    with the fewest others, then is under the fewest that go as it comes (see :func:`_settled`)."""
+    first, last = chain[0][0], chain[-1][0]
+    ends = ([(first - 1, first)] if first > 0 else []) + ([(last + 1, last)] if last < len(layers) - 1 else [])
+    rest = [x for x in out if x != c]
+    size = len(rest) + 1
+    swaps = np.zeros(size, dtype=np.int64)
+    unders = np.zeros(size, dtype=np.int64)
+    for hidden, shown in ends:
+        there = np.array([layers[hidden].get(x, -1) for x in rest], dtype=np.int64)  # -1: not drawn there
+        beside = np.array([layers[shown].get(x, -1) for x in rest], dtype=np.int64)
+        # put before rest[j], c is painted right after the last chain before it drawn at ``hidden``: above
+        # the chains whose places there are < slots[j]
+        prior = np.maximum.accumulate(np.where(there >= 0, np.arange(len(rest)), -1))
+        slots = np.concatenate([[0], np.where(prior >= 0, there[prior] + 1, 0)])
+        below = (beside >= 0) & (beside < layers[shown][c])  # under c beside
+        both = (there >= 0) & (beside >= 0)
+        swaps += _misplaced(there[both], below[both], slots)
+        # hidden there too: after the same chain, the later in ``out`` is above
+        alone = np.flatnonzero((there < 0) & (beside >= 0))
+        swaps += _misplaced(slots[alone] * size + alone, below[alone], slots * size + np.arange(size))
+        going = (there >= 0) & (beside < 0)  # goes as c comes (comes as c goes): c over (under) it
+        unders += _misplaced(there[going], np.full(int(going.sum()), hidden < shown), slots)
+    cost = swaps * size + unders
+    now = out.index(c)
+    best = now if cost[now] == cost.min() else int(np.argmin(cost))
+    return rest[:best] + [c] + rest[best:]
+
+
+def _misplaced(keys: np.ndarray, below: np.ndarray, at: np.ndarray) -> np.ndarray:
+    """For each place ``at (P,)``: how many chains (their ``keys (D,)``; below the place where key < at) are
+    not below it though they should be (``below (D,)``), plus how many are below it though they should
+    not be: ``(P,)``."""
+    should, should_not = np.sort(keys[below]), np.sort(keys[~below])
+    return (len(should) - np.searchsorted(should, at)) + np.searchsorted(should_not, at)
+
+
 def _names(chains: list[list[Element]]) -> list[str]:
     """A unique name per chain: the element's id where it has one, else its tag and a number."""
     names: list[str] = []
@@ -296,12 +364,12 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
 
 
 def _hidden(element: Element, at: DrawingKey, unmatched: str) -> Key:
-    """Where an element comes from or goes to: its centre (``grow``) or itself at opacity 0 (``fade``)."""
+    """Where an element comes from or goes to: its centre of area (``grow``) or itself at opacity 0 (``fade``)."""
     if unmatched == "fade":
         return Key(at.time, element.contours, at.ease, replace(element.paint, opacity=0.0), hidden=True,
                    fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
                    clips=element.clips, easing=at.easing)
-    centre = _centre(element)
+    centre = centre_of_area([c.points for c in element.contours], [c.closed for c in element.contours])
     contours = tuple(Contour(frozen_points(np.broadcast_to(centre, c.points.shape)), c.closed)
                      for c in element.contours)
     return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True,

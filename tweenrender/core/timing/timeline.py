@@ -5,8 +5,9 @@ In each segment the contours of the two keys are paired (:mod:`.contours`),
 each pair is balanced to one vertex count (:mod:`.correspond`), and the pairs
 move together under the segment's method: all the pairs' vertices are
 interpolated as one point set, so a shape with holes or pieces turns about one
-center of mass. A contour without a partner grows from (or shrinks to) its
-anchor along straight paths. Paint blends in OKLab (:mod:`.paint`).
+center of mass. A contour without a partner, and every contour of an element appearing from or
+leaving for a hidden key, grows from (or shrinks to) its anchor over the whole segment, its area
+linear in the eased parameter (:mod:`.appear`). Paint blends in OKLab (:mod:`.paint`).
 
 Frame ``f`` is drawn at ``time = f / fps``; before the first key a shape holds
 its first key, after its last key the last one. A *hidden* key (where an element
@@ -30,6 +31,7 @@ from ...model import Contour, Key, Matching, Paint, Points, Scene, Shape
 from ..contours import anchor, pair_contours
 from ..correspondence.correspond import Correspondence, correspond, correspond_open
 from ..balance import spread
+from .appear import scale_of, scaled, width_share
 from .easing import LINEAR, Easing, parse_easing
 from ..geometry import signed_area
 from ..clip_motion import clips_at
@@ -68,8 +70,9 @@ def frame_count(duration: float, fps: float) -> int:
 class Pair:
     """One contour through a segment: ``k0``, ``k1`` are ``(L, 2)`` after balancing.
 
-    ``source`` is the contour's index in each key (``None``: it has no partner there and
-    grows from, or shrinks to, a point — or, when ``fades``, keeps its shape and fades);
+    ``source`` is the contour's index in each key (``None``: it has no partner there, or that key is
+    hidden, and it grows from, or shrinks to, the point that key holds — or, when ``fades``, keeps its
+    shape and fades);
     ``counts`` the two contours' vertex counts as drawn; ``correspondence`` the balancing
     path (``None`` where the drawn order is kept).
     """
@@ -237,8 +240,8 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
 
     The moving pairs are interpolated as one point set (one center of mass, one turn), except by
     the methods that work on one closed outline (:func:`.methods.per_outline`), which take each closed contour on its own and place it
-    where the whole shape's rigid paths put it; the growing, shrinking or fading pairs move on
-    straight paths.
+    where the whole shape's rigid paths put it; the growing and shrinking pairs are scaled about their
+    point (:mod:`.appear`), the fading ones keep their shape.
     """
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
@@ -279,11 +282,12 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
             for i, part in zip(moving, np.split(together, cuts, axis=1)):
                 frames[i] = part
     for i, pair in enumerate(pairs):
-        if frames[i] is None:
-            # growing (shrinking) contours never turn inside out: their scale stops at 0
-            grows, shrinks = pair.source[0] is None, pair.source[1] is None
-            own = np.clip(t, 0.0 if grows else -np.inf, 1.0 if shrinks else np.inf) if not pair.fades else t
-            frames[i] = interpolate(pair.k0, pair.k1, own, "linear")
+        if frames[i] is None and pair.fades:
+            frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
+        elif frames[i] is None:  # its area grows (shrinks) linearly in t, over the whole segment
+            grows = pair.source[0] is None
+            point, shape = (pair.k0[0], pair.k1) if grows else (pair.k1[0], pair.k0)
+            frames[i] = scaled(point, shape, scale_of(t, grows))
     return frames  # type: ignore[return-value]
 
 
@@ -302,8 +306,10 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
     inbetweens already computed, e.g. staggered; the paint follows ``t``).
 
     At a key only that key's contours are drawn (one that grows from or shrinks to a point there is
-    kept, as that point with no stroke width), with the key's own fill rule and windings; in-betweens take the first key's until
-    ``segment.switch``, the second's from it.
+    kept, as that point with no stroke width), with the key's own fill rule and windings; in-betweens
+    take the first key's until ``segment.switch``, the second's from it. A growing (shrinking)
+    contour's stroke width scales with it (:func:`.appear.width_share`): its share of the width, or,
+    for a whole element coming from (going to) a hidden key, its paint's width.
     """
     pairs = segment.pairs
     frames = pair_paths(segment, t, method) if frames is None else frames
@@ -313,6 +319,7 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
     fading = any(p.fades for p in pairs)
     sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
     growing = [i for i, p in enumerate(pairs) if not p.moving and not p.fades]
+    whole = bool(growing) and not all(segment.shown)  # an element growing from (shrinking to) a hidden key
     p0, p1 = segment.paints
     c0, c1 = (segment.ends[0].clips, segment.ends[1].clips) if segment.ends is not None else ((), ())
     boxes = None
@@ -343,10 +350,12 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
         # every pair is kept (a constant count, for players that interpolate vertices): at a key, one that
         # grows from or shrinks to a point there is that point, stroked with no width, so nothing of it shows
         widths: tuple[float, ...] = ()
-        if growing:
+        if whole:
+            paint = replace(paint, stroke_width=paint.stroke_width * width_share(x, segment.shown[1]))
+        elif growing:
             share = [1.0] * len(pairs)
             for i in growing:
-                share[i] = min(max(x if pairs[i].source[0] is None else 1.0 - x, 0.0), 1.0)
+                share[i] = width_share(x, pairs[i].source[0] is None)
             widths = tuple(share)
         out.append(ShapeAt(contours, closed, paint, visible and paint.visible, x if fading else None, sides,
                            flips, drawn_as, widths, clips))
@@ -423,7 +432,8 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
                 carried = tuple((int(found.pairs[p, 1]), int(found.pairs[q, 1])) for p, q in balanced_joints)
             joints = carried
         segments.append(Segment(before.time, after.time, before.ease, pairs, balanced_joints,
-                                (before.paint, after.paint), (not before.hidden, not after.hidden),
+                                _paints(before, after, shape.unmatched or unmatched),
+                                (not before.hidden, not after.hidden),
                                 (before, after),
                                 key_windings(pairs, before.contours, after.contours),
                                 easing=easing_of(before), delay=before.delay, links=links, stagger=shape.stagger))
@@ -434,8 +444,11 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
            balance: str = "copies", links: tuple[Link, ...] = ()) -> tuple[Pair, ...]:
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
-        # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order
-        return tuple(Pair(x.points, y.points, x.closed, (len(x.points), len(y.points)), None, (i, i))
+        # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order;
+        # unless it fades, the element grows from (shrinks to) the point the hidden key holds
+        grows = unmatched != "fade" and before.hidden != after.hidden
+        return tuple(Pair(x.points, y.points, x.closed, (len(x.points), len(y.points)), None,
+                          (None if grows and before.hidden else i, None if grows and after.hidden else i))
                      for i, (x, y) in enumerate(zip(a, b)))
     partners = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b],
                              [c.closed for c in b], forced=forced_contour_pairs(links))
@@ -451,11 +464,21 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
             pairs.append(Pair(alone.points, alone.points, alone.closed, (n, n), None, (i, j), fades=True))
             continue
         rule = (after if i is not None else before).fill_rule or fill_rule  # the partner key's own
-        point = anchor(alone.points, [c.points for c in others], [c.closed for c in others], rule)
+        point = anchor(alone.points, [c.points for c in others], [c.closed for c in others], rule, alone.closed)
         collapsed = np.broadcast_to(point, alone.points.shape)
         k0, k1 = (alone.points, collapsed) if i is not None else (collapsed, alone.points)
         pairs.append(Pair(_frozen(k0), _frozen(k1), alone.closed, (n, n), None, (i, j)))
     return tuple(pairs)
+
+
+def _paints(before: Key, after: Key, unmatched: str) -> tuple[Paint, Paint]:
+    """The paints a segment blends: the keys' own, but an element growing from (shrinking to) a hidden
+    key keeps its stroke width there: :func:`evaluate_segment` scales the width with the element."""
+    if unmatched == "fade" or before.hidden == after.hidden:
+        return before.paint, after.paint
+    if before.hidden:
+        return replace(before.paint, stroke_width=after.paint.stroke_width), after.paint
+    return before.paint, replace(after.paint, stroke_width=before.paint.stroke_width)
 
 
 def _balanced(a: Contour, b: Contour, source: tuple[int, int], matching: Matching,

@@ -1,0 +1,239 @@
+"""Contours and elements without a partner come and go without a pop (SPEC §5.17).
+
+Such a contour grows from (shrinks to) the point of its partner's side nearest its own centre of
+area over the whole segment, its area linear in the eased parameter, so each frame adds (takes) an
+equal share; its stroke width scales with it. Areas, centres and nearest points are worked out here
+from first principles (shoelace, polygon centroid, point-to-segment distance), not by the project.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import tweenrender as tr
+from tests.helpers import write_scene
+
+SQUARE = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]]
+# an L whose vertices crowd along its bottom edge: its vertex mean is not its centre of area
+ELL = [[6.0, 0.0], [6.25, 0.0], [6.5, 0.0], [6.75, 0.0], [7.0, 0.0], [7.25, 0.0], [9.0, 0.0], [9.0, 1.0],
+       [7.0, 1.0], [7.0, 3.0], [6.0, 3.0]]
+TIMES = np.linspace(0.0, 1.0, 25)
+
+
+def area(points: np.ndarray) -> float:
+    """|Shoelace area| of a closed polygon ``(N, 2)``."""
+    x, y = points[:, 0], points[:, 1]
+    return abs(0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
+
+
+def centre_of_area(points: np.ndarray) -> np.ndarray:
+    """The centroid of the region a simple polygon ``(N, 2)`` encloses."""
+    x, y = points[:, 0], points[:, 1]
+    x1, y1 = np.roll(x, -1), np.roll(y, -1)
+    cross = x * y1 - x1 * y
+    six_area = 3.0 * float(cross.sum())
+    return np.array([((x + x1) * cross).sum(), ((y + y1) * cross).sum()]) / six_area
+
+
+def nearest_on_edges(point: np.ndarray, polygons: list[np.ndarray]) -> np.ndarray:
+    """Brute force: the point of the closed polygons' edges nearest ``point``."""
+    best, best_d = None, np.inf
+    for poly in polygons:
+        for a, b in zip(poly, np.roll(poly, -1, axis=0)):
+            s = float(np.clip(np.dot(point - a, b - a) / np.dot(b - a, b - a), 0.0, 1.0))
+            foot = a + s * (b - a)
+            d = float(np.hypot(*(foot - point)))
+            if d < best_d:
+                best, best_d = foot, d
+    return np.asarray(best)
+
+
+def shape_scene(tmp_path: Path, first: list, second: list, ease: str = "linear", extra: str = "") -> tr.Scene:
+    text = (f'[[shape]]\nname = "s"\nmethod = "linear"\nfill = "#3b6fd8"\n{extra}'
+            f'[[shape.key]]\ntime = 0\ncontours = {first}\nease = "{ease}"\n'
+            f'[[shape.key]]\ntime = 1\ncontours = {second}\n')
+    return tr.load_scene(write_scene(tmp_path, text))
+
+
+def drawn(scene: tr.Scene, time: float, method: str | None = None) -> list:
+    """Every shape as it is drawn at ``time`` (its contours, stroke width and each contour's share of it)."""
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
+
+    return Frames(RenderJob(scene)).shapes_at(method, time)
+
+
+def by_name(scene: tr.Scene, time: float, method: str | None = None) -> dict:
+    return {shape.name: at for shape, at in zip(scene.shapes, drawn(scene, time, method))}
+
+
+@pytest.mark.parametrize("grows", [True, False])
+def test_the_area_of_a_contour_without_partner_is_linear_in_t(tmp_path: Path, grows: bool) -> None:
+    both, one = [SQUARE, ELL], [SQUARE]
+    scene = shape_scene(tmp_path, one if grows else both, both if grows else one)
+    key = area(np.array(ELL))
+    for t in TIMES[1:-1]:
+        (at,) = drawn(scene, float(t))
+        square, alone = at.contours
+        assert area(square) == pytest.approx(16.0, rel=1e-12)
+        share = t if grows else 1.0 - t  # each of the 24 frames adds (takes) 1/24 of it
+        assert area(alone) == pytest.approx(share * key, rel=1e-9), t
+    (end,) = drawn(scene, 1.0 if grows else 0.0)
+    np.testing.assert_array_equal(end.contours[1], np.array(ELL))  # the key, exactly
+
+
+@pytest.mark.parametrize("grows", [True, False])
+def test_at_its_keys_the_drawing_is_exactly_the_key(tmp_path: Path, grows: bool) -> None:
+    """Coordinates that scaling by 1 about a point would round (p + (q - p) is not always q)."""
+    odd = (0.3 * np.array(ELL) + 0.1).tolist()
+    square = (0.7 * np.array(SQUARE) + 0.1).tolist()
+    both, one = [square, odd], [square]
+    scene = shape_scene(tmp_path, one if grows else both, both if grows else one)
+    for time, key in ((0.0, one if grows else both), (1.0, both if grows else one)):
+        got = tr.outlines(scene, time)
+        assert len(got) == len(key)
+        for points, want in zip(got, key):
+            np.testing.assert_array_equal(points, np.array(want))
+
+
+@pytest.mark.parametrize("ease, curve", [("in", lambda u: u * u), ("in-out", lambda u: 3 * u * u - 2 * u ** 3)])
+def test_with_an_ease_the_area_follows_the_eased_fraction(tmp_path: Path, ease: str, curve) -> None:  # type: ignore[no-untyped-def]
+    scene = shape_scene(tmp_path, [SQUARE], [SQUARE, ELL], ease)
+    key = area(np.array(ELL))
+    for u in TIMES[1:-1]:
+        (at,) = drawn(scene, float(u))
+        assert area(at.contours[1]) == pytest.approx(curve(u) * key, rel=1e-9), u
+
+
+def grown_from(at_quarter: np.ndarray, key: np.ndarray) -> np.ndarray:
+    """The point a contour is scaled about, from the contour at t = 1/4 (scale 1/2) and at its key."""
+    points = 2.0 * at_quarter - key  # c + (k - c) / 2 = q  =>  c = 2q - k, the same for every vertex
+    np.testing.assert_allclose(points, np.broadcast_to(points[0], points.shape), atol=1e-12)
+    return points[0]
+
+
+def test_a_contour_outside_its_partner_grows_from_the_partners_nearest_point(tmp_path: Path) -> None:
+    ring = [[[-6.0, -6.0], [4.0, -6.0], [4.0, 4.0], [-6.0, 4.0]], [[-1.0, -1.0], [-1.0, 2.0], [2.0, 2.0], [2.0, -1.0]]]
+    # the L's centre of area lies outside the first key's drawing, to the right of it
+    scene = shape_scene(tmp_path, ring, [*ring, ELL])
+    (at,) = drawn(scene, 0.25)
+    centre = centre_of_area(np.array(ELL))
+    point = nearest_on_edges(centre, [np.array(c) for c in ring])
+    np.testing.assert_allclose(grown_from(at.contours[2], np.array(ELL)), point, atol=1e-9)
+    assert not np.allclose(point, nearest_on_edges(np.mean(ELL, axis=0), [np.array(c) for c in ring]))
+
+
+def test_a_hole_in_the_partners_hole_grows_from_its_nearest_edge(tmp_path: Path) -> None:
+    """A second hole whose centre of area lies in the first key's hole (not in its drawing): it grows
+    from the point of that hole's edges nearest to it."""
+    outer = [[-2.0, -2.0], [14.0, -2.0], [14.0, 8.0], [-2.0, 8.0]]
+    hole = [[0.0, 0.0], [0.0, 4.0], [7.5, 4.0], [7.5, 0.0]]  # clockwise
+    ell_hole = [list(p) for p in ELL[::-1]]
+    scene = shape_scene(tmp_path, [outer, hole], [outer, [[0.0, 0.0], [0.0, 4.0], [4.0, 4.0], [4.0, 0.0]], ell_hole])
+    (at,) = drawn(scene, 0.25)
+    centre = centre_of_area(np.array(ell_hole))
+    assert 6.0 < centre[0] < 7.5 and 0.0 < centre[1] < 4.0  # inside the first key's hole
+    point = nearest_on_edges(centre, [np.array(outer), np.array(hole)])
+    np.testing.assert_allclose(grown_from(at.contours[2], np.array(ell_hole)), point, atol=1e-9)
+
+
+def test_a_hole_inside_its_partners_drawing_grows_from_its_centre_of_area(tmp_path: Path) -> None:
+    outer = [[-2.0, -2.0], [14.0, -2.0], [14.0, 8.0], [-2.0, 8.0]]
+    ell_hole = [list(p) for p in ELL[::-1]]
+    scene = shape_scene(tmp_path, [outer], [outer, ell_hole])
+    (at,) = drawn(scene, 0.25)
+    np.testing.assert_allclose(grown_from(at.contours[1], np.array(ell_hole)), centre_of_area(np.array(ell_hole)),
+                               atol=1e-9)
+
+
+@pytest.mark.parametrize("grows", [True, False])
+def test_a_growing_contours_stroke_width_scales_with_it(tmp_path: Path, grows: bool) -> None:
+    both, one = [SQUARE, ELL], [SQUARE]
+    scene = shape_scene(tmp_path, one if grows else both, both if grows else one,
+                        extra='stroke = "#000000"\nstroke_width = 3.0\n')
+    for t in TIMES:
+        (at,) = drawn(scene, float(t))
+        share = t if grows else 1.0 - t
+        assert at.widths[0] == 1.0 and at.paint.stroke_width == 3.0
+        assert at.widths[1] == pytest.approx(np.sqrt(share), rel=1e-12, abs=1e-15), t  # a band of area ∝ t
+
+
+def drawings(tmp_path: Path) -> tuple[Path, Path]:
+    box = '<rect id="box" x="1" y="1" width="4" height="4" fill="#3b6fd8"/>'
+    ell = "M " + " L ".join(f"{x + 4} {20 - y}" for x, y in ELL) + " Z"  # the L in SVG units (y down)
+    a = tmp_path / "a.svg"
+    b = tmp_path / "b.svg"
+    a.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">{box}</svg>')
+    b.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">{box}'
+                 f'<path id="ell" d="{ell}" fill="#2e9e44"/>'
+                 '<polyline id="zig" points="4 16 10 20 16 16" fill="none" stroke="#000" stroke-width="2"/></svg>')
+    return a, b
+
+
+@pytest.mark.parametrize("method", ["linear", "nonlinear", "arap", "injective", "auto"])
+def test_an_element_grows_from_its_centre_of_area_its_area_linear_in_t(tmp_path: Path, method: str) -> None:
+    a, b = drawings(tmp_path)
+    for forwards in (True, False):
+        scene = tr.load_scene([a, b] if forwards else [b, a])
+        key = by_name(scene, 1.0 if forwards else 0.0, method)
+        ell_area = area(key["ell"].contours[0])
+        zig_length = float(np.hypot(*np.diff(key["zig"].contours[0], axis=0).T).sum())
+        for t in TIMES[1:-1]:
+            now = by_name(scene, float(t), method)
+            share = t if forwards else 1.0 - t
+            assert area(now["ell"].contours[0]) == pytest.approx(share * ell_area, rel=1e-9), (t, forwards)
+            # the stroke's width and length both scale by √share: its band's area is share × the key's
+            zig = now["zig"]
+            length = float(np.hypot(*np.diff(zig.contours[0], axis=0).T).sum())
+            assert length == pytest.approx(np.sqrt(share) * zig_length, rel=1e-9)
+            width = zig.paint.stroke_width * (zig.widths[0] if zig.widths else 1.0)
+            assert width == pytest.approx(np.sqrt(share) * key["zig"].paint.stroke_width, rel=1e-9)
+            (reported,) = [c.stroke_width for c in tr.contours(scene, float(t), method) if c.element == "zig"]
+            assert reported == pytest.approx(width, rel=1e-12)  # the library reports the width drawn
+    scene = tr.load_scene([a, b])
+    ell_key = by_name(scene, 1.0, method)["ell"].contours[0]
+    quarter = by_name(scene, 0.25, method)["ell"].contours[0]
+    np.testing.assert_allclose(grown_from(quarter, ell_key), centre_of_area(ell_key), atol=1e-9)
+
+
+def test_an_element_is_painted_in_its_place_while_it_grows(tmp_path: Path) -> None:
+    """An element that appears takes, at the key where it is hidden, the place in the paint order it has at
+    its own key: b paints the new dot over the face, so the dot is not hidden under the face until the
+    paint order switches (late, where the face and the old element that now goes over it overlap least);
+    nor is a second new dot, painted over the first in b, put under it."""
+    face = '<circle id="face" cx="12" cy="12" r="9" fill="#ffcc4d"/>'
+    a = tmp_path / "a.svg"
+    b = tmp_path / "b.svg"
+    a.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">'
+                 f'<rect id="bar" x="8" y="12" width="8" height="3" fill="#664500"/>{face}</svg>')
+    b.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">{face}'  # the bar slides half out
+                 '<rect id="bar" x="8" y="19.5" width="8" height="3" fill="#664500"/>'
+                 '<circle id="dot" cx="12" cy="8" r="1" fill="#2e9e44"/>'
+                 '<circle id="other" cx="13" cy="8" r="1" fill="#3b6fd8"/></svg>')
+    scene = tr.load_scene([a, b])
+    for time in (0.25, 0.5, 0.75):
+        img = tr.frame(scene, time, size=(240, 240))
+        assert tuple(img[80, 117, :3]) == (0x2E, 0x9E, 0x44), time  # the dot, 10 px a unit
+        if time > 0.25:  # where the two overlap (radius √t)
+            assert tuple(img[80, 125, :3]) == (0x3B, 0x6F, 0xD8), time
+
+
+def test_an_element_that_comes_is_painted_over_one_that_goes(tmp_path: Path) -> None:
+    """A page goes and a cross comes in its place (no key has both): the cross is painted over the page, so
+    it shows as it grows rather than only as the page shrinks away from over it."""
+    dot = '<circle id="dot" cx="3" cy="3" r="1" fill="#ff0000"/>'
+    a = tmp_path / "a.svg"
+    b = tmp_path / "b.svg"
+    a.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">{dot}'
+                 '<rect id="page" x="6" y="6" width="12" height="12" fill="#ccd6dd"/></svg>')
+    b.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">{dot}'
+                 '<path id="cross" d="M8 8 L16 16 M16 8 L8 16" stroke="#000" stroke-width="2" fill="none"/></svg>')
+    scene = tr.load_scene([a, b])
+    keys = {shape.name: shape.keys for shape in scene.shapes}
+    assert keys["page"][-1].hidden and keys["cross"][0].hidden  # no partners
+    for time in (0.25, 0.5, 0.75):
+        img = tr.frame(scene, time, size=(240, 240))
+        assert tuple(img[120, 120, :3]) == (0, 0, 0), time  # the cross's middle, 10 px a unit

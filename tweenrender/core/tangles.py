@@ -4,9 +4,17 @@ A shape *tangles* at a frame when one of its contours crosses itself properly
 — two edges that are not neighbours meet at one point inside both, each
 passing to the other's far side — or when a hole leaves its outline: the hole
 crosses its outline properly, or lies wholly outside it. Touching (a vertex on
-an edge, collinear overlap) does not count, nor do two pieces overlapping.
-Which contour is a hole of which is read from the first frame: a closed
-contour's *parent* is the smallest closed contour around its first vertex.
+an edge, collinear overlap) does not count. Which contour is a hole of which
+is read from the first frame: a closed contour's *parent* is the smallest
+closed contour around its first vertex.
+
+:func:`contact_times` adds what a viewer sees as well (``stats``' ``crossings``
+and ``stroke_crossings``): two contours of one shape that are *apart* in both
+keys — no common point, and the same nesting (one inside the other, or
+neither) in both — *meet* at a frame when they cross (their edges properly, or
+passing through each other where they only touch), or (closed contours) when
+one comes to lie inside the other or leaves it. A contour lying along another
+without passing through it (collinear edges) only touches it.
 
 Orientation signs are exact: a float determinant within its rounding bound of
 zero is recomputed in exact rational arithmetic (:class:`fractions.Fraction`),
@@ -18,13 +26,15 @@ less than all pairs.
 from __future__ import annotations
 
 from collections import OrderedDict
+from dataclasses import dataclass
 from fractions import Fraction
 from typing import Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["SWEEP", "parents", "tangles", "tangled_times", "proper_crossings", "linear_tangles"]
+__all__ = ["SWEEP", "parents", "tangles", "tangled_times", "proper_crossings", "crossing_pairs", "linear_tangles",
+           "point_states", "Apart", "apart_in_keys", "contact_times"]
 
 Array = NDArray[np.float64]
 
@@ -91,27 +101,57 @@ def _candidates(a: Array, b: Array) -> tuple[NDArray[np.intp], NDArray[np.intp]]
     return i[meet], j[meet]
 
 
-def proper_crossings(contours: Sequence[Array], closed: Sequence[bool]) -> list[tuple[int, int]]:
-    """The pairs of contours ``(c, d)``, ``c ≤ d``, that cross properly (``c == d``: it crosses itself)."""
+def proper_crossings(contours: Sequence[Array], closed: Sequence[bool],
+                     touching: bool = False) -> list[tuple[int, int]]:
+    """The pairs of contours ``(c, d)``, ``c ≤ d``, that cross properly (``c == d``: it crosses itself);
+    with ``touching``, the pairs of different contours whose edges share any point at all."""
+    proper, touched = _meetings(contours, closed)
+    return sorted(touched if touching else proper)
+
+
+def _meetings(contours: Sequence[Array], closed: Sequence[bool]
+              ) -> tuple[set[tuple[int, int]], set[tuple[int, int]]]:
+    """The pairs ``(c, d)``, ``c ≤ d``, that cross properly (``c == d``: it crosses itself), and the pairs
+    of different contours whose edges share any point (crossing, touching or overlapping)."""
     a, b, owner, index, count = _edges(contours, closed)
     if len(a) < 2:
-        return []
+        return set(), set()
     i, j = _candidates(a, b)
     same = owner[i] == owner[j]
     gap = np.abs(index[i] - index[j])
     neighbours = same & ((gap == 1) | ((count[i] > 0) & (gap == count[i] - 1)))
     i, j = i[~neighbours], j[~neighbours]
-    if len(i) == 0:
-        return []
     p, q, r, s = a[i], b[i], a[j], b[j]
-    d1 = _sign(p[:, 0], p[:, 1], q[:, 0], q[:, 1], r[:, 0], r[:, 1])
-    d2 = _sign(p[:, 0], p[:, 1], q[:, 0], q[:, 1], s[:, 0], s[:, 1])
-    keep = (d1.astype(int) * d2) < 0
-    d3 = _sign(r[keep, 0], r[keep, 1], s[keep, 0], s[keep, 1], p[keep, 0], p[keep, 1])
-    d4 = _sign(r[keep, 0], r[keep, 1], s[keep, 0], s[keep, 1], q[keep, 0], q[keep, 1])
-    cross = (d3.astype(int) * d4) < 0
-    c, d = owner[i][keep][cross], owner[j][keep][cross]
-    return sorted({(int(min(x, y)), int(max(x, y))) for x, y in zip(c.tolist(), d.tolist())})
+    d1 = _sign(p[:, 0], p[:, 1], q[:, 0], q[:, 1], r[:, 0], r[:, 1]).astype(int)
+    d2 = _sign(p[:, 0], p[:, 1], q[:, 0], q[:, 1], s[:, 0], s[:, 1]).astype(int)
+    # touching: each edge's ends on both sides of the other's line or on it; collinear edges whose
+    # boxes meet (every candidate's do) overlap
+    keep = d1 * d2 <= 0
+    d3 = _sign(r[keep, 0], r[keep, 1], s[keep, 0], s[keep, 1], p[keep, 0], p[keep, 1]).astype(int)
+    d4 = _sign(r[keep, 0], r[keep, 1], s[keep, 0], s[keep, 1], q[keep, 0], q[keep, 1]).astype(int)
+    c, d = owner[i][keep], owner[j][keep]
+    meet = d3 * d4 <= 0
+    cross = meet & (d3 * d4 < 0) & ((d1 * d2)[keep] < 0)
+    touch = meet & (c != d)
+    return ({(int(min(x, y)), int(max(x, y))) for x, y in zip(c[cross].tolist(), d[cross].tolist())},
+            {(int(min(x, y)), int(max(x, y))) for x, y in zip(c[touch].tolist(), d[touch].tolist())})
+
+
+def crossing_pairs(contours: Sequence[Array], closed: Sequence[bool]) -> set[tuple[int, int]]:
+    """:func:`proper_crossings`, and the pairs of different contours that pass through each other where
+    they only touch (a vertex on the other's outline): one has vertices strictly inside the other closed
+    contour and strictly outside it."""
+    proper, touched = _meetings(contours, closed)
+    out = set(proper)
+    for c, d in touched - proper:
+        for inner, outer in ((c, d), (d, c)):
+            if closed[outer] and len(contours[outer]) >= 3:
+                states = point_states(np.asarray(contours[inner], dtype=np.float64)[None],
+                                      np.asarray(contours[outer], dtype=np.float64)[None])
+                if np.any(states == 1) and np.any(states == -1):
+                    out.add((c, d))
+                    break
+    return out
 
 
 def _inside(point: Array, polygon: Array) -> bool:
@@ -181,3 +221,135 @@ def linear_tangles(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[
     else:
         _linear_cache.move_to_end(key)
     return list(found)
+
+
+def point_states(points: Array, polygon: Array) -> NDArray[np.int8]:
+    """Where each of ``points (T, K, 2)`` lies against the closed ``polygon (T, E, 2)`` of the same
+    frame, exactly: 1 inside (even-odd), -1 outside, 0 on its outline: ``(T, K)``."""
+    points = np.asarray(points, dtype=np.float64)
+    a = np.asarray(polygon, dtype=np.float64)
+    b = np.roll(a, -1, axis=1)
+    shape = (points.shape[0], points.shape[1], a.shape[1])
+    p = np.broadcast_to(points[:, :, None, :], shape + (2,))
+    lo = np.where((a[..., 1] <= b[..., 1])[..., None], a, b)[:, None]  # each edge's lower end, then upper
+    hi = np.where((a[..., 1] <= b[..., 1])[..., None], b, a)[:, None]
+    lo, hi = np.broadcast_to(lo, shape + (2,)), np.broadcast_to(hi, shape + (2,))
+    side = _sign(lo[..., 0].ravel(), lo[..., 1].ravel(), hi[..., 0].ravel(), hi[..., 1].ravel(),
+                 p[..., 0].ravel(), p[..., 1].ravel()).reshape(shape)
+    y = p[..., 1]
+    spans = (lo[..., 1] <= y) & (y < hi[..., 1])  # half-open: a vertex on the ray counts once
+    crossings = np.count_nonzero(spans & (side > 0), axis=2)  # the edge passes right of the point
+    box = ((np.minimum(lo[..., 0], hi[..., 0]) <= p[..., 0]) & (p[..., 0] <= np.maximum(lo[..., 0], hi[..., 0]))
+           & (lo[..., 1] <= y) & (y <= hi[..., 1]))
+    on = np.any((side == 0) & box, axis=2)
+    return np.where(on, 0, np.where(crossings % 2 == 1, 1, -1)).astype(np.int8)
+
+
+_PROBES = 8  # vertices tried, in order, for one not on the other contour's outline
+
+
+def _nesting(inner: Array, outer: Array) -> NDArray[np.bool_]:
+    """Whether closed ``inner (T, L, 2)`` lies inside closed ``outer (T, M, 2)`` at each frame, read at its
+    first vertices not on ``outer``'s outline (its boxes first): ``(T,)``. Meant for contours that do not
+    cross; one whose probes all lie on ``outer`` is not inside."""
+    inner, outer = np.asarray(inner, dtype=np.float64), np.asarray(outer, dtype=np.float64)
+    boxed = np.all((inner.min(axis=1) >= outer.min(axis=1)) & (inner.max(axis=1) <= outer.max(axis=1)), axis=1)
+    out = np.zeros(len(inner), dtype=bool)
+    rows = np.flatnonzero(boxed)
+    if len(rows) == 0:
+        return out
+    states = point_states(inner[rows, :_PROBES], outer[rows])
+    first = np.argmax(states != 0, axis=1)
+    out[rows] = states[np.arange(len(rows)), first] == 1
+    return out
+
+
+def _relation(c: Array, d: Array) -> NDArray[np.int8]:
+    """1 where closed ``c (T, L, 2)`` lies inside ``d (T, M, 2)``, -1 where ``d`` inside ``c``, else 0: ``(T,)``."""
+    inside = _nesting(c, d)
+    around = _nesting(d, c) & ~inside
+    return (inside.astype(np.int8) - around.astype(np.int8)).astype(np.int8)
+
+
+def _shut(contour: Array, closed: bool) -> bool:
+    return bool(closed) and len(contour) >= 3
+
+
+@dataclass(frozen=True, slots=True)
+class Apart:
+    """What two keys of one shape say about its contours (indices into them).
+
+    ``nested``: ``(c, d, relation)`` for closed contours ``c < d`` apart in both keys, ``relation`` their
+    nesting in both (1: c inside d, -1: d inside c, 0: neither); ``strokes``: pairs ``(c, d)``, one open
+    at least, apart in both keys; ``parent``: each contour's parent in the first key (:func:`parents`).
+    """
+
+    nested: tuple[tuple[int, int, int], ...]
+    strokes: tuple[tuple[int, int], ...]
+    parent: tuple[int | None, ...]
+
+
+def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> Apart:
+    """Which contours of keys ``k0s``, ``k1s`` (``(L_i, 2)`` each, corresponding) are apart in both."""
+    k0s = [np.asarray(k, dtype=np.float64) for k in k0s]
+    k1s = [np.asarray(k, dtype=np.float64) for k in k1s]
+    shut = [_shut(k, c) for k, c in zip(k0s, closed)]
+    meeting = set(proper_crossings(k0s, shut, touching=True)) | set(proper_crossings(k1s, shut, touching=True))
+    nested, strokes = [], []
+    for c in range(len(k0s)):
+        for d in range(c + 1, len(k0s)):
+            if (c, d) in meeting or min(len(k0s[c]), len(k0s[d])) == 0:
+                continue
+            if not (shut[c] and shut[d]):
+                strokes.append((c, d))
+                continue
+            first = int(_relation(k0s[c][None], k0s[d][None])[0])
+            if first == int(_relation(k1s[c][None], k1s[d][None])[0]):
+                nested.append((c, d, first))
+    return Apart(tuple(nested), tuple(strokes), tuple(parents(k0s, shut)))
+
+
+def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
+                  k0s: Sequence[Array], k1s: Sequence[Array]) -> tuple[list[float], list[float]]:
+    """The ``t (T,)`` at which contours ``frames[i] (T, L_i, 2)`` of one shape, keys ``k0s``, ``k1s``
+    (``(L_i, 2)``), tangle: ``(crossings, stroke_crossings)``.
+
+    ``crossings``: a closed contour crosses itself properly; a closed contour crosses its parent (read
+    from the first key) or lies wholly outside it; two closed contours apart in both keys cross, or
+    one lies inside the other where it did not in the keys, or no longer does. ``stroke_crossings``:
+    an open stroke crosses itself properly, or crosses a contour it is apart from in both keys.
+    Two contours cross where they do properly, or pass through each other where they only touch
+    (:func:`crossing_pairs`). A closed contour of fewer than three vertices counts as a stroke.
+    """
+    t = np.asarray(t, dtype=np.float64)
+    if not frames:
+        return [], []
+    frames = [np.asarray(f, dtype=np.float64) for f in frames]
+    shut = [_shut(k, c) for k, c in zip(k0s, closed)]
+    keys = apart_in_keys(k0s, k1s, closed)
+    tangled = np.zeros(len(t), dtype=bool)
+    stroked = np.zeros(len(t), dtype=bool)
+    crossed: list[set[tuple[int, int]]] = []
+    for k in range(len(t)):
+        found = crossing_pairs([f[k] for f in frames], shut)
+        crossed.append(found)
+        for c, d in found:
+            if c == d:
+                tangled[k] |= shut[c]
+                stroked[k] |= not shut[c]
+            elif shut[c] and shut[d] and (keys.parent[c] == d or keys.parent[d] == c):
+                tangled[k] = True
+        stroked[k] |= any(pair in found for pair in keys.strokes)
+    for c, p in enumerate(keys.parent):
+        if shut[c] and p is not None:  # wholly outside: no vertex inside (partly outside shows as a crossing)
+            rest = np.flatnonzero(~tangled)
+            rest = rest[point_states(frames[c][rest, :1], frames[p][rest])[:, 0] != 1]
+            for k in rest.tolist():  # the first vertex is not inside: is any other?
+                tangled[k] = not np.any(point_states(frames[c][k:k + 1], frames[p][k:k + 1]) == 1)
+    for c, d, relation in keys.nested:
+        met = np.array([(c, d) in found for found in crossed])
+        tangled |= met
+        rest = np.flatnonzero(~met & ~tangled)
+        if len(rest):
+            tangled[rest] |= _relation(frames[c][rest], frames[d][rest]) != relation
+    return [float(x) for x in t[tangled]], [float(x) for x in t[stroked]]

@@ -2,18 +2,33 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
-from ..core.methods.intrinsic import closure_tweak
+import numpy as np
+
+from ..core.coverage import Grid
 from ..core.measures import SWEEP, report
+from ..core.methods.intrinsic import closure_tweak
 from ..core.methods.qcurves import auto_choice
-from ..core.tangles import tangled_times
-from ..core.timing.timeline import pair_paths
 from ..core.methods.registry import REGISTRY, measured_methods
-from ..model import Scene
+from ..core.pops import changes, pops
+from ..core.stray import STRAY_REACH, Area, stray_shares
+from ..core.tangles import contact_times
+from ..core.timing.timeline import ShapeAt, Track, evaluate_segment, pair_paths, tracks_of
+from ..core.view import Viewport
+from ..model import Scene, Shape
+from ..plan.job import scene_view, total_frames
 from .segments import Entry, entries, nothing_measured
 
-__all__ = ["stats_dict", "stats_text", "crossing_runs", "STATS_METHODS"]
+__all__ = ["stats_dict", "stats_text", "crossing_runs", "STATS_METHODS", "POP_CELLS"]
+
+POP_CELLS = 128
+"""Cells along the view's larger side of the grid ``pops`` compares frames on."""
+
+_STRAY_ROWS = np.arange(0, len(SWEEP), 5)
+STRAY_SWEEP = SWEEP[_STRAY_ROWS]
+"""The t at which ``stray_max`` is measured (maths §5.16): k/20, every fifth t of :data:`SWEEP`."""
 
 STATS_METHODS = measured_methods(jointed=False)
 """Every method measured on every segment (and those that need joints where the shape has them)."""
@@ -24,15 +39,20 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
     """The thesis's ch. 6 report and the quality measures for every shape and segment (the documented
     ``stats --json``): for ``methods``, default every method (``jointed`` where a shape has joints)."""
     shapes = []
-    tangled: dict[tuple[int, int, str], list[float]] = {}
+    quality: dict[tuple[int, int, str], _Quality] = {}
+    filled_in: list[tuple[dict[str, Any], _Quality]] = []
+    every: dict[str, None] = dict.fromkeys(methods or ())
     for entry in entries(scene, closed_only=True):
         pair, joints = entry.pair, entry.segment.joints
         names = tuple(methods) if methods is not None else measured_methods(jointed=bool(joints))
+        every.update(dict.fromkeys(names))
         choice = auto_choice(pair.k0, pair.k1, joints)
         measured = {m: report(pair.k0, pair.k1, m, t, joints, _as_drawn(entry, m)).as_dict()
                     for m in names}
         for method in measured:
-            measured[method]["crossings"] = _crossings(entry, method, tangled)
+            found = _quality(entry, method, quality)
+            measured[method].update(crossings=list(found.crossings), stroke_crossings=list(found.strokes))
+            filled_in.append((measured[method], found))
             closure = REGISTRY[method].closure
             if closure is not None:  # how much the closing tweak changed the lengths, at worst
                 measured[method]["closure_tweak_max"] = float(closure_tweak(pair.k0, pair.k1, SWEEP, closure).max())
@@ -43,22 +63,79 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
             "auto": {"method": choice.method, "why": choice.why},
             "methods": measured,
         })
+    # the view is worked out last: some methods keep what they worked out for the next call, so the
+    # measures above see the calls in the order they always did
+    tracks = tracks_of(scene)
+    view = scene_view(scene, tracks, (None,))
+    reach = STRAY_REACH * max(view[2] - view[0], view[3] - view[1])
+    for measures, found in filled_in:
+        measures["stray_max"] = found.stray_max(reach)
     out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
     if not shapes:
         out["note"] = nothing_measured(scene)
+    out["pops"] = {m: _pops(scene, tracks, view, m) for m in (every or STATS_METHODS)}
     return out
 
 
-def _crossings(entry: Entry, method: str, done: dict[tuple[int, int, str], list[float]]) -> list[float]:
-    """The swept t at which the entry's shape tangles in its segment under ``method``: a contour
-    crossing itself properly, or a hole leaving its outline (all the segment's moving contours)."""
+@dataclass(slots=True)
+class _Quality:
+    """One shape's quality in one segment under one method: its tangled t over :data:`SWEEP`, and its
+    drawn areas over :data:`STRAY_SWEEP`, whose stray waits for the view."""
+
+    crossings: list[float]
+    strokes: list[float]
+    areas: list[Area]
+    stray: float | None = None
+
+    def stray_max(self, reach: float) -> float:
+        """The largest :func:`~tweenrender.core.stray.stray_shares` of the areas (``reach`` in scene units,
+        the same every time it is asked)."""
+        if self.stray is None:
+            self.stray = float(stray_shares(self.areas, self.areas[0], self.areas[-1], reach).max())
+        return self.stray
+
+
+def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Quality]) -> _Quality:
+    """The entry's shape's quality in its segment under ``method`` (DESIGN, turn 4): ``crossings`` and
+    ``stroke_crossings`` (:func:`~tweenrender.core.tangles.contact_times`, over the contours in both
+    keys), and the areas ``stray_max`` is measured on."""
     key = (id(entry.shape), entry.index, method)
     if key not in done:
         segment = entry.segment
         frames = pair_paths(segment, SWEEP, method)
         moving = [k for k, p in enumerate(segment.pairs) if p.moving]
-        done[key] = tangled_times([frames[k] for k in moving], [segment.pairs[k].closed for k in moving], SWEEP)
+        crossings, strokes = contact_times([frames[k] for k in moving], [segment.pairs[k].closed for k in moving],
+                                           SWEEP, [segment.pairs[k].k0 for k in moving],
+                                           [segment.pairs[k].k1 for k in moving])
+        few = [f[_STRAY_ROWS] for f in frames]
+        drawn = [_area(at, entry.shape) for at in evaluate_segment(segment, STRAY_SWEEP, method, few)]
+        done[key] = _Quality(crossings, strokes, drawn)
     return done[key]
+
+
+def _rule(at: ShapeAt, shape: Shape) -> str:
+    """The fill rule ``at`` is drawn with: its key's, else its shape's."""
+    return (at.key.fill_rule if at.key is not None else None) or shape.fill_rule
+
+
+def _area(at: ShapeAt, shape: Shape) -> Area:
+    """The area the closed contours of ``at`` enclose as drawn (windings, fill rule)."""
+    turned = at.reversed or (False,) * len(at.contours)
+    return ([c[::-1] if back else c for c, shut, back in zip(at.contours, at.closed, turned) if shut and len(c) >= 3],
+            _rule(at, shape))
+
+
+def _pops(scene: Scene, tracks: Sequence[Track], view: tuple[float, float, float, float], method: str) -> list[int]:
+    """The frames of the clip that pop under ``method`` (:mod:`~tweenrender.core.pops`), on a grid of
+    :data:`POP_CELLS` cells along the view's larger side."""
+    grid = Grid.over(view, max(view[2] - view[0], view[3] - view[1]) / POP_CELLS)
+    pixel = 1.0 / Viewport(view, *scene.size).scale  # a stroke width in pixels, in scene units
+    times = np.arange(total_frames(scene)) / scene.fps
+    change = np.zeros(len(times))
+    for track, shape in zip(tracks, scene.shapes):
+        drawn = track.at(times, method)
+        change += changes(grid, drawn, [_rule(at, shape) for at in drawn], 1.0 if shape.stroke_scales else pixel)
+    return pops(change)
 
 
 def _as_drawn(entry: Entry, method: str) -> Callable[[Any], Any] | None:
@@ -102,12 +179,32 @@ def stats_text(stats: dict[str, Any]) -> str:
             lines.append(f"Area ratio to the interpolated keys = {areas}; worst turning-angle error "
                          f"{r['angle_error_max']:.3f} degrees")
             lines.append(_crossing_words(r["self_intersects"]))
+            if "crossings" in r:
+                lines += _quality_words(r)
             if "closure_tweak_max" in r:
                 lines.append(f"Closing the walk changed the lengths by at most {100 * r['closure_tweak_max']:.2f} % "
                              "of the perimeter")
     if not stats["shapes"]:
         lines.append(stats.get("note", "no shape has two keys: nothing moves"))
+    if stats.get("pops"):
+        lines += ["", "POPS (frames changing over 3x the clip's median change)"]
+        lines += [f"{method}: " + (f"frames {', '.join(map(str, at))}" if at else "none")
+                  for method, at in stats["pops"].items()]
     return "\n".join(lines)
+
+
+def _quality_words(r: dict[str, Any]) -> list[str]:
+    """Where the shape tangles, where its strokes cross, and how far it strays, in a few words."""
+    def runs(at: Sequence[float]) -> str:
+        return ", ".join(f"{a:g}" if a == b else f"{a:g} to {b:g}" for a, b in crossing_runs(at))
+
+    lines = [f"The shape tangles at t = {runs(r['crossings'])}" if r["crossings"] else
+             "The shape never tangles (no crossing, no hole leaving, no contours meeting)"]
+    if r.get("stroke_crossings"):
+        lines.append(f"Its strokes cross at t = {runs(r['stroke_crossings'])}")
+    if "stray_max" in r:
+        lines.append(f"At most {100 * r['stray_max']:.1f} % of an inbetween strays from both keys")
+    return lines
 
 
 def crossing_runs(at: Sequence[float]) -> list[tuple[float, float]]:

@@ -1,0 +1,89 @@
+"""An independent tangle check for the tests, with shapely (GEOS): does one element's drawing tangle?
+
+For the contours of one element at a time t (closed ones as rings, open ones as lines) and the same
+contours at its two keys, t is *tangled* when a closed contour is not simple, a hole meets its outline
+(the smallest closed contour of the first key around its first vertex) or lies outside it, or two
+closed contours that are apart in both keys (no common point, and each inside the other or not alike
+in both keys) meet at t: their rings share a point, or one lies inside the other where it did not in
+the keys. Open strokes are checked the same way among themselves and against every contour (a
+stroke not simple, or meeting a contour it is apart from in both keys), with no containment.
+
+GEOS counts touching as meeting where the code counts only proper crossings; on real drawings moving
+in floating point the two differ only by chance, which the tests allow for by comparing counts.
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+from shapely.geometry import LinearRing, LineString, Point, Polygon
+
+
+def _line(points: np.ndarray, closed: bool) -> LineString | LinearRing:
+    return LinearRing(points) if closed else LineString(points)
+
+
+def _inside(inner: np.ndarray, outer: np.ndarray) -> bool:
+    """Whether closed ``inner``'s first vertex lies inside closed ``outer`` (even-odd, as GEOS reads a ring)."""
+    return bool(Polygon(outer).buffer(0).contains(Point(inner[0]))) if _simple(outer) else \
+        _even_odd(inner[0], outer)
+
+
+def _even_odd(point: np.ndarray, polygon: np.ndarray) -> bool:
+    from shapely import polygonize, unary_union
+
+    faces = polygonize([unary_union(LinearRing(polygon))]).geoms
+    return sum(face.contains(Point(point)) for face in faces) % 2 == 1
+
+
+def _simple(points: np.ndarray) -> bool:
+    return bool(LinearRing(points).is_simple)
+
+
+def parents(contours: Sequence[np.ndarray], closed: Sequence[bool]) -> list[int | None]:
+    """Each contour's smallest closed contour around its first vertex (by area), or None."""
+    out: list[int | None] = []
+    for c, points in enumerate(contours):
+        around = [d for d, other in enumerate(contours)
+                  if d != c and closed[d] and len(other) >= 3 and _inside(points, other)]
+        out.append(min(around, key=lambda d: Polygon(contours[d]).area) if around else None)
+    return out
+
+
+def _state(c: np.ndarray, d: np.ndarray) -> int:
+    """1: c inside d, -1: d inside c, 0: neither (closed contours that do not meet)."""
+    return 1 if _inside(c, d) else -1 if _inside(d, c) else 0
+
+
+def tangled(at: Sequence[np.ndarray], keys0: Sequence[np.ndarray], keys1: Sequence[np.ndarray],
+            closed: Sequence[bool]) -> tuple[bool, bool]:
+    """Whether the element's closed contours ``at`` tangle, and whether its open strokes do."""
+    parent = parents(keys0, closed)
+    lines = [_line(p, s) for p, s in zip(at, closed)]
+    keyed = [[_line(p, s) for p, s in zip(keys, closed)] for keys in (keys0, keys1)]
+    shut, stroke = False, False
+    for c, line in enumerate(lines):
+        if not line.is_simple:
+            if closed[c]:
+                shut = True
+            else:
+                stroke = True
+        p = parent[c]
+        if closed[c] and p is not None and (line.intersects(lines[p]) or not _inside(at[c], at[p])):
+            shut = True
+    for c in range(len(at)):
+        for d in range(c + 1, len(at)):
+            if any(k[c].intersects(k[d]) for k in keyed):
+                continue  # touching or crossing in a key: not apart
+            both = closed[c] and closed[d]
+            if both:
+                states = {_state(keys[c], keys[d]) for keys in (keys0, keys1)}
+                if len(states) > 1:
+                    continue  # nested in one key only: they must pass each other
+            met = lines[c].intersects(lines[d]) or (both and _state(at[c], at[d]) not in states)
+            if met and both:
+                shut = True
+            elif met:
+                stroke = True
+    return shut, stroke

@@ -1,0 +1,123 @@
+"""``stats``' quality measures (DESIGN turn 4): ``crossings``, ``stroke_crossings`` and ``stray_max`` per entry and
+method, ``pops`` per method, on real icon pairs with holes and pieces, against shapely and by construction."""
+
+from __future__ import annotations
+
+from collections import defaultdict
+
+import numpy as np
+import pytest
+
+import tweenrender as tr
+from tests.core.shapely_areas import drawn_area, stray_share
+from tests.core.shapely_tangles import tangled
+from tests.helpers import DATA, SCENES
+from tweenrender.core.tangles import SWEEP, tangled_times
+from tweenrender.core.timing.timeline import pair_paths, tracks_of
+from tweenrender.reports.stats import stats_dict, stats_text
+
+ICONS = DATA / "icons"
+
+
+def _pair(a: str, b: str, **timing: object) -> tr.Scene:
+    return tr.load_scene([ICONS / f"{a}.svg", ICONS / f"{b}.svg"], step=1.0, **timing)
+
+
+def _shapely_crossings(scene: tr.Scene, method: str) -> set[tuple[str, float]]:
+    """(element, t) at which shapely finds the element's contours in both keys tangled, the in-betweens
+    as ``tr.contours`` draws them (a one-segment morph of 1 s: t is the time)."""
+    at_t = []
+    for t in SWEEP[1:-1]:
+        drawn: dict[str, list[np.ndarray]] = defaultdict(list)
+        for c in tr.contours(scene, float(t), method=method):
+            drawn[c.element].append(c.points)
+        at_t.append(drawn)
+    out = set()
+    for shape, track in zip(scene.shapes, tracks_of(scene)):
+        pairs = track.segments[0].pairs
+        moving = [k for k, p in enumerate(pairs) if p.moving]
+        if not all(track.segments[0].shown) or not moving:
+            continue
+        closed = [pairs[k].closed for k in moving]
+        keys0, keys1 = [pairs[k].k0 for k in moving], [pairs[k].k1 for k in moving]
+        assert all(len(d[shape.name]) == len(pairs) for d in at_t)  # every contour drawn, in pair order
+        frames = [keys0] + [[d[shape.name][k] for k in moving] for d in at_t] + [keys1]
+        out |= {(shape.name, float(t)) for t, f in zip(SWEEP, frames) if tangled(f, keys0, keys1, closed)[0]}
+    return out
+
+
+@pytest.mark.parametrize("a, b, method", [
+    ("simple-icons/apple", "simple-icons/python", "linear"),  # two pieces that overlap on the way
+    ("mdi/alpha-o-box", "mdi/alpha-o", "nonlinear"),  # a hole leaving its outline through its corners
+    ("mdi/weather-night", "mdi/weather-sunny", "rigid"),  # four contours: pieces and holes
+    ("twemoji/1f4c4", "mdi/weather-sunny", "linear"),  # seven pieces
+])
+def test_crossings_of_real_pairs_are_what_shapely_sees(a: str, b: str, method: str) -> None:
+    scene = _pair(a, b)
+    found = {(s["name"], t) for s in stats_dict(scene, [0.5], [method])["shapes"]
+             for t in s["methods"][method]["crossings"]}
+    assert found and found == _shapely_crossings(scene, method)
+
+
+def test_the_pieces_meeting_were_left_out_before() -> None:
+    """The apple and python pair's pieces overlap at 82 t that a contour crossing itself or a hole
+    leaving its outline does not show (the measure as it was)."""
+    scene = _pair("simple-icons/apple", "simple-icons/python")
+    segment = next(segment for track in tracks_of(scene) for segment in track.segments
+                   if sum(p.moving for p in segment.pairs) > 1)
+    frames = pair_paths(segment, SWEEP, "linear")
+    assert tangled_times(frames, [p.closed for p in segment.pairs], SWEEP) == []
+    entry = next(s for s in stats_dict(scene, [0.5], ["linear"])["shapes"] if s["methods"]["linear"]["crossings"])
+    assert len(entry["methods"]["linear"]["crossings"]) == 82
+
+
+def test_stray_max_is_shapely_s_largest_stray_over_twenty_steps() -> None:
+    scene = tr.load_scene(SCENES / "square.toml")  # a square of side 2 moving 5.5 in a view 10 wide
+    x0, y0, x1, y1 = scene.view
+    reach = 0.12 * max(x1 - x0, y1 - y0)
+    measured = stats_dict(scene, [0.5], ["linear", "nonlinear"])["shapes"][0]["methods"]
+    start, end = 0.0, 2.0
+    for method in ("linear", "nonlinear"):
+        areas = [drawn_area([c.points for c in tr.contours(scene, start + t * (end - start), method) if c.closed],
+                            "nonzero") for t in np.arange(21) / 20]
+        exact = max(stray_share(area, areas[0], areas[-1], reach) for area in areas)
+        assert exact > 0.3 and measured[method]["stray_max"] == pytest.approx(exact, abs=0.02), method
+
+
+@pytest.mark.parametrize("a, b", [("bootstrap/emoji-smile", "twemoji/1f319"), ("twemoji/1f319", "octicons/heart-24")])
+def test_stray_max_of_real_elements_drawn_with_a_hole_is_shapely_s(a: str, b: str) -> None:
+    """The smile's face is a ring (a hole wound against its outline, nonzero) whose hole shrinks away
+    while the moon's crescent comes; the moon's two contours become the heart's one, one of them drawn
+    reversed: the in-betweens' stray as drawn, windings and fill rule included."""
+    scene = _pair(a, b)
+    x0, y0, x1, y1 = scene.view
+    reach = 0.12 * max(x1 - x0, y1 - y0)
+    stats = stats_dict(scene, [0.5], ["linear"])
+    measured = {s["methods"]["linear"]["stray_max"] for s in stats["shapes"] if s["name"] == "path1"}
+
+    def area(t: float) -> object:
+        drawn = [c for c in tr.contours(scene, t, "linear") if c.element == "path1" and c.closed]
+        return drawn_area([c.points[::-1] if c.reversed else c.points for c in drawn], drawn[0].fill_rule)
+
+    exact = max(stray_share(area(t), area(0.0), area(1.0), reach) for t in np.arange(21) / 20)
+    assert len(measured) == 1 and exact > 0.05
+    assert measured.pop() == pytest.approx(exact, abs=0.01)
+
+
+def test_a_drawing_jumping_in_steps_pops_at_each_step_and_a_smooth_one_never() -> None:
+    # steps(2): frames 0-11 show the first key, 12-23 the half-way in-between, 24 the second key
+    stepped = stats_dict(_pair("mdi/weather-night", "mdi/weather-sunny", ease="steps(2)"), [0.5], ["linear", "rigid"])
+    assert stepped["pops"] == {"linear": [12, 24], "rigid": [12, 24]}
+    smooth = stats_dict(_pair("mdi/weather-night", "mdi/weather-sunny"), [0.5], ["linear", "rigid"])
+    assert smooth["pops"] == {"linear": [], "rigid": []}
+
+
+def test_the_text_says_where_a_shape_tangles_how_far_it_strays_and_what_pops() -> None:
+    stats = stats_dict(_pair("simple-icons/apple", "simple-icons/python", ease="steps(2)"), [0.5], ["linear"])
+    words = stats_text(stats)
+    assert "The shape tangles at t = 0.12 to 0.93" in words
+    assert "of an inbetween strays from both keys" in words
+    assert "POPS" in words and "linear: frames 12, 24" in words
+    for shape in stats["shapes"]:
+        assert shape["methods"]["linear"]["stroke_crossings"] == []
+        assert 0.0 <= shape["methods"]["linear"]["stray_max"] <= 1.0

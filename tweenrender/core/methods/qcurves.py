@@ -11,8 +11,9 @@ tolerance on them is a relative tolerance times a squared length of the shape.
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -22,13 +23,14 @@ from . import joints as _joints
 from . import paths
 from ..geometry import best_fit_rotation, cross, edge_lengths
 from ..balance import spread_copies
-from .injective import injective
-from ..tangles import linear_tangles
+from .injective import injective, injective_contours
+from ..stray import STRAY_REACH, stray_shares
+from ..tangles import contact_times, linear_tangles
 
 __all__ = [
     "control_points", "evaluate", "angle_at", "passes_through_zero", "non_monotonic",
     "sweeps_over_180", "Motion", "vertex_kinds", "classify", "AutoChoice", "auto_choice",
-    "auto_choice_contours", "auto", "straight",
+    "auto_choice_contours", "auto", "straight", "STRAY_LIMIT", "QUALITY_T",
 ]
 
 Array = NDArray[np.float64]
@@ -260,6 +262,12 @@ class AutoChoice:
     why: str  # one line in words
     bodies: tuple[str, ...]  # "nonlinear" | "linear" per local body (joints.bodies order)
 
+    @property
+    def balance(self) -> str | None:
+        """How the copies of a vertex are placed on the paths drawn: ``"spread"`` along its edges for
+        auto's straight and injective paths, None (the shape's own rule) for the others."""
+        return "spread" if self.method in ("linear", "injective") else None
+
 
 def _method(motion: Motion) -> str:
     # Thesis §2.3: only a rigid turn suffers linear foreshortening; a translation
@@ -289,9 +297,97 @@ def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array],
                       tuple("injective" for _ in choice.bodies))
 
 
+STRAY_LIMIT = 0.02
+"""The stray (maths §5.16) beyond the straight paths' that an in-between may have for ``auto`` to take it."""
+_DETOUR = 0.10  # the stray beyond straight paths' a method that tangles at fewer t may take to go round
+QUALITY_T = np.arange(1, 20) / 20.0
+"""The t at which ``auto`` measures its candidates: .05, .10, … .95."""
+_CACHED = 512  # shapes whose measured choice is kept (frames are evaluated block by block)
+_measured_cache: OrderedDict[bytes, AutoChoice] = OrderedDict()
+
+
+def _candidate_paths(method: str, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
+                     t: Array) -> list[Array]:
+    """One ``(T, L_i, 2)`` per contour: the shape's nonlinear paths as one point set, auto's straight
+    paths contour by contour (open strokes straight), or the injective paths of all in one mesh."""
+    if method == "injective":
+        return injective_contours(k0s, k1s, closed, t)
+    if method == "nonlinear":
+        cuts = np.cumsum([len(k) for k in k0s])[:-1]
+        return np.split(paths.nonlinear(np.concatenate(k0s), np.concatenate(k1s), t), cuts, axis=1)
+    return [straight(a, b, t) if shut else paths.linear(a, b, t) for a, b, shut in zip(k0s, k1s, closed)]
+
+
+def _quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
+             ) -> tuple[int, float]:
+    """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included) and the largest
+    stray, the reach 12 % of the larger side of both keys together (a segment does not know the view)."""
+    tangled, stroked = contact_times(frames, closed, QUALITY_T, k0s, k1s)
+    tangled = sorted(set(tangled) | set(stroked))
+    filled = [len(k) >= 3 and shut for k, shut in zip(k0s, closed)]
+    points = np.concatenate([*k0s, *k1s])
+    reach = STRAY_REACH * float(np.ptp(points, axis=0).max(initial=0.0))
+    if not any(filled) or not reach > 0:
+        return len(tangled), 0.0
+    areas = [([f[k] for f, keep in zip(frames, filled) if keep], "evenodd") for k in range(len(QUALITY_T))]
+    keys = [([k for k, keep in zip(key, filled) if keep], "evenodd") for key in (k0s, k1s)]
+    return len(tangled), float(stray_shares(areas, keys[0], keys[1], reach).max(initial=0.0))
+
+
+def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> AutoChoice:
+    """``auto``'s choice by measured quality (maths §5.16), among ``first`` where it is ``nonlinear`` (the
+    Q-curves' rigid turn), straight paths with spread copies, and injective paths: the first whose
+    in-betweens never tangle and stray at most :data:`STRAY_LIMIT` more than the straight paths do (they
+    sweep what the motion itself sweeps; a rigid turn's arc is the turn itself, so ``nonlinear`` needs no
+    tangle only); else, of those straying at most ``_DETOUR`` more than the straight paths (a way round
+    may leave the keys a little), the one tangling at the fewest t (straight paths, in the list's order,
+    on a tie). So ``auto`` never tangles at more t than straight paths, nor sweeps far past them. ``first``'s reason stands where it passes; elsewhere the measures are the reason."""
+    k0s = [np.asarray(k, dtype=np.float64) for k in k0s]
+    k1s = [np.asarray(k, dtype=np.float64) for k in k1s]
+    closed = [bool(c) and len(k) >= 3 for c, k in zip(closed, k0s)]
+    if not k0s or not all(np.all(np.isfinite(k)) for k in [*k0s, *k1s]):
+        return first
+    key = b"|".join(k.tobytes() for k in [*k0s, *k1s]) + repr((first, closed)).encode()
+    found = _measured_cache.get(key)
+    if found is not None:
+        _measured_cache.move_to_end(key)
+        return found
+    straight_choice = first if first.method == "linear" else AutoChoice("linear", first.why, ("linear",))
+    candidates = ([first] if first.method == "nonlinear" else []) + [straight_choice]
+    candidates.append(AutoChoice("injective", first.why, ("injective",)))
+    measured = {c.method: _quality(_candidate_paths(c.method, k0s, k1s, closed, QUALITY_T), k0s, k1s, closed)
+                for c in candidates if c.method != "injective"}
+    # straight paths sweep what the motion itself sweeps: a method strays where it goes past that
+    limit = STRAY_LIMIT + measured["linear"][1]
+    scores: list[tuple[int, float, int, AutoChoice]] = []
+    chosen = None
+    for rank, candidate in enumerate(candidates):
+        if candidate.method not in measured:
+            measured[candidate.method] = _quality(_candidate_paths(candidate.method, k0s, k1s, closed, QUALITY_T),
+                                                  k0s, k1s, closed)
+        crossed, stray = measured[candidate.method]
+        scores.append((crossed, stray, rank, candidate))
+        # a rigid turn's arc is the motion itself, not a stray: it keeps the shape at every t
+        if crossed == 0 and (stray <= limit or candidate.method == "nonlinear"):
+            chosen = candidate if rank == 0 else replace(candidate, why=f"{first.why}; {_measures(scores)}")
+            break
+    if chosen is None:  # none passes: the least tangled of those that stray not much more than straight paths
+        kept = [s for s in scores if s[1] <= limit + _DETOUR or s[3].method == "nonlinear"]
+        best = min(kept, key=lambda s: (s[0], s[2]))[3]
+        chosen = replace(best, why=f"{first.why}; {_measures(scores)}; {best.method} the least tangled")
+    _measured_cache[key] = chosen
+    while len(_measured_cache) > _CACHED:
+        _measured_cache.popitem(last=False)
+    return chosen
+
+
+def _measures(scores: Sequence[tuple[int, float, int, AutoChoice]]) -> str:
+    return "; ".join(f"{c.method}: tangled at {n} of {len(QUALITY_T)} t, stray {s:.3f}" for n, s, _, c in scores)
+
+
 def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool = True) -> AutoChoice:
-    """Choose nonlinear paths where the Q-curves show a rigid rotation; otherwise linear paths where
-    they never cross themselves, else injective paths (maths §5.9).
+    """Choose by measured quality (maths §5.16, :func:`_measured`): nonlinear paths where the Q-curves show
+    a rigid rotation, straight paths, injective paths — the first that neither tangles nor strays.
 
     With ``joints`` the choice is made per local body (each with its own size
     for the tolerance); the method is then ``"jointed"`` if any body turns, and
@@ -302,7 +398,7 @@ def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool 
     k0, k1 = _keys(k0, k1)
     if len(joints) == 0:
         motion = classify(k0, k1)
-        return _untangled(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed])
+        return _measured(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed])
     motions = [classify(k0[b], k1[b]) for b in _joints.bodies(k0.shape[0], joints)]
     methods = tuple(_method(m) for m in motions)
     method = "jointed" if "nonlinear" in methods else "linear"
@@ -313,23 +409,25 @@ def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool 
 def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
                          strokes0: Sequence[ArrayLike] = (), strokes1: Sequence[ArrayLike] = ()) -> AutoChoice:
     """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys (and
-    the open strokes ``strokes0``, ``strokes1`` that move with them): nonlinear when every closed
-    contour turns rigidly by the same angle (within 1°), else linear where the shape's inbetweens
-    never tangle (a contour crossing itself, a hole leaving its outline), else injective."""
+    the open strokes ``strokes0``, ``strokes1`` that move with them), by measured quality: nonlinear
+    first where every closed contour turns rigidly by the same angle (within 1°), then straight paths,
+    then injective (:func:`_measured`)."""
     motions = [classify(a, b) for a, b in zip(k0s, k1s)]
     every0 = [np.asarray(k, dtype=np.float64) for k in [*k0s, *strokes0]]
     every1 = [np.asarray(k, dtype=np.float64) for k in [*k1s, *strokes1]]
     closed = [True] * len(k0s) + [False] * len(strokes0)
-    if not motions:
-        return _untangled(AutoChoice("linear", "no closed contour moves", ("linear",)), every0, every1, closed)
     turns = [m.rotation_deg for m in motions if m.kind == "rotation"]
-    if len(turns) == len(motions) and max(turns) - min(turns) <= 1.0:
-        why = f"rigid rotation of {turns[0]:.1f} degrees ({len(motions)} contours)"
-        return AutoChoice("nonlinear", why, ("nonlinear",))
-    if all(m.kind == "translation" for m in motions):
-        return AutoChoice("linear", f"pure translation ({len(motions)} contours)", ("linear",))
-    return _untangled(AutoChoice("linear", "contours change or move differently: " +
-                                 " / ".join(_short(m) for m in motions), ("linear",)), every0, every1, closed)
+    if not motions:
+        first = AutoChoice("linear", "no closed contour moves", ("linear",))
+    elif len(turns) == len(motions) and max(turns) - min(turns) <= 1.0:
+        first = AutoChoice("nonlinear", f"rigid rotation of {turns[0]:.1f} degrees ({len(motions)} contours)",
+                           ("nonlinear",))
+    elif all(m.kind == "translation" for m in motions):
+        first = AutoChoice("linear", f"pure translation ({len(motions)} contours)", ("linear",))
+    else:
+        first = AutoChoice("linear", "contours change or move differently: " + " / ".join(_short(m) for m in motions),
+                           ("linear",))
+    return _measured(first, every0, every1, closed)
 
 
 def straight(k0: Array, k1: Array, t: ArrayLike) -> Array:

@@ -15,7 +15,7 @@ import numpy as np
 from ..core.methods import qcurves
 from ..core.geometry import edge_lengths
 from ..core.methods.joints import bodies
-from ..core.timing.timeline import Pair, Segment
+from ..core.timing.timeline import Pair, Segment, segment_choice
 from ..model import Scene
 from .segments import entries, nothing_measured
 
@@ -52,13 +52,13 @@ def segment_dict(segment: Segment, pair: Pair | None = None) -> dict[str, Any]:
     through = qcurves.passes_through_zero(q)
     turning_back = qcurves.non_monotonic(q)
     over = qcurves.sweeps_over_180(q)
-    choice = qcurves.auto_choice(k0, k1, segment.joints)
+    choice = segment_choice(segment) or qcurves.auto_choice(k0, k1, segment.joints)  # what render draws
     pairs = (pair.correspondence.pairs.tolist() if pair.correspondence is not None
              else [[i, i] for i in range(len(k0))])
     out: dict[str, Any] = {
         "times": [segment.start, segment.end],
         **_motion(k0, k1),
-        "auto": {"method": choice.method, "why": choice.why},
+        "auto": {"method": choice.method, "balance": choice.balance, "why": choice.why},
         "joints": [list(j) for j in segment.joints],
     }
     if segment.joints:

@@ -15,7 +15,7 @@ from ..core.methods.registry import REGISTRY, measured_methods
 from ..core.pops import changes, pops
 from ..core.stray import STRAY_REACH, Area, stray_shares
 from ..core.tangles import contact_times
-from ..core.timing.timeline import ShapeAt, Track, evaluate_segment, pair_paths, tracks_of
+from ..core.timing.timeline import ShapeAt, Track, evaluate_segment, pair_paths, segment_choice, tracks_of
 from ..core.view import Viewport
 from ..model import Scene, Shape
 from ..plan.job import scene_view, total_frames
@@ -46,7 +46,7 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
         pair, joints = entry.pair, entry.segment.joints
         names = tuple(methods) if methods is not None else measured_methods(jointed=bool(joints))
         every.update(dict.fromkeys(names))
-        choice = auto_choice(pair.k0, pair.k1, joints)
+        choice = segment_choice(entry.segment) or auto_choice(pair.k0, pair.k1, joints)  # what render draws
         measured = {m: report(pair.k0, pair.k1, m, t, joints, _as_drawn(entry, m)).as_dict()
                     for m in names}
         for method in measured:
@@ -60,7 +60,8 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
             **entry.head(),
             "vertices": list(pair.counts),
             "balanced": len(pair.k0),
-            "auto": {"method": choice.method, "why": choice.why},
+            "auto": {"method": choice.method, "balance": choice.balance or scene.balance_of(entry.shape),
+                     "why": choice.why},
             "methods": measured,
         })
     # the view is worked out last: some methods keep what they worked out for the next call, so the
@@ -155,7 +156,7 @@ def stats_text(stats: dict[str, Any]) -> str:
         contour = f", contour {shape['contour']}" if "contour" in shape else ""
         lines += ["", f"SHAPE {shape['name']}, segment {shape['segment']}{contour} ({start:g} s to {end:g} s), "
                       f"{m} and {n} vertices, {shape['balanced']} after balancing",
-                  f"auto chooses {shape['auto']['method']}: {shape['auto']['why']}"]
+                  f"auto draws {shape['auto']['method']} (balance {shape['auto']['balance']}): {shape['auto']['why']}"]
         for method, r in shape["methods"].items():
             lines += ["", f"{method.upper()} METHOD",
                       f"Perimeter of Left Polygon  = {r['perimeter_keys'][0]:.5f}",

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
@@ -38,6 +38,9 @@ from ..clip_motion import clips_at
 from ..gradient_blend import blend_gradient, box_of
 from ..correspondence.hint_search import correspond_hinted, correspond_hinted_open
 from ..correspondence.hints import Link, forced_contour_pairs, segment_links, vertex_links
+
+if TYPE_CHECKING:
+    from ..methods.qcurves import AutoChoice
 from ..methods.registry import interpolate, per_outline
 from ..paint import blend_paints
 
@@ -218,21 +221,38 @@ class Track:
         return [shape.contours for shape in self.at(times, method)]
 
 
+def segment_choice(segment: Segment) -> AutoChoice | None:
+    """What ``auto`` draws for a segment's moving pairs, and why (None where nothing moves): one closed
+    outline decides per body; one open stroke takes straight or injective paths where auto would (its
+    crossings read as a stroke's), else what auto does with it as an outline; several contours are
+    chosen over together (maths §5.16)."""
+    from ..methods.qcurves import auto_choice, auto_choice_contours
+
+    moving = [p for p in segment.pairs if p.moving]
+    if not moving:
+        return None
+    if len(moving) == 1:
+        pair = moving[0]
+        if not pair.closed:
+            choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False)
+            if choice.method in ("linear", "injective"):
+                return choice
+        return auto_choice(pair.k0, pair.k1, segment.joints)
+    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
+                                [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed])
+
+
 def segment_method(segment: Segment, method: str) -> str:
     """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its contours
-    when it has several (a one-outline segment keeps ``auto``, which decides per body; one open
-    stroke takes ``linear`` or ``injective`` where auto would, else keeps ``auto``)."""
+    (:func:`segment_choice`) when it has several or one open stroke that auto draws straight or
+    injective; a one-outline segment keeps ``auto``, which decides per body."""
     moving = [p for p in segment.pairs if p.moving]
     if method != "auto" or not moving or (len(moving) == 1 and moving[0].closed):
         return method
-    from ..methods.qcurves import auto_choice, auto_choice_contours
-
-    if len(moving) == 1:  # one open stroke: auto's own choice, its crossings read as a stroke's
-        chosen = auto_choice(moving[0].k0, moving[0].k1, segment.joints, closed=False).method
-        return chosen if chosen in ("linear", "injective") else method
-
-    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
-                                [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed]).method
+    choice = segment_choice(segment)
+    if len(moving) == 1 and choice is not None and choice.method not in ("linear", "injective"):
+        return method
+    return choice.method if choice is not None else method
 
 
 def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:

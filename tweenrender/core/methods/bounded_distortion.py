@@ -13,8 +13,8 @@ after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013
    contours (not inside any filled region) lightly: the shape's own triangles decide its form;
 3. where a triangle would flip (det ≤ 0), its target becomes the nearest Jacobian with a positive
    determinant and singular values no less than ``_FLOOR`` of its target's least (projection onto
-   a bounded-distortion set) and its weight grows; a few rounds of this local-global projection end
-   where every triangle keeps its orientation;
+   a bounded-distortion set); a few rounds of this local-global projection (the factorisation kept)
+   end where every triangle keeps its orientation;
 4. where they do not, the solve is blended toward the convex-combination solve (valid by Tutte and
    Floater) by the least share that makes every triangle keep its orientation.
 
@@ -38,7 +38,6 @@ Array = NDArray[np.float64]
 _AIR = 1e-2  # weight of a triangle between the contours, against one inside a filled region
 _FLOOR = 0.25  # a projected triangle keeps this share of its target's least singular value
 _ROUNDS = 12  # projection rounds at most
-_GROWTH = 8.0  # weight factor of a triangle each round it is still projected
 _BLENDS = (0.875, 0.75, 0.5, 0.25, 0.125, 0.0)  # shares of the shape-keeping solve tried, else
 
 
@@ -138,20 +137,20 @@ class ShapeKeepingSolve:
         if s >= 1.0:
             return np.array(self.mesh.p1)
         goal = self.targets(s)
-        weights = self.base.copy()
+        weights = self.base  # one factorisation serves every t and every round
         x = self._solve(weights, goal, convex)
         floor = _FLOOR * np.linalg.svd(goal, compute_uv=False)[:, 1]  # a share of each target's least stretch
         for _ in range(_ROUNDS):
             bad = self.good & (self._orientation(x) <= 0.0)
             if not bad.any():
                 return x
-            u, sigma, vt = np.linalg.svd(self._jacobians(x))
+            u, sigma, vt = np.linalg.svd(self._jacobians(x)[bad])  # only the triangles to project
             flipped = np.linalg.det(u) * np.linalg.det(vt) < 0
             u[flipped, :, 1] *= -1.0  # signed SVD: U, Vᵀ rotations, the smaller value carries the sign
             sigma[flipped, 1] *= -1.0
-            sigma = np.maximum(sigma, floor[:, None])
-            goal = np.where(bad[:, None, None], (u * sigma[:, None, :]) @ vt, goal)
-            weights = np.where(bad, weights * _GROWTH, weights)
+            sigma = np.maximum(sigma, floor[bad][:, None])
+            goal = goal.copy()
+            goal[bad] = (u * sigma[:, None, :]) @ vt
             x = self._solve(weights, goal, convex)
         if self._valid(x):
             return x

@@ -17,17 +17,16 @@ one comes to lie inside the other or leaves it. A contour lying along another
 without passing through it (collinear edges) only touches it.
 
 Orientation signs are exact: a float determinant within its rounding bound of
-zero is recomputed in exact rational arithmetic (:class:`fractions.Fraction`),
-so the answer does not depend on floating-point luck. Candidate edge pairs are
-found by sorting the edges' x-ranges (sweep and prune), so a frame costs far
-less than all pairs.
+zero is recomputed in exact rational arithmetic (each float an integer over a
+power of two, so integers over a common one), so the answer does not depend on
+floating-point luck. Candidate edge pairs are found by sorting the edges'
+x-ranges (sweep and prune), so a frame costs far less than all pairs.
 """
 
 from __future__ import annotations
 
 from collections import OrderedDict
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Sequence
 
 import numpy as np
@@ -78,11 +77,22 @@ def _sign(ax: Array, ay: Array, bx: Array, by: Array, cx: Array, cy: Array) -> N
     det = left - right
     sign = np.sign(det).astype(np.int8)
     unsure = np.flatnonzero(np.abs(det) <= _BOUND * (np.abs(left) + np.abs(right)))
-    for k in unsure.tolist():
-        f = [Fraction(float(v[k])) for v in (ax, ay, bx, by, cx, cy)]
-        exact = (f[2] - f[0]) * (f[5] - f[1]) - (f[3] - f[1]) * (f[4] - f[0])
-        sign[k] = (exact > 0) - (exact < 0)
+    if len(unsure):
+        columns = [v[unsure].tolist() for v in (ax, ay, bx, by, cx, cy)]
+        for k, values in zip(unsure.tolist(), zip(*columns)):
+            sign[k] = _exact_sign(values)
     return sign
+
+
+def _exact_sign(values: Sequence[float]) -> int:
+    """The sign of ``orient(a, b, c)`` for ``values = (ax, ay, bx, by, cx, cy)``, in exact rational
+    arithmetic: every float is an integer over a power of two, so over the largest of those powers the
+    determinant is one of integers."""
+    ratios = [float(v).as_integer_ratio() for v in values]
+    shift = max(q.bit_length() for _, q in ratios) - 1
+    ax, ay, bx, by, cx, cy = (n << (shift - q.bit_length() + 1) for n, q in ratios)
+    exact = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    return (exact > 0) - (exact < 0)
 
 
 def _candidates(a: Array, b: Array) -> tuple[NDArray[np.intp], NDArray[np.intp]]:

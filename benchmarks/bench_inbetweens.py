@@ -513,7 +513,12 @@ def main() -> int:
     parser.add_argument("--holdout", action="store_true", help="icons of npm packages the project has not seen")
     parser.add_argument("--timeout", type=float, default=180.0, help="seconds per pair and method (0: none)")
     args = parser.parse_args()
-    from tweenrender.core.methods.registry import METHODS
+    try:
+        from tweenrender.api import method_names
+
+        METHODS = method_names()
+    except ImportError:  # a version before the front door, measured for comparison
+        from tweenrender.core.methods import METHODS  # type: ignore[no-redef]
 
     methods = [m.strip() for m in args.methods.split(",") if m.strip()]
     unknown = [m for m in methods if m != "default" and m not in METHODS]

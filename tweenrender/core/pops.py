@@ -1,4 +1,4 @@
-"""Pops: the frames where the picture jumps (DESIGN turn 4, ``stats``' ``pops``).
+"""Pops: the frames where the picture jumps (``stats``' ``pops``, docs/methods.md).
 
 Each shape's *ink* in a frame is, per cell of a grid over the view (:mod:`.coverage`), how much of
 it the shape covers: its fill's alpha inside its filled area (its closed contours as drawn, under

@@ -1,4 +1,4 @@
-"""Proper crossings of a shape's contours: does an in-between tangle? (maths §5.9, DESIGN ``crossings``)
+"""Proper crossings of a shape's contours: does an in-between tangle? (maths §5.9; ``stats``' ``crossings``)
 
 A shape *tangles* at a frame when one of its contours crosses itself properly
 — two edges that are not neighbours meet at one point inside both, each

@@ -97,7 +97,7 @@ class _Quality:
 
 
 def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Quality]) -> _Quality:
-    """The entry's shape's quality in its segment under ``method`` (DESIGN, turn 4): ``crossings`` and
+    """The entry's shape's quality in its segment under ``method`` (docs/methods.md): ``crossings`` and
     ``stroke_crossings`` (:func:`~tweenrender.core.tangles.contact_times`, over the contours in both
     keys), and the areas ``stray_max`` is measured on."""
     key = (id(entry.shape), entry.index, method)

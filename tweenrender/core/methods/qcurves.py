@@ -341,7 +341,8 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     sweep what the motion itself sweeps; a rigid turn's arc is the turn itself, so ``nonlinear`` needs no
     tangle only); else, of those straying at most ``_DETOUR`` more than the straight paths (a way round
     may leave the keys a little), the one tangling at the fewest t (straight paths, in the list's order,
-    on a tie). So ``auto`` never tangles at more t than straight paths, nor sweeps far past them. ``first``'s reason stands where it passes; elsewhere the measures are the reason."""
+    on a tie): by these measures, over the contours that move, never more tangled than straight paths.
+    ``first``'s reason stands where it passes; elsewhere the measures are the reason."""
     k0s = [np.asarray(k, dtype=np.float64) for k in k0s]
     k1s = [np.asarray(k, dtype=np.float64) for k in k1s]
     closed = [bool(c) and len(k) >= 3 for c, k in zip(closed, k0s)]

@@ -375,7 +375,7 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     if chosen is None:  # none passes: the least tangled of those that stray not much more than straight paths
         kept = [s for s in scores if s[1] <= limit + _DETOUR or s[3].method == "nonlinear"]
         best = min(kept, key=lambda s: (s[0], s[2]))[3]
-        chosen = replace(best, why=f"{first.why}; {_measures(scores)}; {best.method} the least tangled")
+        chosen = replace(best, why=f"{first.why}; {_measures(scores)}; {best.method} the least tangled without sweeping far")
     _measured_cache[key] = chosen
     while len(_measured_cache) > _CACHED:
         _measured_cache.popitem(last=False)

@@ -30,7 +30,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ._version import __version__
 from .model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color, DrawnContour, Key, Matching, Points, Scene, Shape
-from .plan.options import DEFAULT_MAX_FRAMES, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, RenderOptions
+from .plan.options import DEFAULT_MAX_FRAMES, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, Progress, RenderOptions
 
 __all__ = [
     "load_scene", "parse_scene", "frame", "frames", "outlines", "contours", "write", "interpolate",
@@ -42,9 +42,6 @@ __all__ = [
     "COSTS", "ALIGNS", "EQUAL_COUNTS", "BALANCES", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS",
     "__version__",
 ]
-
-Progress = Callable[[int, int], None]
-
 
 # -- scenes ----------------------------------------------------------------------------------------
 

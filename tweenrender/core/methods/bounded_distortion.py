@@ -78,7 +78,7 @@ class ShapeKeepingSolve:
         fixed = np.zeros(len(p0), dtype=bool)
         fixed[mesh.frame] = True
         self.free, self.fixed = np.flatnonzero(~fixed), np.flatnonzero(fixed)
-        self._factor: tuple[bytes, object, float] | None = None
+        self._system: tuple[object, object, Array, float] | None = None
 
     def _gradient(self):  # noqa: ANN202 - a scipy sparse matrix
         """The ``(2F, V)`` operator taking one coordinate of the vertices to the Jacobians' rows:
@@ -101,26 +101,25 @@ class ShapeKeepingSolve:
         turn = np.stack([np.stack([cos, -sin], -1), np.stack([sin, cos], -1)], axis=-2)
         return turn @ ((1.0 - s) * np.eye(2) + s * self.stretch)
 
-    def _solve(self, weights: Array, goal: Array, convex: Array) -> Array:
-        """The vertices ``(V, 2)`` whose Jacobians fit ``goal (F, 2, 2)`` best under ``weights (F,)``; a
-        vanishing pull toward ``convex (V, 2)`` places a vertex no triangle with area holds."""
-        from scipy.sparse import diags
-        from scipy.sparse.linalg import splu
+    def _solve(self, goal: Array, convex: Array) -> Array:
+        """The vertices ``(V, 2)`` whose Jacobians fit ``goal (F, 2, 2)`` best, triangles weighted as set up;
+        a vanishing pull toward ``convex (V, 2)`` places a vertex no triangle with area holds."""
+        if self._system is None:  # the weights never change: one factorisation for every t and round
+            from scipy.sparse import diags
+            from scipy.sparse.linalg import splu
 
-        g, free, fixed = self.operator, self.free, self.fixed
-        w = diags(np.repeat(weights, 2))
-        key = weights.tobytes()
-        if self._factor is None or self._factor[0] != key:
-            gf = g[:, free]
-            normal = (gf.T @ w @ gf).tocsc()
+            g = self.operator
+            free = g[:, self.free]
+            weighted = (free.T @ diags(np.repeat(self.base, 2))).tocsr()  # (free, 2F)
+            normal = (weighted @ free).tocsc()
             pull = 1e-9 * float(normal.diagonal().mean() or 1.0)
-            self._factor = (key, splu(normal + pull * _identity(len(free))), pull)
-        _, lu, pull = self._factor
+            held = g[:, self.fixed] @ self.mesh.p0[self.fixed]  # (2F, 2): the held frame's part of each row
+            self._system = (splu(normal + pull * _identity(len(self.free))), weighted, held, pull)
+        lu, weighted, held, pull = self._system
         out = np.array(self.mesh.p0, dtype=np.float64)
-        held = g[:, fixed] @ out[fixed]  # (2F, 2): the held frame's part of each Jacobian row
         for r in range(2):
             rhs = goal[:, r, :].reshape(-1) - held[:, r]
-            out[free, r] = lu.solve(g[:, free].T @ (w @ rhs) + pull * convex[free, r])  # type: ignore[attr-defined]
+            out[self.free, r] = lu.solve(weighted @ rhs + pull * convex[self.free, r])  # type: ignore[attr-defined]
         return out
 
     def _orientation(self, x: Array) -> Array:
@@ -137,8 +136,7 @@ class ShapeKeepingSolve:
         if s >= 1.0:
             return np.array(self.mesh.p1)
         goal = self.targets(s)
-        weights = self.base  # one factorisation serves every t and every round
-        x = self._solve(weights, goal, convex)
+        x = self._solve(goal, convex)
         floor = _FLOOR * np.linalg.svd(goal, compute_uv=False)[:, 1]  # a share of each target's least stretch
         for _ in range(_ROUNDS):
             bad = self.good & (self._orientation(x) <= 0.0)
@@ -151,7 +149,7 @@ class ShapeKeepingSolve:
             sigma = np.maximum(sigma, floor[bad][:, None])
             goal = goal.copy()
             goal[bad] = (u * sigma[:, None, :]) @ vt
-            x = self._solve(weights, goal, convex)
+            x = self._solve(goal, convex)
         if self._valid(x):
             return x
         for share in _BLENDS:

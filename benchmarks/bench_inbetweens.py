@@ -142,14 +142,23 @@ def pop_coverage(tr: Any, scene: Any, method: str | None, view: tuple[float, flo
                      for img in tr.frames(scene, method=method, size=size, background="none")])
 
 
+def every_contour(tr: Any, scene: Any, t: float, method: str | None) -> list[Any]:
+    """``tr.contours`` at ``t``, contours that are one point then included (a version without the
+    ``points`` keyword never returned such contours within a segment: its growing ones start at once)."""
+    try:
+        return tr.contours(scene, t, method=method, points=True)
+    except TypeError:
+        return tr.contours(scene, t, method=method)
+
+
 def measure_method(tr: Any, scene: Any, method: str | None, key_areas: tuple[BaseGeometry, BaseGeometry],
                    near: BaseGeometry, view: tuple[float, float]) -> dict[str, Any]:
     """Every measure of one method on one loaded pair."""
     side = max(view)
     started = time.perf_counter()
-    k0 = group(tr.contours(scene, KEY_EPS, method=method))
-    k1 = group(tr.contours(scene, 1 - KEY_EPS, method=method))
-    at = {t: tr.contours(scene, t, method=method) for t in TIMES}
+    k0 = group(every_contour(tr, scene, KEY_EPS, method))
+    k1 = group(every_contour(tr, scene, 1 - KEY_EPS, method))
+    at = {t: every_contour(tr, scene, t, method) for t in TIMES}
     seconds = time.perf_counter() - started
 
     elements = {name: element_structure(name, k0[name], k1.get(name, [])) for name in k0}
@@ -491,15 +500,16 @@ def source_state() -> str:
 
     import tweenrender
 
+    package = Path(tweenrender.__file__).resolve().parent  # the tree measured (PYTHONPATH may point elsewhere)
     try:
-        head = subprocess.run(["git", "-C", str(ROOT), "describe", "--always", "--dirty=+dirty"], check=True,
+        head = subprocess.run(["git", "-C", str(package), "describe", "--always", "--dirty=+dirty"], check=True,
                               capture_output=True, text=True, timeout=30).stdout.strip()
     except (subprocess.SubprocessError, OSError):
         head = "unknown commit"
     digest = hashlib.sha1()
-    for path in sorted((ROOT / "tweenrender").rglob("*.py")):
-        digest.update(path.relative_to(ROOT).as_posix().encode() + b"\0" + path.read_bytes())
-    return f"{tweenrender.__version__} at {head}, sources {digest.hexdigest()[:12]}"
+    for path in sorted(package.rglob("*.py")):
+        digest.update(path.relative_to(package.parent).as_posix().encode() + b"\0" + path.read_bytes())
+    return f"{tweenrender.__version__} at {head} ({package.parent}), sources {digest.hexdigest()[:12]}"
 
 
 def main() -> int:
@@ -512,6 +522,7 @@ def main() -> int:
     parser.add_argument("--sheets", action="store_true")
     parser.add_argument("--holdout", action="store_true", help="icons of npm packages the project has not seen")
     parser.add_argument("--timeout", type=float, default=180.0, help="seconds per pair and method (0: none)")
+    parser.add_argument("--tag", default="", help="results_<tag>.json instead of results.json (runs side by side)")
     args = parser.parse_args()
     try:
         from tweenrender.api import method_names
@@ -566,7 +577,7 @@ def main() -> int:
     wall = time.perf_counter() - started
     scene_method = next((r["scene_method"] for r in results if "scene_method" in r), "?")
     rows = print_report(results, methods, scene_method)
-    target = OUT / ("results_holdout.json" if args.holdout else "results.json")
+    target = OUT / (("results_holdout" if args.holdout else "results") + (f"_{args.tag}" if args.tag else "") + ".json")
     target.write_text(json.dumps({"seed": args.seed, "holdout": args.holdout, "source": tree, "methods": methods,
                                   "wall_seconds": wall, "jobs": args.jobs, "summary": rows,
                                   "pairs": _json_ready(results)}, indent=1))

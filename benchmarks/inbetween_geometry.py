@@ -109,6 +109,8 @@ def _geometry(points: np.ndarray, closed: bool) -> BaseGeometry | None:
         return shapely.LinearRing(pts)
     if len(pts) >= 2:
         return shapely.LineString(pts)
+    if len(pts) == 1:  # a contour that is one point (growing from it, or not started): it can still be met
+        return shapely.Point(pts[0])
     return None
 
 
@@ -141,6 +143,12 @@ def _roles(rings: list[np.ndarray | None]) -> dict[int, tuple[int, int]]:
     return out
 
 
+def _ring(contour: Any) -> np.ndarray | None:
+    """A closed contour's ring (None for an open one, or one with fewer than three distinct points)."""
+    pts = _ring_points(contour.points) if contour.closed else None
+    return pts if pts is not None and len(pts) >= 3 else None
+
+
 def element_structure(name: str, k0: list[Any], k1: list[Any]) -> Element | None:
     """The structure of element ``name`` from its contours in the two keys, or None when they differ."""
     if len(k0) != len(k1) or any(len(a.points) != len(b.points) or a.closed != b.closed for a, b in zip(k0, k1)):
@@ -161,8 +169,8 @@ def element_structure(name: str, k0: list[Any], k1: list[Any]) -> Element | None
         pairs = np.zeros((0, 2), dtype=np.int64)
     element = Element(name, closed, [len(c.points) for c in k0], [c.points for c in k0], [c.points for c in k1],
                       simple, pairs)
-    r0 = _roles([_ring_points(c.points) if c.closed and v else None for c, v in zip(k0, valid)])
-    r1 = _roles([_ring_points(c.points) if c.closed and v else None for c, v in zip(k1, valid)])
+    r0 = _roles([_ring(c) if v else None for c, v in zip(k0, valid)])
+    r1 = _roles([_ring(c) if v else None for c, v in zip(k1, valid)])
     for k, (depth, parent) in r0.items():
         if depth % 2 == 1 and k in r1 and r1[k][0] % 2 == 1 and r1[k][1] == parent and parent >= 0:
             element.holes.append((k, parent))

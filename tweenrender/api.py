@@ -113,12 +113,14 @@ def outlines(scene: Scene, time: float, *, method: str | None = None) -> list[Po
     return drawn(scene, time, method=method)
 
 
-def contours(scene: Scene, time: float, method: str | None = None) -> list[DrawnContour]:
+def contours(scene: Scene, time: float, method: str | None = None, *, points: bool = False) -> list[DrawnContour]:
     """Every drawn contour at ``time`` seconds as :class:`~tweenrender.model.DrawnContour` s, in the order
-    of :func:`outlines`: which are open strokes, which holes, their element and paint."""
+    of :func:`outlines`: which are open strokes, which holes, their element and paint. With ``points``,
+    contours that are one point at that time (growing from it, shrinking to it, or not started yet) are
+    kept too, so an element has the same contours at every time of a segment."""
     from .pipeline.library import contours as drawn
 
-    return drawn(scene, time, method=method)
+    return drawn(scene, time, method=method, points=bool(points))
 
 
 def interpolate(k0: ArrayLike, k1: ArrayLike, t: ArrayLike, method: str, joints: Sequence[Any] = ()) -> NDArray:

@@ -8,6 +8,9 @@ in both keys) meet at t: their rings share a point, or one lies inside the other
 the keys. Open strokes are checked the same way among themselves and against every contour (a
 stroke not simple, or meeting a contour it is apart from in both keys), with no containment.
 
+A contour that is one point at a time (growing from it, or shrinking to it) is that point there: it
+meets a contour whose outline passes through it, and lies inside or outside others.
+
 GEOS counts touching as meeting where the code counts only proper crossings; on real drawings moving
 in floating point the two differ only by chance, which the tests allow for by comparing counts.
 """
@@ -20,12 +23,22 @@ import numpy as np
 from shapely.geometry import LinearRing, LineString, Point, Polygon
 
 
-def _line(points: np.ndarray, closed: bool) -> LineString | LinearRing:
+def _flat(points: np.ndarray) -> bool:
+    """Whether a contour is one point (one growing from it or shrinking to it, at that time)."""
+    return len(np.unique(np.asarray(points), axis=0)) < 2
+
+
+def _line(points: np.ndarray, closed: bool) -> LineString | LinearRing | Point:
+    if _flat(points):
+        return Point(points[0])
     return LinearRing(points) if closed else LineString(points)
 
 
 def _inside(inner: np.ndarray, outer: np.ndarray) -> bool:
-    """Whether closed ``inner``'s first vertex lies inside closed ``outer`` (even-odd, as GEOS reads a ring)."""
+    """Whether closed ``inner``'s first vertex lies inside closed ``outer`` (even-odd, as GEOS reads a ring;
+    nothing lies inside a contour of fewer than three distinct points)."""
+    if len(np.unique(np.asarray(outer), axis=0)) < 3:
+        return False
     return bool(Polygon(outer).buffer(0).contains(Point(inner[0]))) if _simple(outer) else \
         _even_odd(inner[0], outer)
 
@@ -42,11 +55,12 @@ def _simple(points: np.ndarray) -> bool:
 
 
 def parents(contours: Sequence[np.ndarray], closed: Sequence[bool]) -> list[int | None]:
-    """Each contour's smallest closed contour around its first vertex (by area), or None."""
+    """Each contour's smallest closed contour around its first vertex (by area), or None (a contour that
+    is one point holds nothing)."""
     out: list[int | None] = []
     for c, points in enumerate(contours):
         around = [d for d, other in enumerate(contours)
-                  if d != c and closed[d] and len(other) >= 3 and _inside(points, other)]
+                  if d != c and closed[d] and len(other) >= 3 and not _flat(points) and _inside(points, other)]
         out.append(min(around, key=lambda d: Polygon(contours[d]).area) if around else None)
     return out
 

@@ -126,18 +126,57 @@ def test_a_contour_outside_its_partner_grows_from_the_partners_nearest_point(tmp
     assert not np.allclose(point, nearest_on_edges(np.mean(ELL, axis=0), [np.array(c) for c in ring]))
 
 
-def test_a_hole_in_the_partners_hole_grows_from_its_nearest_edge(tmp_path: Path) -> None:
-    """A second hole whose centre of area lies in the first key's hole (not in its drawing): it grows
-    from the point of that hole's edges nearest to it."""
+def edges_meet(p: np.ndarray, q: np.ndarray) -> bool:
+    """Brute force: whether any edge of closed polygon ``p`` shares a point with any edge of ``q``
+    (orientations of every pair of edges, collinear overlaps included)."""
+    def orient(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> float:
+        return float(np.sign((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])))
+
+    def on(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> bool:
+        return bool(min(a[0], b[0]) <= c[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= c[1] <= max(a[1], b[1]))
+
+    for a, b in zip(p, np.roll(p, -1, axis=0)):
+        for c, d in zip(q, np.roll(q, -1, axis=0)):
+            o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
+            if o1 * o2 < 0 and o3 * o4 < 0:
+                return True
+            if (o1 == 0 and on(a, b, c)) or (o2 == 0 and on(a, b, d)) or (o3 == 0 and on(c, d, a)) \
+                    or (o4 == 0 and on(c, d, b)):
+                return True
+    return False
+
+
+def test_a_hole_its_partners_shrinking_hole_would_pass_over_grows_once_it_is_clear(tmp_path: Path) -> None:
+    """A second hole whose nearest point on the first key's drawing lies on a hole that shrinks over it:
+    grown from there over the whole segment the shrinking hole's edge would cut it. It grows instead,
+    its area still linear in t, from a time when it can do so without meeting any other contour."""
     outer = [[-2.0, -2.0], [14.0, -2.0], [14.0, 8.0], [-2.0, 8.0]]
     hole = [[0.0, 0.0], [0.0, 4.0], [7.5, 4.0], [7.5, 0.0]]  # clockwise
-    ell_hole = [list(p) for p in ELL[::-1]]
-    scene = shape_scene(tmp_path, [outer, hole], [outer, [[0.0, 0.0], [0.0, 4.0], [4.0, 4.0], [4.0, 0.0]], ell_hole])
-    (at,) = drawn(scene, 0.25)
-    centre = centre_of_area(np.array(ell_hole))
-    assert 6.0 < centre[0] < 7.5 and 0.0 < centre[1] < 4.0  # inside the first key's hole
-    point = nearest_on_edges(centre, [np.array(outer), np.array(hole)])
-    np.testing.assert_allclose(grown_from(at.contours[2], np.array(ell_hole)), point, atol=1e-9)
+    small = [[0.0, 0.0], [0.0, 4.0], [4.0, 4.0], [4.0, 0.0]]
+    ell_hole = np.array([list(p) for p in ELL[::-1]])
+    scene = shape_scene(tmp_path, [outer, hole], [outer, small, ell_hole.tolist()])
+    key = area(ell_hole)
+    times = np.linspace(0.0, 1.0, 201)
+    moving = [(1 - t) * np.array(hole) + t * np.array(small) for t in times]  # the straight paths of linear
+    # grown from the old hole's nearest point over the whole segment, it would cross the shrinking hole
+    point = nearest_on_edges(centre_of_area(ell_hole), [np.array(outer), np.array(hole)])
+    assert any(edges_meet(point + np.sqrt(t) * (ell_hole - point), m) for t, m in zip(times[1:-1], moving[1:-1]))
+    shares = []
+    for t, m in zip(times[1:-1], moving[1:-1]):
+        (at,) = drawn(scene, float(t))
+        np.testing.assert_allclose(at.contours[1], m, atol=1e-12)
+        grown = at.contours[2]
+        if area(grown) > 0:
+            assert not edges_meet(grown, m) and not edges_meet(grown, np.array(outer)), t
+        shares.append(area(grown) / key)
+    # its area is linear in t from its start on: share = (t - start) / (1 - start)
+    shares = np.array(shares)
+    started = times[1:-1][shares > 0]
+    start = started[0] - shares[shares > 0][0] * (1 - started[0]) / (1 - shares[shares > 0][0])
+    assert 0.0 < start < 0.9
+    np.testing.assert_allclose(shares, np.clip((times[1:-1] - start) / (1 - start), 0, None), atol=1e-9)
+    (end,) = drawn(scene, 1.0)
+    np.testing.assert_array_equal(end.contours[2], ell_hole)
 
 
 def test_a_hole_inside_its_partners_drawing_grows_from_its_centre_of_area(tmp_path: Path) -> None:

@@ -27,21 +27,21 @@ def _shapely_crossings(scene: tr.Scene, method: str) -> set[tuple[str, float]]:
     """(element, t) at which shapely finds the element's contours in both keys tangled, the in-betweens
     as ``tr.contours`` draws them (a one-segment morph of 1 s: t is the time)."""
     at_t = []
-    for t in SWEEP[1:-1]:
+    for t in SWEEP:
         drawn: dict[str, list[np.ndarray]] = defaultdict(list)
-        for c in tr.contours(scene, float(t), method=method):
+        for c in tr.contours(scene, float(t), method=method, points=True):
             drawn[c.element].append(c.points)
         at_t.append(drawn)
     out = set()
     for shape, track in zip(scene.shapes, tracks_of(scene)):
         pairs = track.segments[0].pairs
-        moving = [k for k, p in enumerate(pairs) if p.moving]
-        if not all(track.segments[0].shown) or not moving:
+        kept = [k for k, p in enumerate(pairs) if not p.fades]  # growing and shrinking ones too
+        if not all(track.segments[0].shown) or not any(pairs[k].moving for k in kept):
             continue
-        closed = [pairs[k].closed for k in moving]
-        keys0, keys1 = [pairs[k].k0 for k in moving], [pairs[k].k1 for k in moving]
+        closed = [pairs[k].closed for k in kept]
         assert all(len(d[shape.name]) == len(pairs) for d in at_t)  # every contour drawn, in pair order
-        frames = [keys0] + [[d[shape.name][k] for k in moving] for d in at_t] + [keys1]
+        frames = [[d[shape.name][k] for k in kept] for d in at_t]
+        keys0, keys1 = frames[0], frames[-1]  # as drawn at the keys: a growing contour is its point there
         out |= {(shape.name, float(t)) for t, f in zip(SWEEP, frames) if tangled(f, keys0, keys1, closed)[0]}
     return out
 

@@ -180,12 +180,15 @@ def _area(polygon: Array) -> float:
 
 
 def parents(contours: Sequence[Array], closed: Sequence[bool]) -> list[int | None]:
-    """Each contour's parent: the smallest other closed contour around its first vertex (None for none)."""
+    """Each contour's parent: the smallest other closed contour around its first vertex (None for none,
+    and for a contour that is one point: growing from it, it is no hole yet; where it comes to lie is
+    what :func:`contact_times` checks of contours apart in both keys)."""
     shut = [c for c, (p, s) in enumerate(zip(contours, closed)) if s and len(p) >= 3]
     areas = {c: _area(np.asarray(contours[c], dtype=np.float64)) for c in shut}
     out: list[int | None] = []
     for c, points in enumerate(contours):
-        around = [d for d in shut if d != c and len(points) and
+        flat = len(points) == 0 or not np.any(np.asarray(points) != np.asarray(points)[:1])
+        around = [d for d in shut if d != c and not flat and
                   _inside(np.asarray(points, dtype=np.float64)[0], np.asarray(contours[d], dtype=np.float64))]
         out.append(min(around, key=lambda d: areas[d]) if around else None)
     return out

@@ -114,12 +114,14 @@ def outlines(scene: Scene, time: float, *, method: str | None = None) -> list[Po
     return [drawn.points for drawn in contours(scene, time, method=method)]
 
 
-def contours(scene: Scene, time: float, method: str | None = None) -> list[DrawnContour]:
+def contours(scene: Scene, time: float, method: str | None = None, points: bool = False) -> list[DrawnContour]:
     """Every drawn contour at ``time`` seconds as :class:`~tweenrender.model.DrawnContour` s, in the
-    order of :func:`outlines`: which are open strokes, which holes, their element and paint."""
+    order of :func:`outlines`: which are open strokes, which holes, their element and paint (``points``:
+    those that are one point at that time too)."""
     from ..core.contours import roles
     from ..core.view import Viewport
 
+    points_too = points
     drawer = _frames_for(scene, method, None, None)
     at_time = _finite_time(time)
     shapes = drawer.shapes_at(method, at_time)
@@ -139,7 +141,7 @@ def contours(scene: Scene, time: float, method: str | None = None) -> list[Drawn
         width = paint.stroke_width * (1.0 if shape.stroke_scales else pixel)
         kinds = roles(list(at.contours), list(at.closed))
         for i, points in enumerate(at.contours):
-            if np.ptp(points, axis=0).max(initial=0.0) <= 0:
+            if not points_too and np.ptp(points, axis=0).max(initial=0.0) <= 0:
                 continue
             out.append(DrawnContour(np.array(points, dtype=np.float64), at.closed[i], kinds[i] == "hole", shape.name,
                                     rule, _unit(paint.fill), _unit(paint.stroke), float(width), float(paint.opacity),

@@ -98,16 +98,19 @@ class _Quality:
 
 def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Quality]) -> _Quality:
     """The entry's shape's quality in its segment under ``method`` (docs/methods.md): ``crossings`` and
-    ``stroke_crossings`` (:func:`~tweenrender.core.tangles.contact_times`, over the contours in both
-    keys), and the areas ``stray_max`` is measured on."""
+    ``stroke_crossings`` (:func:`~tweenrender.core.tangles.contact_times`, over every contour drawn
+    through the segment, growing and shrinking ones too), and the areas ``stray_max`` is measured on."""
     key = (id(entry.shape), entry.index, method)
     if key not in done:
         segment = entry.segment
         frames = pair_paths(segment, SWEEP, method)
-        moving = [k for k, p in enumerate(segment.pairs) if p.moving]
-        crossings, strokes = contact_times([frames[k] for k in moving], [segment.pairs[k].closed for k in moving],
-                                           SWEEP, [segment.pairs[k].k0 for k in moving],
-                                           [segment.pairs[k].k1 for k in moving])
+        # every contour drawn through the segment: those growing from (shrinking to) a point too, whose
+        # key there is that point
+        drawn_through = [k for k, p in enumerate(segment.pairs) if not p.fades]
+        crossings, strokes = contact_times([frames[k] for k in drawn_through],
+                                           [segment.pairs[k].closed for k in drawn_through], SWEEP,
+                                           [frames[k][0] for k in drawn_through],
+                                           [frames[k][-1] for k in drawn_through])
         few = [f[_STRAY_ROWS] for f in frames]
         drawn = [_area(at, entry.shape) for at in evaluate_segment(segment, STRAY_SWEEP, method, few)]
         done[key] = _Quality(crossings, strokes, drawn)

@@ -31,7 +31,8 @@ from ...model import Contour, Key, Matching, Paint, Points, Scene, Shape
 from ..contours import anchor, pair_contours
 from ..correspondence.correspond import Correspondence, correspond, correspond_open
 from ..balance import spread
-from .appear import scale_of, scaled, width_share
+from .appear import scaled, width_share
+from .clearance import GRID, Growth, cached, growth_scale, place
 from .easing import LINEAR, Easing, parse_easing
 from ..geometry import signed_area
 from ..clip_motion import clips_at
@@ -261,54 +262,90 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     The moving pairs are interpolated as one point set (one center of mass, one turn), except by
     the methods that work on one closed outline (:func:`.methods.per_outline`), which take each closed contour on its own and place it
     where the whole shape's rigid paths put it; the growing and shrinking pairs are scaled about their
-    point (:mod:`.appear`), the fading ones keep their shape.
+    point, clear of the moving ones (:mod:`.clearance`, :mod:`.appear`), the fading ones keep their shape.
     """
+    frames = _moving_paths(segment, t, method)
+    growths = growths_of(segment, method)
+    for i, pair in enumerate(segment.pairs):
+        if frames[i] is None and pair.fades:
+            frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
+        elif frames[i] is None:  # its area grows (shrinks) linearly in t, from its start to its stop
+            growth = growths[i]
+            assert growth is not None
+            frames[i] = scaled(growth.point, pair.k1 if growth.grows else pair.k0, growth_scale(growth, t))
+    return frames  # type: ignore[return-value]
+
+
+def growths_of(segment: Segment, method: str) -> list[Growth | None]:
+    """How each pair without a partner comes or goes under ``method`` (None for the others): placed
+    clear of the other pairs (:func:`.clearance.place`) when there are others and no stagger, else
+    about its anchor over the whole segment."""
+    pairs = segment.pairs
+    alone = [i for i, p in enumerate(pairs) if not p.moving and not p.fades]
+    out: list[Growth | None] = [None] * len(pairs)
+    if not alone:
+        return out
+    for i in alone:
+        grows = pairs[i].source[0] is None
+        out[i] = Growth(np.asarray((pairs[i].k0 if grows else pairs[i].k1)[0], dtype=np.float64), grows)
+    moving = [i for i, p in enumerate(pairs) if p.moving]
+    if len(alone) + len(moving) < 2 or segment.stagger > 0:
+        return out
+
+    def search() -> list[Growth]:
+        frames = _moving_paths(segment, GRID, method)
+        shapes = [pairs[i].k1 if pairs[i].source[0] is None else pairs[i].k0 for i in alone]
+        return place(shapes, [pairs[i].closed for i in alone], [pairs[i].source[0] is None for i in alone],
+                     [out[i].point for i in alone],  # type: ignore[union-attr]
+                     [frames[i] for i in moving], [pairs[i].closed for i in moving])
+
+    for i, growth in zip(alone, cached(segment, method, search)):
+        out[i] = growth
+    return out
+
+
+def _moving_paths(segment: Segment, t: Array, method: str) -> list[Array | None]:
+    """The moving pairs' inbetweens at ``t (T,)`` (``(T, L_i, 2)`` each), None for the others."""
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
     moving = [i for i, p in enumerate(pairs) if p.moving]
-    if moving:
-        k0 = np.concatenate([pairs[i].k0 for i in moving])
-        k1 = np.concatenate([pairs[i].k1 for i in moving])
-        cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
-        single = len(moving) == 1 and pairs[moving[0]].closed
-        chosen = segment_method(segment, method)
-        if per_outline(method) and not single:
-            # these methods need one closed outline: each contour takes them on its own (open ones the
-            # rigid paths), and its centre follows the rigid paths of the whole shape
-            placed = np.split(interpolate(k0, k1, t, "rigid"), cuts, axis=1)
-            for i, where in zip(moving, placed):
-                pair = pairs[i]
-                own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
-                frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
-        elif chosen == "injective" and not single:
-            # one mesh for every moving contour, so holes stay inside their outlines
-            from ..methods.injective import injective_contours
+    if not moving:
+        return frames
+    k0 = np.concatenate([pairs[i].k0 for i in moving])
+    k1 = np.concatenate([pairs[i].k1 for i in moving])
+    cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
+    single = len(moving) == 1 and pairs[moving[0]].closed
+    chosen = segment_method(segment, method)
+    if per_outline(method) and not single:
+        # these methods need one closed outline: each contour takes them on its own (open ones the
+        # rigid paths), and its centre follows the rigid paths of the whole shape
+        placed = np.split(interpolate(k0, k1, t, "rigid"), cuts, axis=1)
+        for i, where in zip(moving, placed):
+            pair = pairs[i]
+            own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
+            frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
+    elif chosen == "injective" and not single:
+        # one mesh for every moving contour, so holes stay inside their outlines
+        from ..methods.injective import injective_contours
 
-            found = injective_contours([pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving],
-                                       [pairs[i].closed for i in moving], t)
-            for i, part in zip(moving, found):
-                frames[i] = part
-        elif method == "auto" and chosen == "linear" and not single:
-            # auto's straight paths: each closed contour's copies spread along its edges first
-            from ..methods.qcurves import straight
+        found = injective_contours([pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving],
+                                   [pairs[i].closed for i in moving], t)
+        for i, part in zip(moving, found):
+            frames[i] = part
+    elif method == "auto" and chosen == "linear" and not single:
+        # auto's straight paths: each closed contour's copies spread along its edges first
+        from ..methods.qcurves import straight
 
-            for i in moving:
-                pair = pairs[i]
-                path = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
-                path[t == 0.0], path[t == 1.0] = pair.k0, pair.k1
-                frames[i] = path
-        else:
-            together = interpolate(k0, k1, t, chosen, segment.joints)
-            for i, part in zip(moving, np.split(together, cuts, axis=1)):
-                frames[i] = part
-    for i, pair in enumerate(pairs):
-        if frames[i] is None and pair.fades:
-            frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
-        elif frames[i] is None:  # its area grows (shrinks) linearly in t, over the whole segment
-            grows = pair.source[0] is None
-            point, shape = (pair.k0[0], pair.k1) if grows else (pair.k1[0], pair.k0)
-            frames[i] = scaled(point, shape, scale_of(t, grows))
-    return frames  # type: ignore[return-value]
+        for i in moving:
+            pair = pairs[i]
+            path = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
+            path[t == 0.0], path[t == 1.0] = pair.k0, pair.k1
+            frames[i] = path
+    else:
+        together = interpolate(k0, k1, t, chosen, segment.joints)
+        for i, part in zip(moving, np.split(together, cuts, axis=1)):
+            frames[i] = part
+    return frames
 
 
 def staggered_paths(segment: Segment, times: Array, method: str) -> list[Array]:
@@ -339,6 +376,7 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
     fading = any(p.fades for p in pairs)
     sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
     growing = [i for i, p in enumerate(pairs) if not p.moving and not p.fades]
+    growths = growths_of(segment, method) if growing else []
     whole = bool(growing) and not all(segment.shown)  # an element growing from (shrinking to) a hidden key
     p0, p1 = segment.paints
     c0, c1 = (segment.ends[0].clips, segment.ends[1].clips) if segment.ends is not None else ((), ())
@@ -375,7 +413,7 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
         elif growing:
             share = [1.0] * len(pairs)
             for i in growing:
-                share[i] = width_share(x, pairs[i].source[0] is None)
+                share[i] = float(growth_scale(growths[i], np.array([x]))[0])  # type: ignore[arg-type]
             widths = tuple(share)
         out.append(ShapeAt(contours, closed, paint, visible and paint.visible, x if fading else None, sides,
                            flips, drawn_as, widths, clips))

@@ -1,0 +1,224 @@
+"""Where and when a contour without a partner grows or shrinks so that it meets no other (maths §5.17).
+
+A contour that only one key has grows from (shrinks to) a point. Scaled about its partner-side anchor
+over the whole segment it may cross the contours that move meanwhile: an outline that still covers
+the place where a new piece belongs, a piece swept over by a shape on its way. So each such contour
+(with the contours it holds in its key, which come and go with it as one group) is placed by a search
+over a grid of eased ``t``: for each candidate *point* — the partner-side anchor first, then the
+deepest point inside the contour, its centre of area, and the point inside it farthest from where the
+other contours start — the earliest *start* (the latest *stop*, for
+one that shrinks) from which, scaled about that point with its area linear in ``t`` over the rest of
+the segment, it touches no other contour of the element at any grid time and keeps the nesting it
+has in its key. The first candidate point with the earliest start wins; where none is clear before
+:data:`LATEST`, the contour keeps its anchor and the whole segment (and the measures say it tangles).
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..contours import centre_of_area, inside
+from ..tangles import _relation, proper_crossings
+
+__all__ = ["GRID", "LATEST", "Growth", "place", "deepest_point", "farthest_point", "growth_scale"]
+
+Array = NDArray[np.float64]
+
+GRID = np.linspace(0.0, 1.0, 51)
+"""The eased t at which a placement is checked against the other contours."""
+
+STARTS = np.round(np.arange(0.0, 0.86, 0.05), 2)
+"""The starts tried, earliest first (for one that shrinks, 1 - the stop)."""
+
+LATEST = float(STARTS[-1])
+"""The latest start tried: a contour that cannot grow clear of the others in the last 15 % of the segment
+grows over all of it."""
+
+_PROBE_CELLS = 24  # grid cells across a contour's box when looking for its deepest point
+
+
+@dataclass(frozen=True, slots=True)
+class Growth:
+    """How one contour without a partner comes (``grows``) or goes: scaled about ``point (2,)``, its
+    area linear in the eased ``t`` from ``start`` to ``stop`` (0 before, full after, when growing)."""
+
+    point: Array
+    grows: bool
+    start: float = 0.0
+    stop: float = 1.0
+
+
+def growth_scale(growth: Growth, t: Array) -> Array:
+    """The scale of a contour placed by ``growth`` at eased parameters ``t (T,)``: ``(T,)`` in [0, 1]
+    (held at 0 outside [0, 1] too: an overshooting easing never turns it inside out)."""
+    share = (np.asarray(t, dtype=np.float64) - growth.start) / (growth.stop - growth.start)
+    if not growth.grows:
+        share = 1.0 - share
+    return np.sqrt(np.clip(share, 0.0, None))
+
+
+def deepest_point(contour: Array) -> Array:
+    """A point well inside closed ``contour (N, 2)``: of a grid over its box, the inside point farthest
+    from its outline (its centre of area where no grid point is inside): ``(2,)``."""
+    lo, hi = contour.min(axis=0), contour.max(axis=0)
+    steps = [np.linspace(lo[k], hi[k], _PROBE_CELLS + 1)[1:-1] for k in range(2)]
+    grid = np.stack(np.meshgrid(*steps), axis=-1).reshape(-1, 2)
+    grid = grid[inside(grid, contour)] if len(contour) >= 3 else grid[:0]
+    if not len(grid):
+        return centre_of_area([contour], [True])
+    a, b = contour, np.roll(contour, -1, axis=0)
+    edge = b - a
+    length2 = np.maximum((edge * edge).sum(axis=1), 1e-300)
+    s = np.clip(((grid[:, None, :] - a) * edge).sum(axis=2) / length2, 0.0, 1.0)
+    gap = np.hypot(*(grid[:, None, :] - a - s[..., None] * edge).transpose(2, 0, 1)).min(axis=1)
+    return grid[int(np.argmax(gap))]
+
+
+def farthest_point(contour: Array, others: Array) -> Array:
+    """Of a grid inside closed ``contour (N, 2)``, the point farthest from the points ``others (M, 2)``
+    (where the other contours are when it starts to grow): ``(2,)``; its centre of area without one."""
+    lo, hi = contour.min(axis=0), contour.max(axis=0)
+    steps = [np.linspace(lo[k], hi[k], _PROBE_CELLS + 1)[1:-1] for k in range(2)]
+    grid = np.stack(np.meshgrid(*steps), axis=-1).reshape(-1, 2)
+    grid = grid[inside(grid, contour)] if len(contour) >= 3 else grid[:0]
+    if not len(grid):
+        return centre_of_area([contour], [True])
+    gap = np.full(len(grid), np.inf)
+    for chunk in range(0, len(others), 512):  # (P, 512) at a time
+        part = others[chunk:chunk + 512]
+        gap = np.minimum(gap, np.hypot(*(grid[:, None, :] - part[None]).transpose(2, 0, 1)).min(axis=1))
+    return grid[int(np.argmax(gap))]
+
+
+def _groups(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool]) -> list[list[int]]:
+    """The contours without a partner in groups that come and go together: each outermost one with the
+    ones (coming or going the same way) inside it in its key; largest groups first."""
+    area = [abs(_area(s)) if c and len(s) >= 3 else 0.0 for s, c in zip(shapes, closed)]
+    holder: list[int] = list(range(len(shapes)))
+    for j, inner in enumerate(shapes):
+        around = [i for i, outer in enumerate(shapes)
+                  if i != j and closed[i] and grows[i] == grows[j] and area[i] > area[j]
+                  and len(outer) >= 3 and bool(np.all(inside(inner, outer)))]
+        if around:
+            holder[j] = max(around, key=lambda i: area[i])
+    roots = sorted({holder[j] for j in range(len(shapes))}, key=lambda i: -area[i])
+    return [[r] + [j for j in range(len(shapes)) if holder[j] == r and j != r] for r in roots]
+
+
+def _area(points: Array) -> float:
+    x, y = points[:, 0], points[:, 1]
+    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def _boxes_meet(a: Array, b: Array) -> bool:
+    return bool(np.all(a.min(axis=0) <= b.max(axis=0)) and np.all(b.min(axis=0) <= a.max(axis=0)))
+
+
+def _clear(members: list[Array], member_closed: list[bool], others: list[Array], other_closed: list[bool],
+           relations: NDArray[np.int8]) -> bool:
+    """Whether contours ``members`` touch none of ``others`` and keep ``relations`` ``(M, O)`` with them
+    (1 member inside other, -1 other inside member, 0 neither; closed pairs only)."""
+    for o, (other, shut_o) in enumerate(zip(others, other_closed)):
+        near = [m for m, member in enumerate(members) if _boxes_meet(member, other)]
+        if not near:
+            if np.any(relations[:, o] != 0):
+                return False
+            continue
+        touching = proper_crossings([members[m] for m in near] + [other],
+                                    [member_closed[m] for m in near] + [shut_o], touching=True)
+        if any(pair[1] == len(near) for pair in touching):
+            return False
+        for m, member in enumerate(members):
+            if member_closed[m] and shut_o:
+                now = int(_relation(member[None], other[None])[0]) if m in near else 0
+                if now != relations[m, o]:
+                    return False
+    return True
+
+
+def place(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool], anchors: Sequence[Array],
+          others: Sequence[Array], others_closed: Sequence[bool]) -> list[Growth]:
+    """Growths for contours without a partner, ``shapes[i] (L_i, 2)`` as their key draws them, that
+    keep clear of the element's moving contours ``others[j] (G, M_j, 2)`` (at :data:`GRID`) and of one
+    another: one :class:`Growth` per shape (``anchors[i] (2,)``: where it would come from unplaced)."""
+    placed: list[Growth | None] = [None] * len(shapes)
+    done_frames: list[Array] = []  # (G, L, 2) of the groups placed so far
+    done_closed: list[bool] = []
+    for group in _groups(shapes, closed, grows):
+        root = group[0]
+        forward = grows[root]
+        members = [np.asarray(shapes[m], dtype=np.float64) for m in group]
+        member_closed = [bool(closed[m]) and len(shapes[m]) >= 3 for m in group]
+        # search in the direction of growth: a shrinking group's times run backwards
+        seen = [f if forward else f[::-1] for f in list(others) + done_frames]
+        seen_closed = [bool(c) for c in list(others_closed) + done_closed]
+        final = np.array([[int(_relation(m[None], o[-1][None])[0]) if mc and oc else 0
+                           for o, oc in zip(seen, seen_closed)] for m, mc in zip(members, member_closed)],
+                         dtype=np.int8).reshape(len(members), len(seen))
+        candidates = [np.asarray(anchors[root], dtype=np.float64)]
+        if member_closed[0]:
+            candidates += [deepest_point(members[0]), centre_of_area([members[0]], [True])]
+            first = [o[0] for o in seen if len(o[0])]
+            if first:
+                candidates.append(farthest_point(members[0], np.concatenate(first)))
+        best: tuple[float, Array] | None = None
+        for point in candidates:
+            limit = LATEST if best is None else best[0] - 1e-9
+            start = _earliest(point, members, member_closed, seen, seen_closed, final, limit)
+            if start is not None and (best is None or start < best[0]):
+                best = (start, point)
+            if best is not None and best[0] == 0.0:
+                break
+        start, point = best if best is not None else (0.0, candidates[0])
+        growth = Growth(point, forward, start, 1.0) if forward else Growth(point, False, 0.0, 1.0 - start)
+        scale = growth_scale(growth, GRID)[:, None, None]
+        for m, member in zip(group, members):
+            placed[m] = growth
+            done_frames.append(point + scale * (member - point))
+            done_closed.append(bool(closed[m]) and len(member) >= 3)
+    return placed  # type: ignore[return-value]
+
+
+def _earliest(point: Array, members: list[Array], member_closed: list[bool], seen: list[Array],
+              seen_closed: list[bool], final: NDArray[np.int8], limit: float) -> float | None:
+    """The earliest of :data:`STARTS` (up to ``limit``) from which ``members`` scaled about ``point``
+    stay clear of ``seen`` (``(G, M, 2)`` each, in the direction of growth), or None. The grid time at
+    which a start failed is tried first for the next one (where one start meets a contour, the next
+    mostly does too)."""
+    failed: list[int] = []
+    for start in STARTS[STARTS <= limit + 1e-12].tolist():
+        times = np.flatnonzero(GRID > start).tolist()
+        order = [k for k in failed if k in times] + times
+        for k in order:
+            s = np.sqrt((GRID[k] - start) / (1.0 - start))
+            if not _clear([point + s * (m - point) for m in members], member_closed, [o[k] for o in seen],
+                          seen_closed, final):
+                failed = [k]
+                break
+        else:
+            return float(start)
+    return None
+
+
+_Cache = OrderedDict[tuple[int, str], tuple[object, list[Growth]]]
+_cache: _Cache = OrderedDict()
+_CACHED = 256
+
+
+def cached(owner: object, method: str, compute: Callable[[], list[Growth]]) -> list[Growth]:
+    """``compute()`` for ``owner`` (a segment) and ``method``, remembered for the last few asked."""
+    key = (id(owner), method)
+    found = _cache.get(key)
+    if found is not None and found[0] is owner:
+        _cache.move_to_end(key)
+        return found[1]
+    value = compute()
+    _cache[key] = (owner, value)
+    while len(_cache) > _CACHED:
+        _cache.popitem(last=False)
+    return value

@@ -72,10 +72,12 @@ def _state(c: np.ndarray, d: np.ndarray) -> int:
 
 def tangled(at: Sequence[np.ndarray], keys0: Sequence[np.ndarray], keys1: Sequence[np.ndarray],
             closed: Sequence[bool]) -> tuple[bool, bool]:
-    """Whether the element's closed contours ``at`` tangle, and whether its open strokes do."""
-    parent = parents(keys0, closed)
+    """Whether the element's closed contours ``at`` tangle, and whether its open strokes do (a contour
+    that meets the one around it in either key is no hole of it: the keys already cross)."""
     lines = [_line(p, s) for p, s in zip(at, closed)]
     keyed = [[_line(p, s) for p, s in zip(keys, closed)] for keys in (keys0, keys1)]
+    parent = [p if p is None or not any(k[c].intersects(k[p]) for k in keyed) else None
+              for c, p in enumerate(parents(keys0, closed))]
     shut, stroke = False, False
     for c, line in enumerate(lines):
         if not line.is_simple:

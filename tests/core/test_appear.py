@@ -8,6 +8,7 @@ from first principles (shoelace, polygon centroid, point-to-segment distance), n
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import numpy as np
@@ -276,3 +277,26 @@ def test_an_element_that_comes_is_painted_over_one_that_goes(tmp_path: Path) -> 
     for time in (0.25, 0.5, 0.75):
         img = tr.frame(scene, time, size=(240, 240))
         assert tuple(img[120, 120, :3]) == (0, 0, 0), time  # the cross's middle, 10 px a unit
+
+
+def test_a_piece_that_would_pass_through_an_outline_to_reach_its_partner_goes_and_another_comes(
+        tmp_path: Path) -> None:
+    """A ring holding a small square in its hole becomes a disc with a small square beside it. Paired as
+    they sit and size (outer with outer), the squares would have to cross the ring's outline on the way;
+    the pairs are nested differently in the two keys, so the square in the hole shrinks away and the one
+    outside grows, and no two contours meet at any t (brute force over every pair of edges)."""
+    outer = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]]
+    hole = [[2.0, 2.0], [2.0, 8.0], [8.0, 8.0], [8.0, 2.0]]
+    inner = [[4.0, 4.0], [6.0, 4.0], [6.0, 6.0], [4.0, 6.0]]
+    disc = [[1.0, 1.0], [9.0, 1.0], [9.0, 9.0], [1.0, 9.0]]
+    beside = [[12.0, 4.0], [14.0, 4.0], [14.0, 6.0], [12.0, 6.0]]
+    scene = shape_scene(tmp_path, [outer, hole, inner], [disc, beside])
+    for t in np.linspace(0.0, 1.0, 101)[1:-1]:
+        (at,) = drawn(scene, float(t))
+        shown = [np.asarray(c) for c in at.contours if np.ptp(c, axis=0).max() > 0]
+        for i, j in itertools.combinations(range(len(shown)), 2):
+            assert not edges_meet(shown[i], shown[j]), (t, i, j)
+    (middle,) = drawn(scene, 0.5)
+    sizes = sorted(float(np.ptp(c, axis=0).max()) for c in middle.contours)
+    # the inner square at half its side's share (√0.5 · 2) and the new one likewise, not one square moving
+    assert sum(abs(s - np.sqrt(0.5) * 2.0) < 1e-9 for s in sizes) == 2

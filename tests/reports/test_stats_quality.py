@@ -121,3 +121,28 @@ def test_the_text_says_where_a_shape_tangles_how_far_it_strays_and_what_pops() -
     for shape in stats["shapes"]:
         assert shape["methods"]["linear"]["stroke_crossings"] == []
         assert 0.0 <= shape["methods"]["linear"]["stray_max"] <= 1.0
+
+
+def test_keys_that_already_cross_do_not_tangle_and_injective_says_why_it_draws_rigid_paths(tmp_path) -> None:
+    """Two squares that overlap in both keys (shapely: their outlines cross) and slide: no morph keeps them
+    apart, and none has to. Neither is a hole of the other, so nothing tangles; `injective`, which needs
+    keys whose contours do not cross, says so instead of drawing rigid paths silently."""
+    import shapely
+
+    from tests.helpers import write_scene
+
+    k0 = [[[0, 0], [10, 0], [10, 10], [0, 10]], [[5, 2], [15, 2], [15, 8], [5, 8]]]
+    k1 = [[[0, 0], [10, 0], [10, 10], [0, 10]], [[6, 2], [16, 2], [16, 8], [6, 8]]]
+    for key in (k0, k1):
+        assert shapely.LinearRing(key[0]).crosses(shapely.LinearRing(key[1]))
+    scene = tr.load_scene(write_scene(tmp_path, f'[[shape]]\nname = "s"\n[[shape.key]]\ntime = 0\ncontours = {k0}\n'
+                                                f'[[shape.key]]\ntime = 1\ncontours = {k1}\n'))
+    stats = stats_dict(scene, [0.5], ["linear", "injective"])
+    assert stats["shapes"]
+    for entry in stats["shapes"]:
+        assert entry["methods"]["linear"]["crossings"] == [] == entry["methods"]["injective"]["crossings"]
+        assert "cross" in entry["methods"]["injective"]["fallback"]
+    assert _shapely_crossings(scene, "linear") == set()
+    assert "No injective morph: " in stats_text(stats)
+    square = stats_dict(tr.load_scene(SCENES / "square.toml"), [0.5], ["injective"])
+    assert square["shapes"][0]["methods"]["injective"]["fallback"] is None

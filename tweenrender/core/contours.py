@@ -5,7 +5,9 @@ else an *outer* outline (nesting decides, whatever the fill rule); an open
 contour is a stroke. Contours of consecutive keys are paired by a minimum-cost
 assignment within each role — outer with outer, hole with hole, open with
 open — on where they sit in their shape and how large they are, never by
-drawing order. A contour left without a partner grows from (or shrinks to) an
+drawing order. Two pairs that are nested one way in one key and another way in the
+other would have to pass through each other: the smaller is parted
+(:func:`keep_nesting`). A contour left without a partner grows from (or shrinks to) an
 *anchor*: the point of the partner key's drawing nearest its centre of area (maths §5.17).
 """
 
@@ -18,9 +20,10 @@ from numpy.typing import NDArray
 
 from .correspondence.assignment import min_cost_assignment
 from .geometry import signed_area
+from .tangles import _relation, proper_crossings
 
-__all__ = ["ROLES", "inside", "roles", "pair_contours", "nearest_point", "anchor", "centre_of_area",
-           "contour_size"]
+__all__ = ["ROLES", "inside", "roles", "pair_contours", "keep_nesting", "nearest_point", "anchor",
+           "centre_of_area", "contour_size"]
 
 Array = NDArray[np.float64]
 ROLES = ("outer", "hole", "open")
@@ -123,6 +126,64 @@ def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Arra
     matched = sorted((p for p in pairs if p[0] is not None), key=lambda p: p[0])  # type: ignore[arg-type, return-value]
     new = sorted((p for p in pairs if p[0] is None), key=lambda p: p[1])  # type: ignore[arg-type, return-value]
     return matched + new
+
+
+def keep_nesting(partners: Sequence[tuple[int | None, int | None]], a: Sequence[Array],
+                 a_closed: Sequence[bool], b: Sequence[Array], b_closed: Sequence[bool],
+                 forced: Sequence[tuple[int, int]] = ()) -> list[tuple[int | None, int | None]]:
+    """``partners`` (as :func:`pair_contours` gives them) with no two pairs nested differently in
+    the two keys: where one pair's contour lies inside another's in key a but not in key b (or the
+    other way round), the two would have to pass through each other; the smaller pair (by the
+    sizes of its two contours) is parted into one contour that shrinks away and one that grows,
+    until every two pairs apart in both keys are nested alike. ``forced`` pairs are never parted."""
+    kept = [(i, j) for i, j in partners if i is not None and j is not None]
+    alone = [p for p in partners if p[0] is None or p[1] is None]
+    fixed = set(forced)
+    shut_a = [bool(c) and len(x) >= 3 for x, c in zip(a, a_closed)]
+    shut_b = [bool(c) and len(x) >= 3 for x, c in zip(b, b_closed)]
+    while True:
+        closed = [(i, j) for i, j in kept if shut_a[i] and shut_b[j]]  # type: ignore[index]
+        worst = _misnested(closed, a, b)
+        if not worst:
+            break
+        size = {p: contour_size(a[p[0]], True) + contour_size(b[p[1]], True) for pq in worst for p in pq}  # type: ignore[index]
+        candidates = [p for pq in worst for p in pq if p not in fixed]
+        if not candidates:
+            break
+        parted = min(candidates, key=lambda p: size[p])
+        kept.remove(parted)
+        alone += [(parted[0], None), (None, parted[1])]
+    matched = sorted((p for p in kept + alone if p[0] is not None), key=lambda p: p[0])  # type: ignore[arg-type, return-value]
+    new = sorted((p for p in alone if p[0] is None), key=lambda p: p[1])  # type: ignore[arg-type, return-value]
+    return matched + new
+
+
+def _misnested(pairs: Sequence[tuple[int, int]], a: Sequence[Array], b: Sequence[Array]
+               ) -> list[tuple[tuple[int, int], tuple[int, int]]]:
+    """The two-pair sets of closed ``pairs`` apart in both keys (no common point) whose nesting
+    differs between key a and key b."""
+    if len(pairs) < 2:
+        return []
+    ka = [np.asarray(a[i], dtype=np.float64) for i, _ in pairs]
+    kb = [np.asarray(b[j], dtype=np.float64) for _, j in pairs]
+    meeting = set(proper_crossings(ka, [True] * len(ka), touching=True)) | \
+        set(proper_crossings(kb, [True] * len(kb), touching=True))
+    out = []
+    for p in range(len(pairs)):
+        for q in range(p + 1, len(pairs)):
+            if (p, q) in meeting:
+                continue
+            if _nested(ka[p], ka[q]) != _nested(kb[p], kb[q]):
+                out.append((pairs[p], pairs[q]))
+    return out
+
+
+def _nested(c: Array, d: Array) -> int:
+    """1 where closed ``c (L, 2)`` lies inside ``d (M, 2)``, -1 where ``d`` inside ``c``, else 0 (boxes first)."""
+    c_lo, c_hi, d_lo, d_hi = c.min(axis=0), c.max(axis=0), d.min(axis=0), d.max(axis=0)
+    if not (np.all(c_lo >= d_lo) and np.all(c_hi <= d_hi)) and not (np.all(d_lo >= c_lo) and np.all(d_hi <= c_hi)):
+        return 0
+    return int(_relation(c[None], d[None])[0])
 
 
 def _box_centre(contours: Sequence[Array]) -> Array:

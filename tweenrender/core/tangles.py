@@ -294,7 +294,8 @@ class Apart:
 
     ``nested``: ``(c, d, relation)`` for closed contours ``c < d`` apart in both keys, ``relation`` their
     nesting in both (1: c inside d, -1: d inside c, 0: neither); ``strokes``: pairs ``(c, d)``, one open
-    at least, apart in both keys; ``parent``: each contour's parent in the first key (:func:`parents`).
+    at least, apart in both keys; ``parent``: each contour's parent in the first key (:func:`parents`), None
+    where the two meet in either key.
     """
 
     nested: tuple[tuple[int, int, int], ...]
@@ -319,7 +320,10 @@ def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[b
             first = int(_relation(k0s[c][None], k0s[d][None])[0])
             if first == int(_relation(k1s[c][None], k1s[d][None])[0]):
                 nested.append((c, d, first))
-    return Apart(tuple(nested), tuple(strokes), tuple(parents(k0s, shut)))
+    # a contour that meets the one around it in a key is no hole of it there (the keys already cross)
+    parent = [p if p is None or (min(c, p), max(c, p)) not in meeting else None
+              for c, p in enumerate(parents(k0s, shut))]
+    return Apart(tuple(nested), tuple(strokes), tuple(parent))
 
 
 def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,

@@ -15,7 +15,8 @@ from ..core.methods.registry import REGISTRY, measured_methods
 from ..core.pops import changes, pops
 from ..core.stray import STRAY_REACH, Area, stray_shares
 from ..core.tangles import contact_times
-from ..core.timing.timeline import ShapeAt, Track, evaluate_segment, pair_paths, segment_choice, tracks_of
+from ..core.timing.timeline import (ShapeAt, Track, evaluate_segment, injective_fallback_of, pair_paths,
+                                    segment_choice, tracks_of)
 from ..core.view import Viewport
 from ..model import Scene, Shape
 from ..plan.job import scene_view, total_frames
@@ -52,6 +53,8 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
         for method in measured:
             found = _quality(entry, method, quality)
             measured[method].update(crossings=list(found.crossings), stroke_crossings=list(found.strokes))
+            if method == "injective":  # where no injective morph exists, say why rigid paths were drawn
+                measured[method]["fallback"] = injective_fallback_of(entry.segment)
             filled_in.append((measured[method], found))
             closure = REGISTRY[method].closure
             if closure is not None:  # how much the closing tweak changed the lengths, at worst
@@ -183,6 +186,8 @@ def stats_text(stats: dict[str, Any]) -> str:
             lines.append(f"Area ratio to the interpolated keys = {areas}; worst turning-angle error "
                          f"{r['angle_error_max']:.3f} degrees")
             lines.append(_crossing_words(r["self_intersects"]))
+            if r.get("fallback"):
+                lines.append(f"No injective morph: {r['fallback']}; the rigid paths are drawn")
             if "crossings" in r:
                 lines += _quality_words(r)
             if "closure_tweak_max" in r:

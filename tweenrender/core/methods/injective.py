@@ -48,14 +48,14 @@ from .compatible import CompatibleError, CompatibleMesh, compatible_triangulatio
 from ..geometry import best_fit_rotation, centroid, rotate
 from .paths import as_times, rigid
 
-__all__ = ["injective", "injective_contours", "injective_mesh", "mean_value_weights"]
+__all__ = ["injective", "injective_contours", "injective_fallback", "injective_mesh", "mean_value_weights"]
 
 Array = NDArray[np.float64]
 
 _CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
 _FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
 _RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off by this share of its size
-_cache: OrderedDict[bytes, Callable[[Array], list[Array]]] = OrderedDict()
+_cache: OrderedDict[bytes, tuple[Callable[[Array], list[Array]], str | None]] = OrderedDict()
 
 
 def mean_value_weights(points: Array, triangles: NDArray[np.intp]) -> tuple[NDArray[np.intp], NDArray[np.intp], Array]:
@@ -182,17 +182,21 @@ def _rigid_turn(a: Array, b: Array) -> float:
     return phi if residual <= _RIGID * size else 0.0
 
 
-def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) -> Callable[[Array], list[Array]]:
-    """The paths of every contour, those that cannot be in the mesh on the rigid paths of all."""
+def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]
+           ) -> tuple[Callable[[Array], list[Array]], str | None]:
+    """The paths of every contour, those that cannot be in the mesh on the rigid paths of all; and why
+    the rigid paths were taken for all (None where the mesh holds every contour it can)."""
     meshed = [_meshable(k0[a:b], k1[a:b], c) for a, b, c in zip(cuts, cuts[1:], closed)]
-    if not any(meshed) or not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
-        return lambda t: _split(rigid(k0, k1, t), cuts)
+    if not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
+        return (lambda t: _split(rigid(k0, k1, t), cuts)), "the keys are not finite"
+    if not any(meshed):
+        return (lambda t: _split(rigid(k0, k1, t), cuts)), "no contour has three vertices (an open one two)"
     picked = [c for c in range(len(meshed)) if meshed[c]]
     m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
     try:
         paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
-    except CompatibleError:
-        return lambda t: _split(rigid(k0, k1, t), cuts)
+    except CompatibleError as error:
+        return (lambda t: _split(rigid(k0, k1, t), cuts)), str(error)
     every = list(range(len(meshed)))
 
     def evaluate(t: Array) -> list[Array]:
@@ -202,7 +206,7 @@ def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]) ->
         still = _split(rigid(k0, k1, t), cuts)
         return [found.get(c, still[c]) for c in every]
 
-    return evaluate
+    return evaluate, None
 
 
 def _meshed_keys(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool], picked: Sequence[int]
@@ -262,23 +266,35 @@ def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Seque
 
     The mesh of a set of keys is cached, so successive blocks of frames of one segment pay it once.
     """
-    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
-    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
-    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
-    key = k0.tobytes() + b"|" + k1.tobytes() + b"|" + repr((cuts, list(closed))).encode()
-    paths = _cache.get(key)
-    if paths is None:
-        paths = _build(k0, k1, cuts, [bool(c) for c in closed])
-        _cache[key] = paths
-        while len(_cache) > _CACHE:
-            _cache.popitem(last=False)
-    else:
-        _cache.move_to_end(key)
+    paths, _ = _paths_of(k0s, k1s, closed)
     t = as_times(t)
     found = paths(t)
     for frames, a, b in zip(found, k0s, k1s):
         frames[t == 0.0] = a
         frames[t == 1.0] = b
+    return found
+
+
+def injective_fallback(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> str | None:
+    """Why contours ``k0s``, ``k1s`` (as :func:`injective_contours` takes them) have no injective paths and
+    take the rigid ones instead — keys whose contours cross, nest differently, wind apart — or None."""
+    return _paths_of(k0s, k1s, closed)[1]
+
+
+def _paths_of(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
+              ) -> tuple[Callable[[Array], list[Array]], str | None]:
+    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
+    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
+    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
+    key = k0.tobytes() + b"|" + k1.tobytes() + b"|" + repr((cuts, list(closed))).encode()
+    found = _cache.get(key)
+    if found is None:
+        found = _build(k0, k1, cuts, [bool(c) for c in closed])
+        _cache[key] = found
+        while len(_cache) > _CACHE:
+            _cache.popitem(last=False)
+    else:
+        _cache.move_to_end(key)
     return found
 
 

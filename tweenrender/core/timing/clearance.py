@@ -115,30 +115,31 @@ def _area(points: Array) -> float:
     return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
 
 
-def _boxes_meet(a: Array, b: Array) -> bool:
-    return bool(np.all(a.min(axis=0) <= b.max(axis=0)) and np.all(b.min(axis=0) <= a.max(axis=0)))
-
-
 def _clear(members: list[Array], member_closed: list[bool], others: list[Array], other_closed: list[bool],
            relations: NDArray[np.int8]) -> bool:
     """Whether contours ``members`` touch none of ``others`` and keep ``relations`` ``(M, O)`` with them
     (1 member inside other, -1 other inside member, 0 neither; closed pairs only)."""
-    for o, (other, shut_o) in enumerate(zip(others, other_closed)):
-        near = [m for m, member in enumerate(members) if _boxes_meet(member, other)]
-        if not near:
+    boxes = [(m.min(axis=0), m.max(axis=0)) for m in members]
+    near: list[int] = []
+    for o, other in enumerate(others):
+        lo, hi = other.min(axis=0), other.max(axis=0)
+        meets = [bool(np.all(b_lo <= hi) and np.all(lo <= b_hi)) for b_lo, b_hi in boxes]
+        if not any(meets):
             if np.any(relations[:, o] != 0):
                 return False
             continue
-        touching = proper_crossings([members[m] for m in near] + [other],
-                                    [member_closed[m] for m in near] + [shut_o], touching=True)
-        if any(pair[1] == len(near) for pair in touching):
-            return False
+        near.append(o)
         for m, member in enumerate(members):
-            if member_closed[m] and shut_o:
-                now = int(_relation(member[None], other[None])[0]) if m in near else 0
+            if member_closed[m] and other_closed[o]:
+                now = int(_relation(member[None], other[None])[0]) if meets[m] else 0
                 if now != relations[m, o]:
                     return False
-    return True
+    if not near:
+        return True
+    count = len(members)
+    touching = proper_crossings(members + [others[o] for o in near],
+                                list(member_closed) + [other_closed[o] for o in near], touching=True)
+    return not any(c < count <= d for c, d in touching)
 
 
 def place(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool], anchors: Sequence[Array],
@@ -205,20 +206,18 @@ def _earliest(point: Array, members: list[Array], member_closed: list[bool], see
     return None
 
 
-_Cache = OrderedDict[tuple[int, str], tuple[object, list[Growth]]]
-_cache: _Cache = OrderedDict()
+_cache: OrderedDict[bytes, list[Growth]] = OrderedDict()
 _CACHED = 256
 
 
-def cached(owner: object, method: str, compute: Callable[[], list[Growth]]) -> list[Growth]:
-    """``compute()`` for ``owner`` (a segment) and ``method``, remembered for the last few asked."""
-    key = (id(owner), method)
+def cached(key: bytes, compute: Callable[[], list[Growth]]) -> list[Growth]:
+    """``compute()`` for ``key`` (a digest of what it depends on), remembered for the last few asked."""
     found = _cache.get(key)
-    if found is not None and found[0] is owner:
+    if found is not None:
         _cache.move_to_end(key)
-        return found[1]
+        return found
     value = compute()
-    _cache[key] = (owner, value)
+    _cache[key] = value
     while len(_cache) > _CACHED:
         _cache.popitem(last=False)
     return value

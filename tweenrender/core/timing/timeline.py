@@ -19,6 +19,7 @@ hints (:mod:`.hints`) pair contours and fix the correspondence at their vertices
 
 from __future__ import annotations
 
+import hashlib
 import math
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Sequence
@@ -28,7 +29,7 @@ from numpy.typing import NDArray
 
 from ...errors import GeometryError
 from ...model import Contour, Key, Matching, Paint, Points, Scene, Shape
-from ..contours import anchor, pair_contours
+from ..contours import anchor, keep_nesting, pair_contours
 from ..correspondence.correspond import Correspondence, correspond, correspond_open
 from ..balance import spread
 from .appear import scaled, width_share
@@ -46,7 +47,7 @@ from ..methods.registry import interpolate, per_outline
 from ..paint import blend_paints
 
 __all__ = ["easing_of", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
-           "evaluate_segment", "pair_paths", "key_windings", "tracks_of"]
+           "evaluate_segment", "pair_paths", "growths_of", "injective_fallback_of", "key_windings", "tracks_of"]
 
 Array = NDArray[np.float64]
 
@@ -276,6 +277,17 @@ def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     return frames  # type: ignore[return-value]
 
 
+def injective_fallback_of(segment: Segment) -> str | None:
+    """Why ``injective`` draws a segment's moving contours on rigid paths (no injective morph of its
+    keys: they cross, nest differently, wind apart), or None."""
+    from ..methods.injective import injective_fallback
+
+    moving = [p for p in segment.pairs if p.moving]
+    if not moving:
+        return None
+    return injective_fallback([p.k0 for p in moving], [p.k1 for p in moving], [p.closed for p in moving])
+
+
 def growths_of(segment: Segment, method: str) -> list[Growth | None]:
     """How each pair without a partner comes or goes under ``method`` (None for the others): placed
     clear of the other pairs (:func:`.clearance.place`) when there are others and no stagger, else
@@ -299,9 +311,22 @@ def growths_of(segment: Segment, method: str) -> list[Growth | None]:
                      [out[i].point for i in alone],  # type: ignore[union-attr]
                      [frames[i] for i in moving], [pairs[i].closed for i in moving])
 
-    for i, growth in zip(alone, cached(segment, method, search)):
+    for i, growth in zip(alone, cached(_digest(segment, method), search)):
         out[i] = growth
     return out
+
+
+def _digest(segment: Segment, method: str) -> bytes:
+    """What a segment's placement of contours without a partner depends on, as a short digest: its
+    pairs (keys, closed, sources), joints and the method (the segment itself is made anew for every
+    render job, library call and test)."""
+    h = hashlib.blake2b(method.encode(), digest_size=20)
+    for pair in segment.pairs:
+        h.update(np.ascontiguousarray(pair.k0).tobytes())
+        h.update(np.ascontiguousarray(pair.k1).tobytes())
+        h.update(repr((pair.closed, pair.source, pair.fades)).encode())
+    h.update(repr(segment.joints).encode())
+    return h.digest()
 
 
 def _moving_paths(segment: Segment, t: Array, method: str) -> list[Array | None]:
@@ -508,8 +533,11 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
         return tuple(Pair(x.points, y.points, x.closed, (len(x.points), len(y.points)), None,
                           (None if grows and before.hidden else i, None if grows and after.hidden else i))
                      for i, (x, y) in enumerate(zip(a, b)))
+    forced = forced_contour_pairs(links)
     partners = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b],
-                             [c.closed for c in b], forced=forced_contour_pairs(links))
+                             [c.closed for c in b], forced=forced)
+    partners = keep_nesting(partners, [c.points for c in a], [c.closed for c in a], [c.points for c in b],
+                            [c.closed for c in b], forced)
     pairs = []
     for i, j in partners:
         if i is not None and j is not None:

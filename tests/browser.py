@@ -188,6 +188,25 @@ class LivePage:
                 found.append(json.dumps(params.get("args", []))[:300])
         return found
 
+    def mouse(self, kind: str, x: float, y: float) -> None:
+        """A left-button mouse event (``"mousePressed"``, ``"mouseMoved"``, ``"mouseReleased"``) at CSS pixel
+        ``(x, y)`` of the page, as the person's pointer sends it."""
+        params = {"type": kind, "x": x, "y": y, "button": "left", "clickCount": 1,
+                  "buttons": 0 if kind == "mouseReleased" else 1}
+        self._browser.send("Input.dispatchMouseEvent", params, session=self._session)
+
+    def click(self, x: float, y: float) -> None:
+        self.mouse("mouseMoved", x, y)
+        self.mouse("mousePressed", x, y)
+        self.mouse("mouseReleased", x, y)
+
+    def drag(self, start: tuple[float, float], end: tuple[float, float], steps: int = 8) -> None:
+        self.mouse("mouseMoved", *start)
+        self.mouse("mousePressed", *start)
+        for i in range(1, steps + 1):
+            self.mouse("mouseMoved", start[0] + (end[0] - start[0]) * i / steps, start[1] + (end[1] - start[1]) * i / steps)
+        self.mouse("mouseReleased", *end)
+
     def screenshot(self) -> bytes:
         shot = self._browser.send("Page.captureScreenshot", {"format": "png"}, session=self._session)
         return base64.b64decode(shot["data"])

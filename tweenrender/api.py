@@ -37,6 +37,7 @@ __all__ = [
     "stats", "correspondence", "qcurves", "describe", "sheet", "report", "reel",
     "stats_text", "correspondence_text", "qcurves_text", "frame_count", "png_bytes",
     "method_names", "format_names", "output_kinds", "listing", "output_format", "default_suffix", "check_preview_settings",
+    "edit_scene_text", "save_scene_text", "editing_state", "drawings_scene_text",
     "start_encoder_search", "encoder_search_done",
     "RenderOptions", "MatchSettings", "Scene", "Shape", "Key", "Matching", "DrawnContour",
     "COSTS", "ALIGNS", "EQUAL_COUNTS", "BALANCES", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS",
@@ -263,6 +264,42 @@ def check_preview_settings(method: str | None, size: tuple[int, int] | None,
 
     return (None if method is None else check_method(method), None if size is None else check_size(size),
             None if fps is None else check_fps(fps))
+
+
+# -- editing (the preview's edits) ----------------------------------------------------------------
+
+
+def edit_scene_text(text: str, path: str | os.PathLike[str], ops: object) -> str:
+    """The TOML scene ``text`` (of the file ``path``) with the preview's edit ``ops`` applied (DESIGN, "The
+    preview edits"), comments and layout kept; a :class:`~tweenrender.errors.SceneError` (the loader's
+    one line) when an op is not one or the result does not load."""
+    from .pipeline.scene_editing import edited_scene_text
+
+    return edited_scene_text(text, Path(path), ops)
+
+
+def save_scene_text(path: str | os.PathLike[str], text: str) -> None:
+    """Write a scene's ``text`` to ``path`` atomically (a sibling file moved over it when complete)."""
+    from .pipeline.scene_editing import save_scene_text as save
+
+    save(Path(path), text)
+
+
+def editing_state(scene: Scene, size: tuple[int, int] | None = None, method: str | None = None) -> dict[str, Any]:
+    """Every key's outlines, hints, arcs and timing, and ``to_page`` (scene units to the picture's pixels
+    at ``size``, as drawn with ``method``): what the preview's page edits."""
+    from .pipeline.scene_editing import editing_state as state
+
+    return state(scene, size, method)
+
+
+def drawings_scene_text(svgs: Sequence[str | os.PathLike[str]], folder: str | os.PathLike[str], step: float = 1.0,
+                        ease: str = "linear", hold: float = 0.0, stagger: float = 0.0) -> str:
+    """A ``[[drawing]]`` scene (TOML) of ``svgs`` as the command line morphs them, its file names relative
+    to ``folder``."""
+    from .scenefile.scene_edits import drawings_scene_text as text
+
+    return text([Path(p) for p in svgs], Path(folder), step, ease, hold, stagger)
 
 
 # -- reports ---------------------------------------------------------------------------------------

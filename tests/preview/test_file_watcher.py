@@ -83,3 +83,34 @@ def test_a_save_made_before_the_watch_thread_runs_is_seen(tmp_path: Path, monkey
                   before_start=lambda scene: scene.write_text("second, written in place")) as (_, fake):
         fake.arm.set()
         assert seen.wait(10), "a save made before the watching thread ran was missed"
+
+
+def test_a_folder_removed_and_made_again_is_watched_again(tmp_path: Path) -> None:
+    """As a branch checkout does: the scene's folder goes, comes back, and later saves are still seen."""
+    import shutil
+    import time
+
+    folder = tmp_path / "project"
+    folder.mkdir()
+    scene = folder / "scene.toml"
+    scene.write_text("first")
+    seen = threading.Event()
+    watcher = FileWatcher(seen.set)
+    watcher.watch([scene])
+    watcher.start()
+    try:
+        time.sleep(1.0)  # armed
+        scene.write_text("second")
+        assert seen.wait(5), "a plain save was not seen"
+        shutil.rmtree(folder)
+        time.sleep(1.0)
+        folder.mkdir()
+        scene.write_text("third, in the folder made again")
+        time.sleep(2.0)
+        for text in ("fourth", "fifth, longer than the fourth"):
+            seen.clear()
+            scene.write_text(text)
+            assert seen.wait(5), f"the save {text!r} after the folder came back was not seen"
+            time.sleep(0.5)
+    finally:
+        watcher.stop()

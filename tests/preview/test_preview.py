@@ -9,6 +9,7 @@ from __future__ import annotations
 import io
 import json
 import os
+import re
 import select
 import signal
 import subprocess
@@ -58,6 +59,28 @@ def _replace(path: Path, text: str) -> None:
 class Preview:
     def __init__(self, process: subprocess.Popen[str], url: str) -> None:
         self.process, self.url = process, url
+        self._token: str | None = None
+
+    @property
+    def token(self) -> str:
+        """The token of the run, read from the page as the page's own script reads it."""
+        if self._token is None:
+            page = self.get("/")[1].decode()
+            found = re.search(r'<meta name="tweenrender-token" content="([^"]*)">', page)
+            assert found, page[:300]
+            self._token = found[1]
+        return self._token
+
+    def post(self, path: str, payload: dict[str, Any]) -> tuple[int, bytes]:
+        """A POST of ``payload`` (JSON, the token added) as the page sends it."""
+        body = json.dumps({"token": self.token, **payload}).encode()
+        request = urllib.request.Request(self.url + path.lstrip("/"), data=body, method="POST",
+                                         headers={"Content-Type": "application/json"})
+        try:
+            with urllib.request.urlopen(request, timeout=30) as reply:
+                return reply.status, reply.read()
+        except urllib.error.HTTPError as error:
+            return error.code, error.read()
 
     def get(self, path: str, **headers: str) -> tuple[int, bytes]:
         request = urllib.request.Request(self.url + path.lstrip("/"), headers=headers)
@@ -68,12 +91,12 @@ class Preview:
             return error.code, error.read()
 
     def state(self) -> dict[str, Any]:
-        return json.loads(self.get("/state")[1])
+        return json.loads(self.get(f"/state?token={self.token}")[1])
 
     def wait_state(self, test: Any, timeout: float = 30.0) -> dict[str, Any]:
         deadline, since = time.monotonic() + timeout, -1
         while time.monotonic() < deadline:
-            state = json.loads(self.get(f"/state?since={since}")[1])  # answers within a second
+            state = json.loads(self.get(f"/state?since={since}&token={self.token}")[1])  # within a second
             if test(state):
                 return state
             since = state["version"]
@@ -222,13 +245,11 @@ def test_an_svg_the_scene_reads_is_watched_too(tmp_path: Path) -> None:
 def test_server_answers_loopback_names_only_and_refuses_unknown_methods(box_preview: tuple[Preview, Path]) -> None:
     preview, _ = box_preview
     port = preview.url.rsplit(":", 1)[1].rstrip("/")
-    assert preview.get("/state", Host=f"example.com:{port}")[0] == 403
-    assert preview.get("/state", Host=f"localhost:{port}")[0] == 200
+    assert preview.get(f"/state?token={preview.token}", Host=f"example.com:{port}")[0] == 403
+    assert preview.get(f"/state?token={preview.token}", Host=f"localhost:{port}")[0] == 200
     assert preview.get("/frame/99/0.png")[0] == 404
-    request = urllib.request.Request(preview.url + "method", data=b"lnear", method="POST")
-    with pytest.raises(urllib.error.HTTPError) as refused:
-        urllib.request.urlopen(request, timeout=10)
-    assert refused.value.code == 400
+    status, message = preview.post("/method", {"method": "lnear"})
+    assert status == 400 and b"lnear" in message
     # bound to the loopback address only: the port does not answer on another of this machine's addresses
     listening = Path(f"/proc/{preview.process.pid}/net/tcp").read_text().splitlines()[1:]
     ours = [line.split() for line in listening if line.split()[1].endswith(f":{int(port):04X}")]
@@ -272,3 +293,30 @@ def test_watchfiles_is_imported_by_the_preview_only(tmp_path: Path) -> None:
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, cwd=ROOT,
                           env={**os.environ, "PYTHONPATH": str(ROOT)})
     assert done.stdout.splitlines()[-1] == "result 0 False", done.stderr
+
+
+def test_the_scene_folder_removed_and_made_again_is_still_watched(tmp_path: Path) -> None:
+    """As a branch checkout does: the folder goes and comes back; the next save is drawn."""
+    import shutil
+
+    folder = tmp_path / "project"
+    folder.mkdir()
+    scene = folder / "box.toml"
+    scene.write_text(SCENE.format(fill=_hex(RED)))
+    preview = start_preview(str(scene), cwd=tmp_path)
+    try:
+        preview.wait_state(lambda s: s["take"] is not None and s["take"]["number"] == 1)
+        shutil.rmtree(folder)
+        time.sleep(1.0)
+        folder.mkdir()
+        scene.write_text(SCENE.format(fill=_hex(RED)))
+        first = preview.wait_state(lambda s: s["take"] is not None and s["take"]["number"] >= 2)["take"]["number"]
+        time.sleep(1.0)
+        _replace(scene, SCENE.format(fill=_hex(BLUE)))
+        state = preview.wait_state(lambda s: s["take"]["number"] > first)
+        import imageio.v3 as iio
+
+        picture = iio.imread(preview.get(f"/frame/{state['take']['number']}/0.png")[1], extension=".png")
+        assert tuple(picture[45, 80, :3]) == BLUE
+    finally:
+        stop(preview)

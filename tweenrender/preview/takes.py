@@ -52,6 +52,7 @@ class Previewer:
 
     inputs: Sequence[Path]
     step: float = 1.0
+    timing: dict[str, Any] = field(default_factory=dict)  # drawings' ease, hold and stagger (load_scene's names)
     method: str | None = None
     size: tuple[int, int] | None = None
     fps: float | None = None
@@ -60,6 +61,7 @@ class Previewer:
     error: str | None = None
     take: Take | None = None
     scene_method: str | None = None
+    editing: dict[str, Any] | None = None  # the shown take's keys, hints and page transform (api.editing_state)
     _condition: threading.Condition = field(default_factory=threading.Condition, repr=False)
     _dirty: threading.Event = field(default_factory=threading.Event, repr=False)
     _stop: threading.Event = field(default_factory=threading.Event, repr=False)
@@ -76,7 +78,8 @@ class Previewer:
                 self._condition.wait_for(lambda: self.version > since or self._stop.is_set(), timeout=wait)
             return {"version": self.version, "error": self.error, "method": self.method,
                     "scene_method": self.scene_method, "methods": list(method_names()),
-                    "take": self.take.describe() if self.take else None}
+                    "take": self.take.describe() if self.take else None,
+                    **(self.editing or {"to_page": None, "shapes": [], "easings": {}})}
 
     def frame(self, take: int, index: int) -> bytes | None:
         """Frame ``index`` of take ``take`` as PNG bytes, or None (another take, or not drawn yet)."""
@@ -84,6 +87,13 @@ class Previewer:
         if shown is None or shown.number != take or not 0 <= index < len(shown.frames):
             return None
         return shown.frames[index]
+
+    def use_scene_file(self, path: Path) -> None:
+        """Show the scene file ``path`` from now on (the one the first edit of drawings wrote)."""
+        self.inputs = [path]
+        self.timing = {}
+        if self.on_sources is not None:
+            self.on_sources((path,))
 
     def choose_method(self, name: str | None) -> None:
         """Draw with ``name`` from now on (None: each shape's own); a ValueError for an unknown one."""
@@ -128,10 +138,11 @@ class Previewer:
                 self._publish(error=printable(f"unexpected {type(error).__name__}: {text}"))
 
     def _draw_take(self, changed_at: float) -> None:
-        from ..api import frame_count, frames, load_scene, png_bytes
+        from ..api import editing_state, frame_count, frames, load_scene, png_bytes
 
         inputs = [str(p) for p in self.inputs]
-        scene = load_scene(inputs if len(inputs) > 1 else inputs[0], self.step)
+        timing = self.timing if all(p.lower().endswith(".svg") for p in inputs) else {}
+        scene = load_scene(inputs if len(inputs) > 1 else inputs[0], self.step, **timing)
         if self.on_sources is not None:
             self.on_sources(scene.sources or tuple(self.inputs))
         method = self.method
@@ -148,6 +159,13 @@ class Previewer:
         take.drawn = 1
         take.first_frame_seconds = time.monotonic() - changed_at
         self._publish(take=take, scene_method=scene.method)
+        try:
+            editing = editing_state(scene, self.size, method)
+        except TweenrenderError:
+            editing = None
+        with self._condition:
+            self.editing = editing
+        self._publish()
         for index, picture in enumerate(pictures, start=1):
             if self._dirty.is_set() or self._stop.is_set():
                 return

@@ -2,7 +2,9 @@
 
 ``watchfiles`` (inotify on Linux) watches the folders that hold the files, not the files
 themselves: an editor that saves by writing a new file and renaming it over the old one
-replaces the file's inode, which a watch on the file would lose.
+replaces the file's inode, which a watch on the file would lose. A folder removed and made again
+(a branch checkout) is a new inode that the old watch does not see: every answer of the watch checks
+that each folder is still the one watched, and watches afresh when one is not.
 """
 
 from __future__ import annotations
@@ -60,18 +62,22 @@ class FileWatcher:
             with self._lock:
                 files, baseline = self._files, self._baseline
             self._restart.clear()
-            folders = sorted({os.path.dirname(f) for f in files if os.path.isdir(os.path.dirname(f))})
+            every_folder = sorted({os.path.dirname(f) for f in files})
+            folders = [folder for folder in every_folder if os.path.isdir(folder)]
             if not folders:
                 self._restart.wait(_RETRY_SECONDS)
                 continue
             # a save made before the watch is armed has no event: once armed (its first answer, an event
             # or a timeout), the files are compared with what they were when they were given to watch
             seen: dict[str, tuple[int, int, int] | None] | None = baseline
+            identities = _identities(every_folder)
             try:
                 for changes in watchfiles.watch(*folders, watch_filter=lambda _change, path: path in files,
                                                 recursive=False, step=_QUIET_MS, debounce=400,
                                                 rust_timeout=_ARMED_CHECK_MS, yield_on_timeout=True,
                                                 stop_event=self._restart, raise_interrupt=False):
+                    if _identities(every_folder) != identities:  # a folder went or came back: watch afresh
+                        break
                     missed = seen is not None and _signatures(files) != seen
                     seen = None
                     if (changes or missed) and not self._stop.is_set():
@@ -81,6 +87,18 @@ class FileWatcher:
                         self._on_change()
             except (OSError, RuntimeError):  # a folder went away while watched: try again shortly
                 self._restart.wait(_RETRY_SECONDS)
+
+
+def _identities(folders: Iterable[str]) -> list[tuple[int, int] | None]:
+    """Each folder's (device, inode), or None where it is missing."""
+    out: list[tuple[int, int] | None] = []
+    for folder in folders:
+        try:
+            found = os.stat(folder)
+            out.append((found.st_dev, found.st_ino))
+        except OSError:
+            out.append(None)
+    return out
 
 
 def _signatures(files: Iterable[str]) -> dict[str, tuple[int, int, int] | None]:

@@ -6,11 +6,13 @@ the place where a new piece belongs, a piece swept over by a shape on its way. S
 (with the contours it holds in its key, which come and go with it as one group) is placed by a search
 over a grid of eased ``t``: for each candidate *point* — the partner-side anchor first, then the
 deepest point inside the contour, its centre of area, and the point inside it farthest from where the
-other contours start — the earliest *start* (the latest *stop*, for
+other contours start (for an open stroke: its middle vertex, its centre of length, its ends) — the earliest *start* (the latest *stop*, for
 one that shrinks) from which, scaled about that point with its area linear in ``t`` over the rest of
 the segment, it touches no other contour of the element at any grid time and keeps the nesting it
 has in its key. The first candidate point with the earliest start wins; where none is clear before
 :data:`LATEST`, the contour keeps its anchor and the whole segment (and the measures say it tangles).
+Groups are placed largest first, each clear of those placed before it; where one is left without a
+clear start, the stuck ones are placed first instead, if that leaves fewer stuck.
 """
 
 from __future__ import annotations
@@ -29,7 +31,7 @@ __all__ = ["GRID", "LATEST", "Growth", "place", "deepest_point", "farthest_point
 
 Array = NDArray[np.float64]
 
-GRID = np.linspace(0.0, 1.0, 51)
+GRID = np.linspace(0.0, 1.0, 26)
 """The eased t at which a placement is checked against the other contours."""
 
 STARTS = np.round(np.arange(0.0, 0.86, 0.05), 2)
@@ -115,30 +117,46 @@ def _area(points: Array) -> float:
     return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
 
 
-def _clear(members: list[Array], member_closed: list[bool], others: list[Array], other_closed: list[bool],
+@dataclass(frozen=True, slots=True)
+class _Around:
+    """The other contours a group must keep clear of, at every :data:`GRID` time in the direction of
+    growth: ``frames[j] (G, M_j, 2)``, which are ``closed``, and their boxes ``lo``, ``hi`` ``(G, O, 2)``."""
+
+    frames: list[Array]
+    closed: list[bool]
+    lo: Array
+    hi: Array
+
+    @staticmethod
+    def of(frames: list[Array], closed: list[bool]) -> "_Around":
+        if not frames:
+            empty = np.zeros((len(GRID), 0, 2))
+            return _Around(frames, closed, empty, empty)
+        return _Around(frames, closed, np.stack([f.min(axis=1) for f in frames], axis=1),
+                       np.stack([f.max(axis=1) for f in frames], axis=1))
+
+
+def _clear(members: list[Array], member_closed: list[bool], around: _Around, k: int, meets: NDArray[np.bool_],
            relations: NDArray[np.int8]) -> bool:
-    """Whether contours ``members`` touch none of ``others`` and keep ``relations`` ``(M, O)`` with them
-    (1 member inside other, -1 other inside member, 0 neither; closed pairs only)."""
-    boxes = [(m.min(axis=0), m.max(axis=0)) for m in members]
-    near: list[int] = []
-    for o, other in enumerate(others):
-        lo, hi = other.min(axis=0), other.max(axis=0)
-        meets = [bool(np.all(b_lo <= hi) and np.all(lo <= b_hi)) for b_lo, b_hi in boxes]
-        if not any(meets):
-            if np.any(relations[:, o] != 0):
-                return False
-            continue
-        near.append(o)
+    """Whether contours ``members`` touch none of the contours ``around`` at grid time ``k`` and keep
+    ``relations`` ``(M, O)`` with them (1 member inside other, -1 other inside member, 0 neither;
+    closed pairs only); ``meets (M, O)``: whose boxes meet."""
+    near = meets.any(axis=0)
+    if np.any(relations[:, ~near] != 0):
+        return False
+    others = np.flatnonzero(near).tolist()
+    for o in others:
+        other = around.frames[o][k]
         for m, member in enumerate(members):
-            if member_closed[m] and other_closed[o]:
-                now = int(_relation(member[None], other[None])[0]) if meets[m] else 0
+            if member_closed[m] and around.closed[o]:
+                now = int(_relation(member[None], other[None])[0]) if meets[m, o] else 0
                 if now != relations[m, o]:
                     return False
-    if not near:
+    if not others:
         return True
     count = len(members)
-    touching = proper_crossings(members + [others[o] for o in near],
-                                list(member_closed) + [other_closed[o] for o in near], touching=True)
+    touching = proper_crossings(members + [around.frames[o][k] for o in others],
+                                list(member_closed) + [around.closed[o] for o in others], touching=True)
     return not any(c < count <= d for c, d in touching)
 
 
@@ -147,19 +165,35 @@ def place(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool]
     """Growths for contours without a partner, ``shapes[i] (L_i, 2)`` as their key draws them, that
     keep clear of the element's moving contours ``others[j] (G, M_j, 2)`` (at :data:`GRID`) and of one
     another: one :class:`Growth` per shape (``anchors[i] (2,)``: where it would come from unplaced)."""
+    groups = _groups(shapes, closed, grows)
+    placed, stuck = _place_in(groups, shapes, closed, grows, anchors, others, others_closed)
+    if stuck:  # a group placed later had no room left: place the stuck ones first, keep the better
+        again, still = _place_in([g for g in groups if g[0] in stuck] + [g for g in groups if g[0] not in stuck],
+                                 shapes, closed, grows, anchors, others, others_closed)
+        if len(still) < len(stuck):
+            placed = again
+    return placed
+
+
+def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool],
+              anchors: Sequence[Array], others: Sequence[Array], others_closed: Sequence[bool]
+              ) -> tuple[list[Growth], set[int]]:
+    """:func:`place` with the groups placed in the order given: the growths, and the roots of the groups
+    that found no clear start (left at their anchor over the whole segment)."""
     placed: list[Growth | None] = [None] * len(shapes)
+    stuck: set[int] = set()
     done_frames: list[Array] = []  # (G, L, 2) of the groups placed so far
     done_closed: list[bool] = []
-    for group in _groups(shapes, closed, grows):
+    for group in groups:
         root = group[0]
         forward = grows[root]
         members = [np.asarray(shapes[m], dtype=np.float64) for m in group]
         member_closed = [bool(closed[m]) and len(shapes[m]) >= 3 for m in group]
         # search in the direction of growth: a shrinking group's times run backwards
         seen = [f if forward else f[::-1] for f in list(others) + done_frames]
-        seen_closed = [bool(c) for c in list(others_closed) + done_closed]
+        around = _Around.of(seen, [bool(c) for c in list(others_closed) + done_closed])
         final = np.array([[int(_relation(m[None], o[-1][None])[0]) if mc and oc else 0
-                           for o, oc in zip(seen, seen_closed)] for m, mc in zip(members, member_closed)],
+                           for o, oc in zip(seen, around.closed)] for m, mc in zip(members, member_closed)],
                          dtype=np.int8).reshape(len(members), len(seen))
         candidates = [np.asarray(anchors[root], dtype=np.float64)]
         if member_closed[0]:
@@ -167,14 +201,19 @@ def place(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool]
             first = [o[0] for o in seen if len(o[0])]
             if first:
                 candidates.append(farthest_point(members[0], np.concatenate(first)))
+        elif len(members[0]):  # a stroke: its middle, its centre of length, its ends
+            stroke = members[0]
+            candidates += [stroke[len(stroke) // 2], centre_of_area([stroke], [False]), stroke[0], stroke[-1]]
         best: tuple[float, Array] | None = None
         for point in candidates:
             limit = LATEST if best is None else best[0] - 1e-9
-            start = _earliest(point, members, member_closed, seen, seen_closed, final, limit)
+            start = _earliest(point, members, member_closed, around, final, limit)
             if start is not None and (best is None or start < best[0]):
                 best = (start, point)
             if best is not None and best[0] == 0.0:
                 break
+        if best is None:
+            stuck.add(root)
         start, point = best if best is not None else (0.0, candidates[0])
         growth = Growth(point, forward, start, 1.0) if forward else Growth(point, False, 0.0, 1.0 - start)
         scale = growth_scale(growth, GRID)[:, None, None]
@@ -182,23 +221,26 @@ def place(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool]
             placed[m] = growth
             done_frames.append(point + scale * (member - point))
             done_closed.append(bool(closed[m]) and len(member) >= 3)
-    return placed  # type: ignore[return-value]
+    return placed, stuck  # type: ignore[return-value]
 
 
-def _earliest(point: Array, members: list[Array], member_closed: list[bool], seen: list[Array],
-              seen_closed: list[bool], final: NDArray[np.int8], limit: float) -> float | None:
+def _earliest(point: Array, members: list[Array], member_closed: list[bool], around: _Around,
+              final: NDArray[np.int8], limit: float) -> float | None:
     """The earliest of :data:`STARTS` (up to ``limit``) from which ``members`` scaled about ``point``
-    stay clear of ``seen`` (``(G, M, 2)`` each, in the direction of growth), or None. The grid time at
-    which a start failed is tried first for the next one (where one start meets a contour, the next
-    mostly does too)."""
+    stay clear of the contours ``around``, or None. The grid time at which a start failed is tried
+    first for the next one (where one start meets a contour, the next mostly does too)."""
+    lo = np.array([m.min(axis=0) for m in members])  # (M, 2): a scaled contour's box is its box scaled
+    hi = np.array([m.max(axis=0) for m in members])
     failed: list[int] = []
     for start in STARTS[STARTS <= limit + 1e-12].tolist():
         times = np.flatnonzero(GRID > start).tolist()
         order = [k for k in failed if k in times] + times
         for k in order:
             s = np.sqrt((GRID[k] - start) / (1.0 - start))
-            if not _clear([point + s * (m - point) for m in members], member_closed, [o[k] for o in seen],
-                          seen_closed, final):
+            now_lo, now_hi = point + s * (lo - point), point + s * (hi - point)
+            meets = (np.all(now_lo[:, None] <= around.hi[k][None], axis=2)
+                     & np.all(around.lo[k][None] <= now_hi[:, None], axis=2))
+            if not _clear([point + s * (m - point) for m in members], member_closed, around, k, meets, final):
                 failed = [k]
                 break
         else:

@@ -57,6 +57,7 @@ CLUSTER = tuple(_CLUSTER_TESTS + name for name in ("test_a_bad_address_is_refuse
                                                    "test_a_port_where_nothing_listens_is_one_line",
                                                    "test_an_http_server_is_not_taken_for_a_scheduler"))
 DRAWING = ("tests/scenefile/test_drawing_rules.py", "tests/scenefile/test_hostile_inputs.py")
+STEERING = ("tests/core/test_steering.py", "tests/scenefile/test_steering_fields.py")
 
 MUTANTS = [
     # -- core: paths ---------------------------------------------------------------------------------
@@ -403,6 +404,25 @@ MUTANTS = [
     Mutant("ffmpeg search: not waited for on the way out", "tweenrender/cli/render.py",
            "        encoder_search_done()\n    return 0", "        pass\n    return 0",
            ("tests/encode/test_sinks.py",)),
+    # -- steering: turn direction, arcs, breakdowns, init ---------------------------------------------
+    Mutant("steering: cw turns the short way", "tweenrender/core/timing/steering.py",
+           "base = phi - TAU if phi > 0 else phi", "base = phi", STEERING),
+    Mutant("steering: whole turns the other way", "tweenrender/core/timing/steering.py",
+           "return base + TAU * turns", "return base - TAU * turns", STEERING),
+    Mutant("steering: arc weight 2t(1 - t)", "tweenrender/core/timing/steering.py",
+           "weight = (4.0 * t * (1.0 - t))", "weight = (2.0 * t * (1.0 - t))", STEERING),
+    Mutant("steering: arcs shared by vertex count", "tweenrender/core/timing/steering.py",
+           "share = (s - s_a) / (s_b - s_a) if s_b > s_a else 0.0",
+           "share = (v - a) / (b - a) if b > a else 0.0", STEERING),
+    Mutant("steering: the halves do not share the turn", "tweenrender/core/timing/timeline.py",
+           "delta = whole_turns_to(target, h0, h1)", "delta = 0.0", STEERING),
+    Mutant("steering: a breakdown at its time, not its favour", "tweenrender/core/timing/timeline.py",
+           "f = np.array([float(key.breakdown)])",
+           "f = np.array([(key.time - keys[k - 1].time) / (keys[end].time - keys[k - 1].time)])", STEERING),
+    Mutant("init: hold left out", "tweenrender/scenefile/scene_writer.py",
+           'lines.append(f"hold = {_number(hold)}")', "pass", ("tests/cli/test_init.py",)),
+    Mutant("init: replaces an existing scene", "tweenrender/encode/atomic.py",
+           "        os.link(temporary, target)", "        os.replace(temporary, target)", ("tests/cli/test_init.py",)),
 ]
 
 

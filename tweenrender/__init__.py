@@ -17,13 +17,13 @@ from __future__ import annotations
 
 from .api import (
     Key, Matching, MatchSettings, RenderOptions, Scene, Shape, DrawnContour, __version__, contours, correspondence,
-    describe, frame, frames, interpolate, load_scene, outlines, parse_scene, qcurves, reel, report, sheet, stats,
+    describe, frame, frames, init_scene, interpolate, load_scene, outlines, parse_scene, qcurves, reel, report, sheet, stats,
     write,
 )
 from .errors import EncodeError, GeometryError, OptionError, RenderError, SceneError, TweenrenderError
 
 __all__ = [
-    "load_scene", "frame", "frames", "outlines", "contours", "write",
+    "load_scene", "init_scene", "frame", "frames", "outlines", "contours", "write",
     "stats", "correspondence", "qcurves", "describe", "sheet", "report", "reel",
     "RenderOptions", "MatchSettings",
     "parse_scene", "interpolate", "Scene", "Shape", "Key", "Matching", "DrawnContour",

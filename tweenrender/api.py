@@ -33,7 +33,7 @@ from .model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color, DrawnContour, K
 from .plan.options import DEFAULT_MAX_FRAMES, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, Progress, RenderOptions
 
 __all__ = [
-    "load_scene", "parse_scene", "frame", "frames", "outlines", "contours", "write", "interpolate",
+    "load_scene", "init_scene", "parse_scene", "frame", "frames", "outlines", "contours", "write", "interpolate",
     "stats", "correspondence", "qcurves", "describe", "sheet", "report", "reel",
     "stats_text", "correspondence_text", "qcurves_text", "frame_count", "png_bytes",
     "method_names", "format_names", "output_kinds", "listing", "output_format", "default_suffix", "check_preview_settings",
@@ -56,6 +56,16 @@ def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], 
     from .pipeline.library import load_scene as load
 
     return load(path, step, ease, hold, stagger)
+
+
+def init_scene(drawings: Sequence[str | os.PathLike[str]], step: float = 1.0, ease: str = "linear",
+               hold: float = 0.0, stagger: float = 0.0, path: str | os.PathLike[str] | None = None) -> str:
+    """The TOML text of a ``[[drawing]]`` scene that renders exactly as ``load_scene(drawings, step, ease,
+    hold, stagger)`` does (what ``tweenrender init`` writes), file names relative to ``path``'s folder;
+    with ``path`` it is also written there, never replacing a file (an :class:`OptionError`)."""
+    from .pipeline.library import init_scene as init
+
+    return init(drawings, step, ease, hold, stagger, path)
 
 
 def parse_scene(text: str, path: str | os.PathLike[str], fmt: str = "toml") -> Scene:

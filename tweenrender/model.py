@@ -14,8 +14,8 @@ from numpy.typing import NDArray
 
 __all__ = [
     "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "COSTS", "ALIGNS", "EQUAL_COUNTS",
-    "FILL_RULES", "CAPS", "JOINS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint", "Shape",
-    "Matching", "Scene", "DrawnContour", "Gradient", "frozen_points",
+    "FILL_RULES", "CAPS", "JOINS", "TURNS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint",
+    "Shape", "Matching", "Scene", "DrawnContour", "Gradient", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
@@ -33,6 +33,8 @@ EQUAL_COUNTS: tuple[str, ...] = ("drawn", "match")
 FILL_RULES: tuple[str, ...] = ("nonzero", "evenodd")
 CAPS: tuple[str, ...] = ("butt", "round", "square")
 JOINS: tuple[str, ...] = ("miter", "round", "bevel")
+TURNS: tuple[str, ...] = ("cw", "ccw", "shortest")
+"""A key's ``turn``: the direction its segment's rigid frame turns (maths §5.13)."""
 UNMATCHED: tuple[str, ...] = ("grow", "fade")
 """What a contour or element without a partner in the next key does: grow from (shrink to) a point, or fade."""
 
@@ -123,6 +125,12 @@ class Key:
     from ``ease`` when the timeline is built). ``hints`` are this key's shape
     hints; ``delay`` the seconds after ``time`` at which the segment starting here starts to
     move (a stagger or a hold; it still ends on time).
+    Steering of the segment starting here (maths §5.13–5.15): ``turn`` (``"cw"``, ``"ccw"``,
+    ``"shortest"``; ``None``: not set, the shortest) and ``turns`` (extra whole turns) choose its rigid
+    frame's total turn; ``arcs`` are ``(letter, (x, y))``: the vertex hinted ``letter`` passes through
+    ``(x, y)`` at the segment's middle. A *breakdown* key has ``breakdown`` (its favour ``f``); its
+    contours are the in-between at ``f`` of the segment it splits, made when the scene is read (and
+    again by the timeline under the correspondence in force).
     """
 
     time: float
@@ -140,6 +148,10 @@ class Key:
     easing: object | None = None
     hints: tuple[Hint, ...] = ()
     delay: float = 0.0
+    turn: str | None = None
+    turns: int = 0
+    arcs: tuple[tuple[str, tuple[float, float]], ...] = ()
+    breakdown: float | None = None
 
     @property
     def points(self) -> Points:

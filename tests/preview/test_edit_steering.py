@@ -52,18 +52,19 @@ def test_turn_breakdown_and_arc_by_pointing(tmp_path: Path) -> None:
     try:
         with live_page(preview.url) as page:
             state = _ready(preview, page)
-            page.evaluate("document.getElementById('turn').click()")
-            page.wait_for("Number(document.body.dataset.edited || 0) >= 1")
-            assert tomllib.loads(scene.read_text())["shape"][0]["key"][0]["turn"] == "cw"
-            # the arc of hint a: drag its middle square to a chosen point
+            # the arc of hint a first (a turn moves the hinted point's path, and the view may follow it):
+            # drag its middle square to a chosen point
             keys = state["shapes"][0]["keys"]
             start, end = keys[0]["hints"]["a"], keys[1]["hints"]["a"]
             middle = [(start[0] + end[0]) / 2, (start[1] + end[1]) / 2]
             target = [middle[0], middle[1] + 1.0]
             page.drag(_where(page, state, middle), _where(page, state, target))
-            page.wait_for("Number(document.body.dataset.edited || 0) >= 2")
+            page.wait_for("Number(document.body.dataset.edited || 0) >= 1")
             arc = tomllib.loads(scene.read_text())["shape"][0]["key"][0]["arcs"]["a"]
             assert abs(arc[0] - target[0]) * state["to_page"][0] <= 1 and abs(arc[1] - target[1]) * state["to_page"][0] <= 1
+            page.evaluate("document.getElementById('turn').click()")
+            page.wait_for("Number(document.body.dataset.edited || 0) >= 2")
+            assert tomllib.loads(scene.read_text())["shape"][0]["key"][0]["turn"] == "cw"
             # a breakdown at the scrubber's time (frame 24 of 24 fps: 1 s), its favour the slider's
             page.evaluate("(() => { const s = document.getElementById('scrub'); s.value = '24'; "
                           "s.dispatchEvent(new Event('input')); })()")

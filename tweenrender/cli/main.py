@@ -19,7 +19,7 @@ from ..errors import OptionError, TweenrenderError, UsageError, printable
 
 __all__ = ["COMMANDS", "main", "build_parser"]
 
-COMMANDS = ("render", "check", "stats", "correspond", "qcurves", "sheet", "reel", "report", "preview")
+COMMANDS = ("render", "init", "check", "stats", "correspond", "qcurves", "sheet", "reel", "report", "preview")
 """The commands, in the order ``--help`` lists them; each is the module of that name beside this one."""
 
 

@@ -16,9 +16,9 @@ import uuid
 from pathlib import Path
 from typing import Iterator
 
-from ..errors import EncodeError
+from ..errors import EncodeError, OptionError
 
-__all__ = ["sibling", "prepare_folder", "commit_file", "commit_folder", "discard", "sweep", "replacing",
+__all__ = ["create_new", "sibling", "prepare_folder", "commit_file", "commit_folder", "discard", "sweep", "replacing",
            "os_reason", "alive"]
 
 
@@ -171,3 +171,24 @@ def replacing(target: Path, suffix: str = "", what: str = "the output") -> Itera
         discard(temporary)
         raise
     commit_file(temporary, target)
+
+
+def create_new(target: Path, text: str, what: str = "the file") -> None:
+    """Write ``text`` to a new file ``target``, atomically; never replace one: an existing ``target`` (or one
+    made meanwhile) is an :class:`OptionError` and stays as it was."""
+    if target.exists() or target.is_symlink():
+        raise OptionError(f"{target}: already exists; it is never replaced (give another name)")
+    if not target.parent.is_dir():
+        raise OptionError(f"{target}: cannot write {what} (no such folder {target.parent})")
+    temporary = sibling(target)
+    try:
+        temporary.write_text(text, encoding="utf-8")
+        _fsync(temporary)
+        os.link(temporary, target)  # fails, rather than replaces, should the name be taken since the check
+    except FileExistsError:
+        raise OptionError(f"{target}: already exists; it is never replaced (give another name)") from None
+    except OSError as error:
+        raise OptionError(f"{target}: cannot write {what} ({os_reason(error)})") from None
+    finally:
+        discard(temporary)
+    _fsync(target.parent, directory=True)

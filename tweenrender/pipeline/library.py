@@ -25,7 +25,7 @@ from typing import Any, Iterator, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ..errors import OptionError
+from ..errors import OptionError, printable
 from ..model import Color, DrawnContour, Points, Scene
 from ..plan.job import RenderJob, pick_frames, total_frames
 from .frames import Frames
@@ -63,6 +63,30 @@ def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], 
         raise OptionError(f"expected seconds between drawings as a number, found {step!r}", "step")
     _check_timing(ease, hold, stagger)
     return load([Path(p) for p in path], float(step), ease, float(hold), float(stagger))
+
+
+def init_scene(drawings: Sequence[str | os.PathLike[str]], step: float = 1.0, ease: str = "linear",
+               hold: float = 0.0, stagger: float = 0.0, path: str | os.PathLike[str] | None = None) -> str:
+    """The TOML text of the ``[[drawing]]`` scene that renders as ``drawings`` with this timing do (see
+    :func:`load_scene`), its file names relative to ``path``'s folder (the current one without ``path``);
+    with ``path``, also written there as a new file (never replacing one)."""
+    from ..encode.atomic import create_new
+    from ..encode.targets import check_name_fits
+    from ..scenefile.scene_writer import drawings_toml
+
+    if isinstance(drawings, (str, bytes, os.PathLike)) or not isinstance(drawings, Sequence) or not drawings:
+        raise OptionError(f"expected a list of SVG drawings, found {drawings!r}"[:200], "drawings")
+    target = None if path is None else Path(path)
+    if target is not None:
+        if target.suffix.lower() != ".toml":
+            raise OptionError(f"{printable(str(target))}: expected a scene file name ending in .toml")
+        check_name_fits(target)
+    load_scene(drawings, step, ease, hold, stagger)  # refused as the command line would refuse it
+    text = drawings_toml([Path(p) for p in drawings], target.parent if target is not None else Path.cwd(),
+                         float(step), ease, float(hold), float(stagger))
+    if target is not None:
+        create_new(target, text, "the scene")
+    return text
 
 
 def _check_timing(ease: object, hold: object, stagger: object) -> None:
@@ -229,6 +253,8 @@ def render_job(scene: Scene, options: RenderOptions) -> RenderJob:
         panels = tuple(options.compare)
     else:
         panels = (options.method,)
+        if options.method == "linear":
+            _refuse_turns(scene)
     rate = options.fps or scene.fps
     picked = pick_frames(options.frames, total_frames(scene, rate))
     return _job(scene, None, options.size, options.background, fps=rate, panels=panels,
@@ -255,6 +281,17 @@ def output_format(target: Path, fmt: str | None = None) -> str:
 
 
 # -- helpers -------------------------------------------------------------------------------------
+
+
+def _refuse_turns(scene: Scene) -> None:
+    """Straight paths have no rigid frame: a scene whose keys choose a turn is not drawn by ``linear`` alone
+    (a comparison's ``linear`` panel goes straight)."""
+    for shape in scene.shapes:
+        for k, key in enumerate(shape.keys):
+            if key.turn is not None or key.turns:
+                field = "turn" if key.turn is not None else "turns"
+                raise OptionError(f'"linear" has no rigid frame to turn, but shape {shape.name!r} key {k} '
+                                  f"sets {field}; choose rigid, nonlinear or another method", "method")
 
 
 def _frames_for(scene: Scene, method: str | None, size: tuple[int, int] | None,

@@ -57,6 +57,14 @@ def _key(key: Key, several: bool) -> dict[str, Any]:
         out["hints"] = {h.letter: key.contours[h.contour].points[h.vertex].tolist() for h in key.hints}
     if key.delay:
         out["delay"] = key.delay
+    if key.turn is not None:
+        out["turn"] = key.turn
+    if key.turns:
+        out["turns"] = key.turns
+    if key.arcs:
+        out["arcs"] = {letter: list(point) for letter, point in key.arcs}
+    if key.breakdown is not None:
+        out["breakdown"] = key.breakdown
     out.update(_paint(key.paint))
     if key.hidden:
         out["hidden"] = True

@@ -36,7 +36,9 @@ def metric_panels(scene: Scene, methods: Sequence[str]) -> list[MPanel]:
         segment, pair = entry.segment, entry.pair
         series, crossing = {}, {}
         for method in methods:
-            drawn = None if entry.contour is None else pair_paths(segment, SWEEP, method)[entry.contour]
+            steered = bool(segment.spin or segment.arcs)
+            drawn = None if entry.contour is None and not steered else \
+                pair_paths(segment, SWEEP, method)[entry.contour or 0]
             found = curves(pair.k0, pair.k1, method, SWEEP, segment.joints, drawn)
             series[method] = {"perimeter_ratio": found.perimeter_ratio, "area_ratio": found.area_ratio,
                               "edge_error": found.edge_error, "angle_error": found.angle_error}

@@ -146,10 +146,12 @@ def _pops(scene: Scene, tracks: Sequence[Track], view: tuple[float, float, float
 
 
 def _as_drawn(entry: Entry, method: str) -> Callable[[Any], Any] | None:
-    """The contour's inbetweens as drawn, when its shape has other contours moving with it."""
-    if entry.contour is None:
-        return None
-    segment, index = entry.segment, entry.contour
+    """The contour's inbetweens as drawn, when its shape has other contours moving with it or its segment is
+    steered (a turn, arcs)."""
+    segment = entry.segment
+    if entry.contour is None and not (segment.spin or segment.arcs):
+        return None  # the method's own paths, as they are drawn
+    index = entry.contour or 0
     return lambda t: pair_paths(segment, t, method)[index]
 
 

@@ -21,10 +21,10 @@ from ..core.correspondence.hints import (SNAP_REACH, HintError, check_links, for
                           snap_point)
 from ..core.timing.spacing import SpacingError, spacing_chart
 from ..errors import SceneError
-from ..model import Contour, Hint, Key
+from ..model import TURNS, Contour, Hint, Key
 
-__all__ = ["read_easing", "read_timing", "read_hints", "pinned", "check_hints", "read_stagger", "check_stagger",
-           "check_shape_stagger"]
+__all__ = ["read_easing", "read_timing", "read_hints", "read_steering", "check_steering", "pinned", "check_hints",
+           "read_stagger", "check_stagger", "check_shape_stagger"]
 
 Fail = Callable[[str, str], SceneError]
 _LETTER = re.compile(r"[a-z]")
@@ -114,11 +114,17 @@ def pinned(contours: Sequence[Contour], hints: dict[str, tuple[float, float]], w
 
 
 def check_hints(keys: Sequence[Key], where_of: Callable[[int], str], fail: Fail) -> None:
-    """Every letter on a key is on the key before or after it, and each segment's letters can all be
-    honoured (:func:`..core.hints.check_links`). ``where_of(k)`` is key k's path."""
+    """Every letter on a key is on the key before or after it (past breakdown keys, which are made from
+    the segment they split, hints included), and each segment's letters can all be honoured
+    (:func:`..core.hints.check_links`). ``where_of(k)`` is key k's path."""
+    def drawn(q: int) -> bool:
+        return keys[q].breakdown is None or bool(keys[q].contours)
+
     for k, key in enumerate(keys):
         for hint in key.hints:
-            near = [keys[q] for q in (k - 1, k + 1) if 0 <= q < len(keys)]
+            before = next((keys[q] for q in range(k - 1, -1, -1) if drawn(q)), None)
+            after = next((keys[q] for q in range(k + 1, len(keys)) if drawn(q)), None)
+            near = [other for other in (before, after) if other is not None]
             if not any(hint.letter in {h.letter for h in other.hints} for other in near):
                 raise fail(f"{where_of(k)}.hints.{hint.letter}",
                            f"expected hint {hint.letter} on the key before or after too, found it on neither")
@@ -134,11 +140,11 @@ def check_hints(keys: Sequence[Key], where_of: Callable[[int], str], fail: Fail)
             raise fail(f"{where_of(k)}.hints.{error.letters[-1]}", error.message) from None
 
 
-def read_stagger(value: Any, where: str, fail: Fail) -> float:
-    """``stagger``: seconds, from 0."""
+def read_stagger(value: Any, where: str, fail: Fail, what: str = "a stagger") -> float:
+    """``stagger`` (or a drawing's ``hold``, ``what``): seconds, from 0."""
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(float(value)) \
             or not 0.0 <= float(value) <= 1e6:
-        raise fail(where, f"expected a stagger in seconds from 0, found {value!r}"[:200])
+        raise fail(where, f"expected {what} in seconds from 0, found {value!r}"[:200])
     return float(value)
 
 
@@ -166,3 +172,62 @@ def check_shape_stagger(keys: Sequence[Key], stagger: float, where: str, where_o
             check_stagger(stagger, count, before.time + before.delay, after.time, where, fail)
         except SceneError as error:
             raise fail(where, f"{error.message} (the segment from {where_of(k - 1)})") from None
+
+
+def read_steering(table: dict[str, Any], where: str, fail: Fail, limit: float) -> dict[str, Any]:
+    """A key's ``turn``, ``turns``, ``arcs`` and ``breakdown`` (maths §5.13–5.15), as :class:`Key` fields."""
+    out: dict[str, Any] = {}
+    if "turn" in table:
+        if table["turn"] not in TURNS:
+            raise fail(f"{where}.turn", f'expected "cw", "ccw" or "shortest", found {table["turn"]!r}'[:200])
+        out["turn"] = table["turn"]
+    if "turns" in table:
+        value = table["turns"]
+        if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= 1000:
+            raise fail(f"{where}.turns",
+                       f"expected a whole number of extra turns from 0 to 1000, found {value!r}"[:200])
+        out["turns"] = int(value)
+    if "arcs" in table:
+        if not isinstance(table["arcs"], dict) or not table["arcs"]:
+            raise fail(f"{where}.arcs", "expected a table of hint letters to the [x, y] point each passes through "
+                                        "halfway, e.g. { a = [0, 1] }")
+        points = read_hints(table["arcs"], f"{where}.arcs", fail, limit)
+        out["arcs"] = tuple(sorted(points.items()))
+    if "breakdown" in table:
+        value = table["breakdown"]
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(float(value)) \
+                or not -10.0 <= float(value) <= 10.0:
+            raise fail(f"{where}.breakdown", f"expected a favour from -10 to 10 (0 the key before, 1 the key "
+                                             f"after), found {value!r}"[:200])
+        out["breakdown"] = float(value)
+    return out
+
+
+def check_steering(keys: Sequence[Key], method: str, where_of: Callable[[int], str], fail: Fail) -> None:
+    """A shape's steering fields make sense where they are: a breakdown between two keys, turns and arcs on
+    a key that starts a segment, arcs only on letters both ends of that segment carry, no turn under
+    ``linear`` (straight paths have no rigid frame). ``where_of(k)`` is key k's path."""
+    for k, key in enumerate(keys):
+        here = where_of(k)
+        if key.breakdown is not None and (k == 0 or k == len(keys) - 1):
+            raise fail(f"{here}.breakdown", "expected a key before and a key after a breakdown, found it "
+                                            f"{'first' if k == 0 else 'last'}")
+        steered = [name for name, on in (("turn", key.turn is not None), ("turns", key.turns > 0),
+                                         ("arcs", bool(key.arcs))) if on]
+        if steered and k == len(keys) - 1:
+            raise fail(f"{here}.{steered[0]}", f"expected {steered[0]} on a key that starts a segment, found it "
+                                               "on the last key")
+        for name in steered[:2]:
+            if name != "arcs" and method == "linear":
+                raise fail(f"{here}.{name}", f'expected no {name} under method "linear" (straight paths have no '
+                                             'rigid frame to turn); choose rigid, nonlinear or another method')
+        if key.arcs:
+            first = max(q for q in range(k + 1) if keys[q].breakdown is None)
+            last = next(q for q in range(k + 1, len(keys)) if keys[q].breakdown is None)
+            carried = {h.letter for h in keys[first].hints} & {h.letter for h in keys[last].hints}
+            either = {h.letter for h in keys[first].hints} | {h.letter for h in keys[last].hints}
+            for letter, _ in key.arcs:
+                if letter not in carried:
+                    found = "one" if letter in either else "neither"
+                    raise fail(f"{here}.arcs.{letter}", f"expected hint {letter} on both keys of the segment, "
+                                                        f"found it on {found}")

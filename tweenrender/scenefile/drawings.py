@@ -28,7 +28,7 @@ from ..model import Contour, Hint, Key, Shape, frozen_points
 from .controls import check_hints, check_stagger, pinned
 from .svg import Drawing, Element, read_drawing
 
-__all__ = ["DrawingKey", "read_drawings", "drawing_shapes"]
+__all__ = ["DrawingKey", "read_drawings", "drawing_shapes", "with_breakdowns"]
 
 # Cost weights of pairing two elements: centre distance (in view diagonals), size ratio, colour
 # (OKLab distance). Where an element sits is the strongest cue, then its colour.
@@ -54,6 +54,9 @@ class DrawingKey:
     hints: dict[str, tuple[float, float]] = field(default_factory=dict)
     stagger: float = 0.0
     hold: float = 0.0
+    turn: str | None = None  # the turn of the segment starting here (maths §5.13)
+    turns: int = 0
+    arcs: dict[str, tuple[float, float]] = field(default_factory=dict)  # in the SVG's user units
 
 
 def read_drawings(keys: Sequence[DrawingKey]) -> tuple[list[Drawing], tuple[float, float, float, float]]:
@@ -79,6 +82,7 @@ def drawing_shapes(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], unma
     box = drawings[0].box
     diagonal = float(np.hypot(box[2] - box[0], box[3] - box[1])) or 1.0
     drawings, hints = _pinned_drawings(drawings, keys, fail)
+    arcs = [_world(drawing, key.arcs) for drawing, key in zip(drawings, keys)]
     chains: list[list[tuple[int, int]]] = [[(0, e)] for e in range(len(drawings[0].elements))]
     last_of = {e: e for e in range(len(drawings[0].elements))}  # element of the latest drawing → its chain
     order = list(range(len(chains)))
@@ -100,7 +104,7 @@ def drawing_shapes(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], unma
     order = _settled(order, chains, len(drawings))
     names = _names([[drawings[k].elements[e] for k, e in chain] for chain in chains])
     delays = _delays(chains, drawings, keys, fail)
-    shapes = [_shape(chains[c], names[c], drawings, keys, unmatched, hints, delays[c]) for c in order]
+    shapes = [_shape(chains[c], names[c], drawings, keys, unmatched, hints, delays[c], arcs) for c in order]
     times = [key.time for key in keys]
     for shape in shapes:
         check_hints(shape.keys, lambda q, s=shape: f"drawing[{times.index(s.keys[q].time)}]", fail)
@@ -347,12 +351,15 @@ def _names(chains: list[list[Element]]) -> list[str]:
 
 
 def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing], keys: Sequence[DrawingKey],
-           unmatched: str, hints: Sequence[dict[int, tuple[Hint, ...]]], delays: dict[int, float]) -> Shape:
+           unmatched: str, hints: Sequence[dict[int, tuple[Hint, ...]]], delays: dict[int, float],
+           arcs: Sequence[dict[str, tuple[float, float]]] = ()) -> Shape:
     first_k, last_k = chain[0][0], chain[-1][0]
     elements = [drawings[k].elements[e] for k, e in chain]
     out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint, fill_rule=e.fill_rule, cap=e.cap, join=e.join,
                miter_limit=e.miter_limit, layer=index, clips=e.clips, easing=keys[k].easing,
-               hints=hints[k].get(index, ()), delay=delays.get(k, 0.0))
+               hints=hints[k].get(index, ()), delay=delays.get(k, 0.0), turn=keys[k].turn, turns=keys[k].turns,
+               arcs=tuple((h.letter, arcs[k][h.letter]) for h in hints[k].get(index, ())
+                          if arcs and h.letter in arcs[k]))
            for (k, index), e in zip(chain, elements)]
     if first_k > 0:  # it appears: it comes from the key before
         out.insert(0, replace(_hidden(elements[0], keys[first_k - 1], unmatched), delay=delays.get(first_k - 1, 0.0)))
@@ -375,3 +382,25 @@ def _hidden(element: Element, at: DrawingKey, unmatched: str) -> Key:
     return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True,
                fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
                clips=element.clips, easing=at.easing)
+
+
+def _world(drawing: Drawing, points: dict[str, tuple[float, float]]) -> dict[str, tuple[float, float]]:
+    """``points`` in a drawing's user units, in world units."""
+    to_world = drawing.to_world if drawing.to_world is not None else np.eye(3)
+    out = {}
+    for letter, (x, y) in points.items():
+        world = to_world @ np.array([x, y, 1.0])
+        out[letter] = (float(world[0]), float(world[1]))
+    return out
+
+
+def with_breakdowns(shape: Shape, breakdowns: Sequence[Key]) -> Shape:
+    """``shape`` with each breakdown key (no contours yet) whose time falls between two of its keys put
+    among them, keeping the element's drawing rules."""
+    keys = list(shape.keys)
+    for key in breakdowns:
+        if not keys[0].time < key.time < keys[-1].time:
+            continue
+        at = next(k for k, other in enumerate(keys) if other.time > key.time)
+        keys.insert(at, key)
+    return replace(shape, keys=tuple(keys))

@@ -13,7 +13,10 @@ import re
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
+import numpy as np
+
 from ..errors import SceneError
+from .scene_writer import drawings_toml
 
 __all__ = ["OPS", "apply_edits", "breakdown_segment", "drawings_scene_text", "written_tables"]
 
@@ -80,31 +83,9 @@ def breakdown_segment(text: str, path: Path, shape: str, key: int) -> tuple[str,
 
 def drawings_scene_text(svgs: Sequence[Path], folder: Path, step: float = 1.0, ease: str = "linear",
                         hold: float = 0.0, stagger: float = 0.0) -> str:
-    """A ``[[drawing]]`` scene (TOML) of ``svgs`` morphing one into the next as the command line means:
-    drawing k at ``k × (hold + step)`` seconds; a hold is the same drawing again ``hold`` seconds later.
-    File names are written relative to ``folder``, where the scene is saved."""
-    import os
-
-    import tomlkit
-
-    document = tomlkit.document()
-    document.add(tomlkit.comment("the drawings of the command line, one [[drawing]] each"))
-    if stagger:
-        document["stagger"] = stagger
-    drawings = tomlkit.aot()
-    period = step + hold
-    for index, svg in enumerate(svgs):
-        name = os.path.relpath(os.path.abspath(svg), os.path.abspath(folder)).replace(os.sep, "/")
-        times = [index * period] + ([index * period + hold] if hold and len(svgs) > 1 else [])
-        for time in times:
-            entry = tomlkit.table()
-            entry["time"] = _number(time)
-            entry["svg"] = name
-            if ease != "linear" and time == times[-1]:
-                entry["ease"] = ease
-            drawings.append(entry)
-    document["drawing"] = drawings
-    return tomlkit.dumps(document)
+    """The ``[[drawing]]`` scene (TOML) of ``svgs`` that ``init`` writes (:func:`.scene_writer.drawings_toml`),
+    file names relative to ``folder``, where the scene is saved."""
+    return drawings_toml(svgs, folder, step, ease, hold, stagger)
 
 
 class _Op:
@@ -232,11 +213,22 @@ class _Op:
         if self.bake is None:
             raise self.fail("", "baking needs the scene's in-betweens")
         contours = self.bake(self.shape, self.index)
+        f = float(table["breakdown"])
         del table["breakdown"]
         if len(contours) == 1:
             table["points"] = _points_array(contours[0])
         else:
             table["contours"] = tomlkit.array([_points_array(c) for c in contours])
+        # a letter on both keys around it stays hinted through the baked key: where the baked outline
+        # comes nearest the point between its two places at the favour
+        before, after = keys[self.index - 1], keys[self.index + 1]
+        shared = sorted(set(before.get("hints", {})) & set(after.get("hints", {})))
+        if shared:
+            hints = tomlkit.inline_table()
+            for letter in shared:
+                a, b = (np.asarray(k["hints"][letter], dtype=np.float64) for k in (before, after))
+                hints[letter] = [_number(v) for v in _nearest_on(contours, (1.0 - f) * a + f * b)]
+            table["hints"] = hints
 
     # -- values -----------------------------------------------------------------------------------
 
@@ -261,6 +253,23 @@ class _Op:
             letters = tomlkit.inline_table()
             table[name] = letters
         letters[letter] = point
+
+
+def _nearest_on(contours: Contours, point: np.ndarray) -> np.ndarray:
+    """The point of the closed ``contours``' outlines nearest ``point (2,)``: ``(2,)``."""
+    best, gap = point, math.inf
+    for contour in contours:
+        a = np.asarray(contour, dtype=np.float64)
+        b = np.roll(a, -1, axis=0)
+        edge = b - a
+        length2 = np.maximum((edge * edge).sum(axis=1), 1e-300)
+        s = np.clip(((point - a) * edge).sum(axis=1) / length2, 0.0, 1.0)
+        feet = a + s[:, None] * edge
+        d = np.hypot(*(feet - point).T)
+        k = int(np.argmin(d))
+        if d[k] < gap:
+            best, gap = feet[k], float(d[k])
+    return best
 
 
 def _number(value: float) -> float | int:

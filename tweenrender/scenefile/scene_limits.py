@@ -42,12 +42,13 @@ def check_matching_effort(shapes: tuple[Shape, ...], matching: Matching, fail: F
     """Refuse key pairs whose correspondence search would run for minutes (see :data:`LIMITS`)."""
     cost = matching.cost
     for i, shape in enumerate(shapes):
-        for k in range(1, len(shape.keys)):
-            counts_a = [len(c.points) for c in shape.keys[k - 1].contours]
-            counts_b = [len(c.points) for c in shape.keys[k].contours]
+        keys = [key for key in shape.keys if key.breakdown is None]  # breakdowns take their segment's matching
+        for k in range(1, len(keys)):
+            counts_a = [len(c.points) for c in keys[k - 1].contours]
+            counts_b = [len(c.points) for c in keys[k].contours]
             m, n = max(counts_a), max(counts_b)
             equal = shape.equal_counts or matching.equal_counts
-            hinted = bool(shape.keys[k - 1].hints and shape.keys[k].hints)
+            hinted = bool(keys[k - 1].hints and keys[k].hints)
             if len(counts_a) == len(counts_b) == 1 and m == n and equal == "drawn" and not hinted:
                 continue  # equal counts keep the drawn order: no search
             effort, limit = (m * n * max(m, n), LIMITS["match_sg"]) if cost == "sg" else \

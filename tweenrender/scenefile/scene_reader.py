@@ -11,9 +11,11 @@ import numpy as np
 
 from ..core.methods.registry import METHODS, REGISTRY
 from ..core.timing.easing import LINEAR, Easing
+from ..errors import GeometryError
 from ..model import (ALIGNS, BALANCES, CAPS, COSTS, DEFAULT_BALANCE, DEFAULT_FILL, EQUAL_COUNTS, FILL_RULES,
                      JOINS, UNMATCHED, Color, Contour, Key, Matching, Paint, Scene, Shape, frozen_points)
-from .controls import check_hints, check_shape_stagger, pinned, read_easing, read_hints, read_stagger, read_timing
+from .controls import (check_hints, check_shape_stagger, check_steering, pinned, read_easing, read_hints,
+                       read_stagger, read_steering, read_timing)
 from .scene_limits import LIMITS, check_counts, check_matching_effort
 from .values import ValueReader, describe, short
 
@@ -24,8 +26,9 @@ _TOP = ("title", "size", "fps", "background", "view", "method", "compare", "bala
 _PAINT = ("fill", "stroke", "stroke_width", "opacity")
 _SHAPE = ("name", *_PAINT, "method", "joints", "balance", "fill_rule", "closed", "cap", "join", "unmatched", "stagger",
           "key")
-_KEY = ("time", "points", "contours", "ease", "spacing", "hints", *_PAINT)
-_DRAWING = ("time", "svg", "ease", "spacing", "hints", "stagger", "tolerance")
+_STEER = ("turn", "turns", "arcs", "breakdown")
+_KEY = ("time", "points", "contours", "ease", "spacing", "hints", *_STEER, *_PAINT)
+_DRAWING = ("time", "svg", "ease", "spacing", "hints", "stagger", "hold", "tolerance", *_STEER)
 _SVG = ("svg", "id", "tolerance")
 _MATCHING = ("cost", "align", "equal_counts", "ks", "cs", "es", "kb", "eb", "mb", "pb")
 
@@ -42,6 +45,8 @@ class SceneReader(ValueReader):
         self.stagger = 0.0
         self.moved: dict[str, list[np.ndarray]] = {}  # key path -> where hints moved its contours' vertices
         self.sources: list[Path] = []  # files the scene refers to, in the order they are read
+        self.drawing_times: list[float] = []  # each [[drawing]] entry's time, in order
+        self.end_hold = 0.0  # the last drawing's hold
 
     def scene(self, data: Any) -> Scene:
         top = self.table(data, "", _TOP)
@@ -104,44 +109,95 @@ class SceneReader(ValueReader):
         matching = self.matching(top.get("correspondence", {}))
         check_matching_effort(shapes, matching, self.fail)
         balance = self.choice(top.get("balance", DEFAULT_BALANCE), "balance", BALANCES, "balance")
+        shapes = self.steered(shapes, method, len(drawn), matching, unmatched, balance)
         return Scene(shapes=shapes, title=title, size=size, fps=fps, background=background, view=view,
                      method=method, compare=compare, matching=matching, path=self.path, unmatched=unmatched,
-                     balance=balance, sources=tuple(dict.fromkeys((self.path, *self.sources))))
+                     balance=balance, sources=tuple(dict.fromkeys((self.path, *self.sources))),
+                     end_hold=self.end_hold)
 
     def drawings(self, items: list[Any], unmatched: str) -> tuple[tuple[Shape, ...], tuple[float, float, float, float]]:
         """``[[drawing]]`` keys: whole SVG files at times; their shapes and the first drawing's view box."""
-        from .drawings import DrawingKey, drawing_shapes, read_drawings
+        from .drawings import DrawingKey, drawing_shapes, read_drawings, with_breakdowns
         from .svg import SvgError
 
         keys = []
+        breakdowns: list[Key] = []  # breakdown drawings, as keys without contours yet
+        last = -1.0
         for i, raw in enumerate(items):
             where = f"drawing[{i}]"
             table = self.table(raw, where, _DRAWING)
-            if "time" not in table or "svg" not in table:
-                raise self.fail(where, "expected time = seconds and svg = \"file.svg\", found "
-                                       f"{', '.join(table) or 'no keys'}")
+            steering = read_steering(table, where, self.fail, LIMITS["coordinate"])
+            if "time" not in table or ("svg" not in table and "breakdown" not in steering):
+                raise self.fail(where, "expected time = seconds and svg = \"file.svg\" (or breakdown = favour), "
+                                       f"found {', '.join(table) or 'no keys'}")
             time = self.number(table["time"], f"{where}.time", 0.0, LIMITS["time"], "a time in seconds")
-            if keys and time <= keys[-1].time:
-                raise self.fail(f"{where}.time", f"expected a time after {keys[-1].time:.15g} "
+            if time <= last:
+                raise self.fail(f"{where}.time", f"expected a time after {last:.15g} "
                                                  f"(times strictly increase), found {time:.15g}")
-            file = self.path.parent / self.string(table["svg"], f"{where}.svg")
+            last = time
+            self.drawing_times.append(time)
             text, easing = read_timing(table, where, self.fail, self.timing)
+            if "breakdown" in steering:
+                for name in ("svg", "hints", "arcs", "hold", "stagger", "tolerance"):
+                    if name in table:
+                        raise self.fail(f"{where}.{name}", f"expected no {name} on a breakdown drawing (its "
+                                                           "elements are the in-betweens of the drawings around it)")
+                if not keys or i == len(items) - 1:
+                    raise self.fail(f"{where}.breakdown", "expected a drawing before and a drawing after a "
+                                                          f"breakdown, found it {'first' if not keys else 'last'}")
+                breakdowns.append(Key(time, (), text, easing=easing, **steering))
+                continue
+            file = self.path.parent / self.string(table["svg"], f"{where}.svg")
             tolerance = None
             if "tolerance" in table:
                 tolerance = self.number(table["tolerance"], f"{where}.tolerance", 1e-9, 1e6,
                                         "a tolerance in world units")
             hints = read_hints(table["hints"], f"{where}.hints", self.fail, LIMITS["coordinate"]) \
                 if "hints" in table else {}
+            for letter, _ in steering.get("arcs", ()):
+                if letter not in hints:
+                    raise self.fail(f"{where}.arcs.{letter}", f"expected hint {letter} on this drawing (and the "
+                                                              "next), found none on this one")
             stagger = read_stagger(table["stagger"], f"{where}.stagger", self.fail) \
                 if "stagger" in table else self.stagger
-            keys.append(DrawingKey(file, time, text, tolerance, easing=easing, hints=hints, stagger=stagger))
+            hold = read_stagger(table["hold"], f"{where}.hold", self.fail, "a hold") if "hold" in table else 0.0
+            keys.append(DrawingKey(file, time, text, tolerance, easing=easing, hints=hints, stagger=stagger,
+                                   hold=hold, turn=steering.get("turn"), turns=steering.get("turns", 0),
+                                   arcs=dict(steering.get("arcs", ()))))
             self.sources.append(file)
+        self.end_hold = keys[-1].hold if len(keys) > 1 else 0.0
         try:
             drawings, box = read_drawings(keys)
         except SvgError as error:
             index = next(i for i, key in enumerate(keys) if str(key.path) == error.path)
             raise self.fail(f"drawing[{index}].svg", str(error)) from None
-        return tuple(drawing_shapes(drawings, keys, unmatched, self.fail)), box
+        shapes = drawing_shapes(drawings, keys, unmatched, self.fail)
+        return tuple(with_breakdowns(shape, breakdowns) for shape in shapes), box
+
+    def steered(self, shapes: tuple[Shape, ...], method: str, drawn: int, matching: Matching, unmatched: str,
+                balance: str) -> tuple[Shape, ...]:
+        """``shapes`` with their steering checked and their breakdown keys made (maths §5.13–5.15); the
+        first ``drawn`` are the drawings' elements, whose keys are ``drawing[k]`` entries."""
+        from ..core.timing.timeline import make_breakdowns
+
+        times = self.drawing_times
+        out = []
+        for i, shape in enumerate(shapes):
+            if i < drawn:
+                def where_of(k: int, s: Shape = shape) -> str:
+                    return f"drawing[{times.index(s.keys[k].time)}]"
+            else:
+                def where_of(k: int, i: int = i) -> str:
+                    return f"shape[{i - drawn}].key[{k}]"
+            chosen = shape.method or method
+            check_steering(shape.keys, chosen, where_of, self.fail)
+            try:
+                out.append(make_breakdowns(shape, matching, chosen, unmatched=unmatched,
+                                           balance=shape.balance or balance))
+            except GeometryError as error:
+                at = next(k for k, key in enumerate(shape.keys) if key.breakdown is not None)
+                raise self.fail(f"{where_of(at)}.breakdown", str(error)) from None
+        return tuple(out)
 
     def background(self, value: Any, where: str) -> Color:
         """A colour, or ``none`` for a transparent background."""
@@ -192,7 +248,12 @@ class SceneReader(ValueReader):
             if keys[k].time <= keys[k - 1].time:
                 raise self.fail(f"{where}.key[{k}].time", f"expected a time after {keys[k - 1].time:.15g} "
                                                           f"(times strictly increase), found {keys[k].time:.15g}")
-        check_hints(keys, lambda k: f"{where}.key[{k}]", self.fail)
+        for k in (0, len(keys) - 1):
+            if keys[k].breakdown is not None:
+                raise self.fail(f"{where}.key[{k}].breakdown", "expected a key before and a key after a breakdown, "
+                                                               f"found it {'first' if k == 0 else 'last'}")
+        real = [k for k, key in enumerate(keys) if key.breakdown is None]
+        check_hints([keys[k] for k in real], lambda k: f"{where}.key[{real[k]}]", self.fail)
         if not closed and not any(key.paint.stroke is not None for key in keys):
             raise self.fail(where, "expected a stroke on an open shape (closed = false), found none: "
                                    "add stroke = \"#rrggbb\"")
@@ -201,7 +262,8 @@ class SceneReader(ValueReader):
             method = self.choice(table["method"], f"{where}.method", METHODS, "method")
         joints: tuple[tuple[int, int], ...] = ()
         if "joints" in table:
-            several = [k for k, key in enumerate(keys) if len(key.contours) != 1 or not key.contours[0].closed]
+            several = [k for k, key in enumerate(keys) if key.breakdown is None
+                       and (len(key.contours) != 1 or not key.contours[0].closed)]
             if several:
                 raise self.fail(f"{where}.joints", f"expected keys of one closed outline for joints, found "
                                                    f"{len(keys[several[0]].contours)} contours in key {several[0]}")
@@ -219,7 +281,7 @@ class SceneReader(ValueReader):
         stagger = read_stagger(table["stagger"], f"{where}.stagger", self.fail) if "stagger" in table \
             else self.stagger
         place = f"{where}.stagger" if "stagger" in table else "stagger"
-        check_shape_stagger(keys, stagger, place, lambda k: f"{where}.key[{k}]", self.fail)
+        check_shape_stagger([keys[k] for k in real], stagger, place, lambda k: f"{where}.key[{real[k]}]", self.fail)
         return Shape(name=name, keys=keys, method=method, joints=joints, fill_rule=fill_rule, cap=cap, join=join,
                      unmatched=unmatched, balance=balance, stagger=stagger)
 
@@ -260,6 +322,14 @@ class SceneReader(ValueReader):
         if "time" not in table:
             raise self.fail(where, "expected a time (seconds), found none")
         time = self.number(table["time"], f"{where}.time", 0.0, LIMITS["time"], "a time in seconds")
+        steering = read_steering(table, where, self.fail, LIMITS["coordinate"])
+        if "breakdown" in steering:
+            for name in ("points", "contours", "hints", *_PAINT):
+                if name in table:
+                    raise self.fail(f"{where}.{name}", f"expected no {name} on a breakdown key (its shape is the "
+                                                       "in-between of the keys around it), found some")
+            text, easing = read_timing(table, where, self.fail, self.timing)
+            return Key(time=time, contours=(), ease=text, paint=defaults, easing=easing, **steering)
         if "points" in table and "contours" in table:
             raise self.fail(f"{where}.contours", "expected either points or contours in a key, found both")
         if "points" in table:
@@ -279,7 +349,7 @@ class SceneReader(ValueReader):
             if "hints" in table else {}
         contours, placed, self.moved[where] = pinned(contours, hints, f"{where}.hints", self.fail)
         return Key(time=time, contours=contours, ease=text, paint=self.paint(table, where, defaults),
-                   easing=easing, hints=placed)
+                   easing=easing, hints=placed, **steering)
 
     def outline(self, value: Any, where: str, closed: bool) -> tuple[Contour, ...]:
         """``points``: a list of [x, y] (one contour) or ``{ svg, id }`` (every contour of that element)."""

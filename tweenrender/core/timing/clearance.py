@@ -12,7 +12,8 @@ the segment, it touches no other contour of the element at any grid time and kee
 has in its key. The first candidate point with the earliest start wins; where none is clear before
 :data:`LATEST`, the contour keeps its anchor and the whole segment (and the measures say it tangles).
 Groups are placed largest first, each clear of those placed before it; where one is left without a
-clear start, the stuck ones are placed first instead, if that leaves fewer stuck.
+clear start, the stuck ones are placed first instead, if that leaves fewer stuck. The checks a
+placement makes are counted (:data:`BUDGET`), so a drawing of many pieces costs a bounded time.
 """
 
 from __future__ import annotations
@@ -42,6 +43,11 @@ LATEST = float(STARTS[-1])
 grows over all of it."""
 
 _PROBE_CELLS = 24  # grid cells across a contour's box when looking for its deepest point
+_FAR_POINTS = 512  # the other contours' points a farthest point is measured from, at most (evenly picked)
+BUDGET = 200_000
+"""The work a placement may do in all, in vertices checked (a group and every contour it is checked
+against, at one grid time, for each check); the groups left when it is spent come from their anchors
+over the whole segment, so a drawing of many pieces costs a bounded time."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -90,6 +96,8 @@ def farthest_point(contour: Array, others: Array) -> Array:
     grid = grid[inside(grid, contour)] if len(contour) >= 3 else grid[:0]
     if not len(grid):
         return centre_of_area([contour], [True])
+    if len(others) > _FAR_POINTS:
+        others = others[np.linspace(0, len(others) - 1, _FAR_POINTS).astype(np.intp)]
     gap = np.full(len(grid), np.inf)
     for chunk in range(0, len(others), 512):  # (P, 512) at a time
         part = others[chunk:chunk + 512]
@@ -155,9 +163,20 @@ def _clear(members: list[Array], member_closed: list[bool], around: _Around, k: 
     if not others:
         return True
     count = len(members)
-    touching = proper_crossings(members + [around.frames[o][k] for o in others],
+    # a vertex and its copies (balancing stacks them) are one point: their zero-length edges would only
+    # send every orientation test to exact arithmetic
+    touching = proper_crossings([_distinct(m) for m in members] + [_distinct(around.frames[o][k]) for o in others],
                                 list(member_closed) + [around.closed[o] for o in others], touching=True)
     return not any(c < count <= d for c, d in touching)
+
+
+def _distinct(points: Array) -> Array:
+    """``points (L, 2)`` without a vertex equal to the one before it: ``(L', 2)``, L' ≥ 1."""
+    if len(points) < 2:
+        return points
+    keep = np.ones(len(points), dtype=bool)
+    keep[1:] = np.any(points[1:] != points[:-1], axis=1)
+    return points[keep]
 
 
 def place(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool], anchors: Sequence[Array],
@@ -166,20 +185,22 @@ def place(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool]
     keep clear of the element's moving contours ``others[j] (G, M_j, 2)`` (at :data:`GRID`) and of one
     another: one :class:`Growth` per shape (``anchors[i] (2,)``: where it would come from unplaced)."""
     groups = _groups(shapes, closed, grows)
-    placed, stuck = _place_in(groups, shapes, closed, grows, anchors, others, others_closed)
-    if stuck:  # a group placed later had no room left: place the stuck ones first, keep the better
+    budget = [BUDGET]  # vertices left to check, for both orders
+    placed, stuck = _place_in(groups, shapes, closed, grows, anchors, others, others_closed, budget)
+    if stuck and budget[0] > 0:  # a group placed later had no room left: place the stuck ones first
         again, still = _place_in([g for g in groups if g[0] in stuck] + [g for g in groups if g[0] not in stuck],
-                                 shapes, closed, grows, anchors, others, others_closed)
+                                 shapes, closed, grows, anchors, others, others_closed, budget)
         if len(still) < len(stuck):
             placed = again
     return placed
 
 
 def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool],
-              anchors: Sequence[Array], others: Sequence[Array], others_closed: Sequence[bool]
+              anchors: Sequence[Array], others: Sequence[Array], others_closed: Sequence[bool], budget: list[int]
               ) -> tuple[list[Growth], set[int]]:
-    """:func:`place` with the groups placed in the order given: the growths, and the roots of the groups
-    that found no clear start (left at their anchor over the whole segment)."""
+    """:func:`place` with the groups placed in the order given (``budget[0]``: vertices left to check,
+    counted down): the growths, and the roots of the groups that found no clear start (left at their
+    anchor over the whole segment)."""
     placed: list[Growth | None] = [None] * len(shapes)
     stuck: set[int] = set()
     done_frames: list[Array] = []  # (G, L, 2) of the groups placed so far
@@ -207,7 +228,7 @@ def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence
         best: tuple[float, Array] | None = None
         for point in candidates:
             limit = LATEST if best is None else best[0] - 1e-9
-            start = _earliest(point, members, member_closed, around, final, limit)
+            start = _earliest(point, members, member_closed, around, final, limit, budget)
             if start is not None and (best is None or start < best[0]):
                 best = (start, point)
             if best is not None and best[0] == 0.0:
@@ -225,10 +246,12 @@ def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence
 
 
 def _earliest(point: Array, members: list[Array], member_closed: list[bool], around: _Around,
-              final: NDArray[np.int8], limit: float) -> float | None:
+              final: NDArray[np.int8], limit: float, budget: list[int]) -> float | None:
     """The earliest of :data:`STARTS` (up to ``limit``) from which ``members`` scaled about ``point``
-    stay clear of the contours ``around``, or None. The grid time at which a start failed is tried
-    first for the next one (where one start meets a contour, the next mostly does too)."""
+    stay clear of the contours ``around``, or None (also once ``budget[0]`` checks are spent, counting
+    down). The grid time at which a start failed is tried first for the next one (where one start
+    meets a contour, the next mostly does too)."""
+    cost = sum(len(m) for m in members) + sum(f.shape[1] for f in around.frames)
     lo = np.array([m.min(axis=0) for m in members])  # (M, 2): a scaled contour's box is its box scaled
     hi = np.array([m.max(axis=0) for m in members])
     failed: list[int] = []
@@ -236,6 +259,9 @@ def _earliest(point: Array, members: list[Array], member_closed: list[bool], aro
         times = np.flatnonzero(GRID > start).tolist()
         order = [k for k in failed if k in times] + times
         for k in order:
+            if budget[0] <= 0:
+                return None
+            budget[0] -= cost
             s = np.sqrt((GRID[k] - start) / (1.0 - start))
             now_lo, now_hi = point + s * (lo - point), point + s * (hi - point)
             meets = (np.all(now_lo[:, None] <= around.hi[k][None], axis=2)

@@ -35,7 +35,7 @@ from ..balance import spread
 from .appear import scaled, width_share
 from .clearance import GRID, Growth, cached, growth_scale, place
 from .easing import LINEAR, Easing, parse_easing
-from ..geometry import signed_area
+from ..geometry import best_fit_rotation, signed_area
 from ..clip_motion import clips_at
 from ..gradient_blend import blend_gradient, box_of
 from ..correspondence.hint_search import correspond_hinted, correspond_hinted_open
@@ -45,9 +45,11 @@ if TYPE_CHECKING:
     from ..methods.qcurves import AutoChoice
 from ..methods.registry import interpolate, per_outline
 from ..paint import blend_paints
+from .steering import arc_corrections, bend, extra_turn, spin, unturned, whole_turns_to
 
 __all__ = ["easing_of", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
-           "evaluate_segment", "pair_paths", "growths_of", "injective_fallback_of", "key_windings", "tracks_of"]
+           "evaluate_segment", "pair_paths", "method_paths", "make_breakdowns", "growths_of", "injective_fallback_of",
+           "key_windings", "tracks_of"]
 
 Array = NDArray[np.float64]
 
@@ -121,6 +123,10 @@ class Segment:
     delay: float = 0.0
     links: tuple[Link, ...] = ()
     stagger: float = 0.0
+    spin: float = 0.0  # radians (whole turns) added to the best-fit turn of the moving pairs (maths §5.13)
+    # per pair, its hinted vertices: (letter, balanced vertex index); and the arcs, letter -> (x, y) at t = 0.5
+    anchors: tuple[tuple[tuple[str, int], ...], ...] = ()
+    arcs: tuple[tuple[str, tuple[float, float]], ...] = ()
 
     def time_fraction(self, times: Array, rank: int = 0) -> Array:
         """How much of the motion's time has passed at ``times (T,)`` seconds for the pair of stagger rank
@@ -258,7 +264,46 @@ def segment_method(segment: Segment, method: str) -> str:
 
 
 def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
-    """Every pair's inbetweens at parameters ``t (T,)``: one ``(T, L_i, 2)`` array per pair.
+    """Every pair's inbetweens at parameters ``t (T,)``: one ``(T, L_i, 2)`` array per pair, steered as
+    the segment says (its turn and arcs, :mod:`.steering`); see :func:`method_paths`."""
+    t = np.asarray(t, dtype=np.float64)
+    frames = _turned(segment, t, method)
+    if not segment.arcs:
+        return frames
+    at = dict(segment.arcs)
+    middle = _turned(segment, np.array([0.5]), method)
+    for i, pair in enumerate(segment.pairs):
+        hinted = segment.anchors[i] if i < len(segment.anchors) else ()
+        if not any(letter in at for letter, _ in hinted):
+            continue
+        anchors = [(v, (np.asarray(at[letter]) - middle[i][0, v]) if letter in at else None) for letter, v in hinted]
+        frames[i] = bend(frames[i], t, arc_corrections(pair.k0, pair.closed, anchors))
+    return frames
+
+
+def _turned(segment: Segment, t: Array, method: str) -> list[Array]:
+    """Every pair's inbetweens by ``method``, the moving pairs' rigid frame turning by the segment's total turn
+    where it adds whole turns (maths §5.13; ``linear`` has no rigid frame and goes straight)."""
+    moving = [i for i, p in enumerate(segment.pairs) if p.moving]
+    if segment.spin == 0.0 or method == "linear" or not moving:
+        return method_paths(segment, t, method)
+    k0 = np.concatenate([segment.pairs[i].k0 for i in moving])
+    k1 = np.concatenate([segment.pairs[i].k1 for i in moving])
+    total = float(best_fit_rotation(k0, k1)) + segment.spin
+    c1 = k1.mean(axis=0)
+    pairs = list(segment.pairs)
+    for i in moving:
+        pairs[i] = replace(pairs[i], k1=_frozen(unturned(pairs[i].k1, c1, total)))
+    frames = method_paths(replace(segment, pairs=tuple(pairs)), t, method)
+    for i, turned in zip(moving, spin([frames[i] for i in moving], k0, k1, t, total)):
+        turned[t == 0.0] = segment.pairs[i].k0
+        turned[t == 1.0] = segment.pairs[i].k1
+        frames[i] = turned
+    return frames
+
+
+def method_paths(segment: Segment, t: Array, method: str) -> list[Array]:
+    """Every pair's inbetweens at parameters ``t (T,)`` by ``method`` alone: one ``(T, L_i, 2)`` array per pair.
 
     The moving pairs are interpolated as one point set (one center of mass, one turn), except by
     the methods that work on one closed outline (:func:`.methods.per_outline`), which take each closed contour on its own and place it
@@ -483,10 +528,20 @@ def _still(key: Key) -> ShapeAt:
 
 
 def tracks_of(scene: Scene, matching: Matching | None = None) -> tuple[Track, ...]:
-    """Every shape's track, in paint order, under the scene's matching (or ``matching``) and rules."""
+    """Every shape's track, in paint order, under the scene's matching (or ``matching``) and rules.
+
+    A shape's breakdowns are made again here under the matching and balance in force (a command may
+    put its own over the scene's), by the shape's own method: they are in-betweens of that correspondence."""
     matching = scene.matching if matching is None else matching
-    return tuple(build_track(shape, matching, unmatched=scene.unmatched, balance=scene.balance_of(shape))
-                 for shape in scene.shapes)
+    tracks = []
+    for shape in scene.shapes:
+        rules = {"unmatched": scene.unmatched, "balance": scene.balance_of(shape)}
+        if any(key.breakdown is not None for key in shape.keys):
+            unmade = replace(shape, keys=tuple(replace(key, contours=()) if key.breakdown is not None else key
+                                               for key in shape.keys))
+            shape = make_breakdowns(unmade, matching, scene.method_of(shape), **rules)
+        tracks.append(build_track(shape, matching, **rules))
+    return tuple(tracks)
 
 
 def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", balance: str = "copies") -> Track:
@@ -494,16 +549,24 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
 
     ``unmatched`` is the rule for contours without a partner (``shape.unmatched`` overrides it);
     ``balance`` places the copies balancing makes: ``"copies"`` stacks them on their vertex (the
-    thesis), ``"spread"`` spreads them along its edges (maths §5.6).
+    thesis), ``"spread"`` spreads them along its edges (maths §5.6). Breakdown keys (made by
+    :func:`make_breakdowns`) split the segment of the keys around them into halves that share its
+    pairs, correspondence and hints (maths §5.15); the halves share its total turn as the breakdowns
+    share its way; the first key's arcs are in the breakdowns (made with them), not bent in again.
     """
     keys = shape.keys
     if shape.equal_counts is not None and shape.equal_counts != matching.equal_counts:
         matching = replace(matching, equal_counts=shape.equal_counts)
+    rule = shape.unmatched or unmatched
     joints = tuple(shape.joints)  # indices into the current key's vertices
-    segments = []
-    for before, after in zip(keys, keys[1:]):
-        links = tuple(segment_links(before.hints, after.hints))
-        pairs = _pairs(before, after, shape.fill_rule, matching, shape.unmatched or unmatched, balance, links)
+    segments: list[Segment] = []
+    k = 0
+    while k < len(keys) - 1:
+        end = next(e for e in range(k + 1, len(keys)) if keys[e].breakdown is None or e == len(keys) - 1)
+        first, last = keys[k], keys[end]
+        links = tuple(segment_links(first.hints, last.hints))
+        pairs = _pairs(first, last, shape.fill_rule, matching, rule, balance, links)
+        anchors = _anchors(pairs, links)
         balanced_joints: tuple[tuple[int, int], ...] = ()
         if joints and len(pairs) == 1:
             found = pairs[0].correspondence
@@ -514,13 +577,104 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
                 balanced_joints = tuple((int(first_of[i]), int(first_of[j])) for i, j in joints)
                 carried = tuple((int(found.pairs[p, 1]), int(found.pairs[q, 1])) for p, q in balanced_joints)
             joints = carried
-        segments.append(Segment(before.time, after.time, before.ease, pairs, balanced_joints,
-                                _paints(before, after, shape.unmatched or unmatched),
-                                (not before.hidden, not after.hidden),
-                                (before, after),
-                                key_windings(pairs, before.contours, after.contours),
-                                easing=easing_of(before), delay=before.delay, links=links, stagger=shape.stagger))
+        windings = key_windings(pairs, first.contours, last.contours)
+        moving = [p for p in pairs if p.moving]
+        m0 = np.concatenate([p.k0 for p in moving]) if moving else np.zeros((0, 2))
+        m1 = np.concatenate([p.k1 for p in moving]) if moving else np.zeros((0, 2))
+        delta = extra_turn(m0, m1, first.turn, first.turns)
+        remaining = (float(best_fit_rotation(m0, m1)) if moving else 0.0) + delta
+        for q in range(k, end):
+            before, after = keys[q], keys[q + 1]
+            part = pairs
+            if end > k + 1:  # a half: the breakdowns' contours in place of the run's keys
+                part = _half(pairs, before if q > k else None, after if q + 1 < end else None)
+                h0 = np.concatenate([p.k0 for p in part if p.moving]) if moving else np.zeros((0, 2))
+                h1 = np.concatenate([p.k1 for p in part if p.moving]) if moving else np.zeros((0, 2))
+                target = remaining * (after.breakdown if q + 1 < end else 1.0)  # type: ignore[operator]
+                remaining -= target
+                if q > k and (before.turn is not None or before.turns):
+                    delta = extra_turn(h0, h1, before.turn, before.turns)
+                else:
+                    delta = whole_turns_to(target, h0, h1)
+            # a breakdown is drawn with the windings of the run's key it is nearer
+            flips = (_windings_at(before, windings[0], windings), _windings_at(after, windings[1], windings))
+            segments.append(Segment(before.time, after.time, before.ease, part, balanced_joints,
+                                    _paints(before, after, rule), (not before.hidden, not after.hidden),
+                                    (before, after), flips, easing=easing_of(before), delay=before.delay,
+                                    links=links if end == k + 1 else (), stagger=shape.stagger, spin=delta,
+                                    anchors=anchors, arcs=() if q == k < end - 1 else before.arcs))
+        k = end
     return Track(shape.name, tuple(segments), _still(keys[0]))
+
+
+def _windings_at(key: Key, own: tuple[bool, ...], run: tuple[tuple[bool, ...], tuple[bool, ...]]
+                 ) -> tuple[bool, ...]:
+    """The windings a half draws at ``key``: its run key's own, or at a breakdown those of the run's key
+    it is nearer (``run``: the run's first and last keys' windings)."""
+    if key.breakdown is None:
+        return own
+    return run[0] if key.breakdown < 0.5 else run[1]
+
+
+def _anchors(pairs: Sequence[Pair], links: Sequence[Link]) -> tuple[tuple[tuple[str, int], ...], ...]:
+    """Per pair, its hinted vertices as ``(letter, balanced vertex index)``."""
+    out = []
+    for pair in pairs:
+        found: list[tuple[str, int]] = []
+        for link in links:
+            if (link.a[0], link.b[0]) != pair.source:
+                continue
+            if pair.correspondence is None:
+                found.append((link.letter, link.a[1]))
+                continue
+            hits = np.flatnonzero((pair.correspondence.pairs[:, 0] == link.a[1])
+                                  & (pair.correspondence.pairs[:, 1] == link.b[1]))
+            if len(hits):
+                found.append((link.letter, int(hits[0])))
+        out.append(tuple(found))
+    return tuple(out)
+
+
+def _half(pairs: Sequence[Pair], start: Key | None, end: Key | None) -> tuple[Pair, ...]:
+    """The pairs of a run of keys split by breakdowns, from breakdown ``start`` (``None``: the run's first
+    key) to breakdown ``end`` (``None``: its last); a breakdown's contour n is pair n's in-between. A
+    contour part way grown (or shrunk) at a breakdown moves from (to) there with the others."""
+    out = []
+    for n, pair in enumerate(pairs):
+        s0, s1 = pair.source
+        k0, k1 = pair.k0, pair.k1
+        if start is not None:
+            k0 = start.contours[n].points
+            s0 = n if s0 is None and not pair.fades else s0
+        if end is not None:
+            k1 = end.contours[n].points
+            s1 = n if s1 is None and not pair.fades else s1
+        out.append(replace(pair, k0=k0, k1=k1, source=(s0, s1)))
+    return tuple(out)
+
+
+def make_breakdowns(shape: Shape, matching: Matching, method: str, *, unmatched: str = "grow",
+                    balance: str = "copies") -> Shape:
+    """``shape`` with each breakdown key's contours and paint made (maths §5.15): the in-between at its
+    favour ``f`` of the segment it splits, by ``method`` (its correspondence, hints, turn and arcs; no
+    easing). Several breakdowns in one segment are made in time order, each splitting what is left."""
+    if all(key.breakdown is None or key.contours for key in shape.keys):
+        return shape
+    keys = list(shape.keys)
+    for k, key in enumerate(keys):
+        if key.breakdown is None or key.contours:
+            continue
+        end = next(e for e in range(k + 1, len(keys)) if keys[e].breakdown is None)
+        partial = replace(shape, keys=tuple(keys[:k]) + tuple(keys[end:]))
+        segment = build_track(partial, matching, unmatched=unmatched, balance=balance).segments[k - 1]
+        f = np.array([float(key.breakdown)])
+        frames = pair_paths(segment, f, method)
+        paint = blend_paints(*segment.paints, np.clip(f, 0.0, 1.0))[0]
+        near = segment.ends[0] if key.breakdown < 0.5 or segment.ends is None else segment.ends[1]
+        contours = tuple(Contour(_frozen(frame[0]), pair.closed) for frame, pair in zip(frames, segment.pairs))
+        keys[k] = replace(key, contours=contours, paint=paint, fill_rule=near.fill_rule, cap=near.cap,
+                          join=near.join, miter_limit=near.miter_limit, layer=near.layer, hints=())
+    return replace(shape, keys=tuple(keys))
 
 
 def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str,

@@ -49,7 +49,8 @@ __all__ = [
 
 def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], step: float = 1.0,
                ease: str = "linear", hold: float = 0.0, stagger: float = 0.0) -> Scene:
-    """The scene at ``path`` (TOML; JSON by its ``.json`` suffix; one SVG drawing by ``.svg``), validated;
+    """The scene at ``path`` (TOML; JSON by its ``.json`` suffix — a Lottie animation when its top level has
+    ``v``, ``fr``, ``ip``, ``op`` and ``layers``, see docs/lottie.md; one SVG drawing by ``.svg``), validated;
     or, for a list of SVG files, their drawings morphing one into the next (what ``tweenrender render
     a.svg b.svg`` renders): each shown ``hold`` seconds, then moving for ``step`` seconds under ``ease``,
     element i of a drawing starting ``i × stagger`` seconds later and arriving on time."""

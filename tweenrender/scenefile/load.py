@@ -30,8 +30,8 @@ _KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a pipe (FIFO)"), (stat.S_
 
 def load_scene(path: str | Path | Sequence[str | Path], step: float = 1.0, ease: str = "linear",
                hold: float = 0.0, stagger: float = 0.0) -> Scene:
-    """Read and validate the scene at ``path`` (``.json`` is JSON, ``.svg`` one drawing, anything else
-    TOML), or build one from a list of SVG drawings: each shown ``hold`` seconds, then moving for
+    """Read and validate the scene at ``path`` (``.json`` is JSON — a scene, or a Lottie animation by its
+    content —, ``.svg`` one drawing, anything else TOML), or build one from a list of SVG drawings: each shown ``hold`` seconds, then moving for
     ``step`` seconds to the next under ``ease``, its elements ``stagger`` seconds apart."""
     if not isinstance(path, (str, Path)):
         return drawings_scene([Path(p) for p in path], step, ease, hold, stagger)
@@ -135,7 +135,8 @@ class _DuplicateKey(ValueError):
 
 
 def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
-    """Validate scene ``text`` (``fmt`` ``"toml"`` or ``"json"``); ``path`` names it in errors."""
+    """Validate scene ``text`` (``fmt`` ``"toml"`` or ``"json"``; JSON whose top level has ``v``, ``fr``,
+    ``ip``, ``op`` and ``layers`` is a Lottie animation, :mod:`.lottie_reader`); ``path`` names it in errors."""
     path = Path(path)
     # a cheap count before parsing: each [x, y] pair opens one bracket (so do a few headers)
     pairs, most = text.count("["), LIMITS["vertices_total"] + 1000
@@ -154,6 +155,12 @@ def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
             raise SceneError(path, None, "not valid JSON: nested too deeply") from None
         except ValueError as error:  # e.g. an integer of more than 4300 digits
             raise SceneError(path, None, f"not valid JSON: {error}") from None
+        from .lottie_reader import is_lottie
+
+        if is_lottie(data):
+            from .lottie_reader import lottie_scene
+
+            return lottie_scene(data, path)
     else:
         from .point_arrays import lift_point_arrays
 

@@ -73,10 +73,7 @@ def growth_scale(growth: Growth, t: Array) -> Array:
 def deepest_point(contour: Array) -> Array:
     """A point well inside closed ``contour (N, 2)``: of a grid over its box, the inside point farthest
     from its outline (its centre of area where no grid point is inside): ``(2,)``."""
-    lo, hi = contour.min(axis=0), contour.max(axis=0)
-    steps = [np.linspace(lo[k], hi[k], _PROBE_CELLS + 1)[1:-1] for k in range(2)]
-    grid = np.stack(np.meshgrid(*steps), axis=-1).reshape(-1, 2)
-    grid = grid[inside(grid, contour)] if len(contour) >= 3 else grid[:0]
+    grid = _inside_grid(contour)
     if not len(grid):
         return centre_of_area([contour], [True])
     a, b = contour, np.roll(contour, -1, axis=0)
@@ -90,19 +87,21 @@ def deepest_point(contour: Array) -> Array:
 def farthest_point(contour: Array, others: Array) -> Array:
     """Of a grid inside closed ``contour (N, 2)``, the point farthest from the points ``others (M, 2)``
     (where the other contours are when it starts to grow): ``(2,)``; its centre of area without one."""
-    lo, hi = contour.min(axis=0), contour.max(axis=0)
-    steps = [np.linspace(lo[k], hi[k], _PROBE_CELLS + 1)[1:-1] for k in range(2)]
-    grid = np.stack(np.meshgrid(*steps), axis=-1).reshape(-1, 2)
-    grid = grid[inside(grid, contour)] if len(contour) >= 3 else grid[:0]
+    grid = _inside_grid(contour)
     if not len(grid):
         return centre_of_area([contour], [True])
     if len(others) > _FAR_POINTS:
         others = others[np.linspace(0, len(others) - 1, _FAR_POINTS).astype(np.intp)]
-    gap = np.full(len(grid), np.inf)
-    for chunk in range(0, len(others), 512):  # (P, 512) at a time
-        part = others[chunk:chunk + 512]
-        gap = np.minimum(gap, np.hypot(*(grid[:, None, :] - part[None]).transpose(2, 0, 1)).min(axis=1))
+    gap = np.hypot(*(grid[:, None, :] - others[None]).transpose(2, 0, 1)).min(axis=1)
     return grid[int(np.argmax(gap))]
+
+
+def _inside_grid(contour: Array) -> Array:
+    """The points of a grid of :data:`_PROBE_CELLS` cells across ``contour``'s box that lie inside it: ``(P, 2)``."""
+    lo, hi = contour.min(axis=0), contour.max(axis=0)
+    steps = [np.linspace(lo[k], hi[k], _PROBE_CELLS + 1)[1:-1] for k in range(2)]
+    grid = np.stack(np.meshgrid(*steps), axis=-1).reshape(-1, 2)
+    return grid[inside(grid, contour)] if len(contour) >= 3 else grid[:0]
 
 
 def _groups(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool]) -> list[list[int]]:

@@ -49,7 +49,7 @@ STROKE = ("tests/raster/test_round_stroke.py",)
 CONTROLS = ("tests/core/test_easing.py", "tests/core/test_hints.py", "tests/scenefile/test_controls.py",
             "tests/cli/test_timing_flags.py")
 ATOMIC = ("tests/cli/test_targets.py", "tests/cli/test_reliability.py", "tests/encode")
-VECTOR = ("tests/vector/test_keyframes.py", "tests/vector/test_vector_output.py")
+VECTOR = ("tests/vector/test_keyframes.py", "tests/vector/test_vector_output.py", "tests/vector/test_curves.py")
 PAINT = ("tests/encode/test_vector_paint_players.py",)
 OWNED = ("tests/encode/test_manifest.py", "tests/cli/test_targets.py")
 _CLUSTER_TESTS = "tests/pipeline/test_cluster_failures.py::"
@@ -319,6 +319,13 @@ MUTANTS = [
            VECTOR),
     Mutant("svg: keyTimes over F - 1 frames", "tweenrender/encode/smil.py",
            "times = [f / total for f in frames]", "times = [f / (total - 1) for f in frames]", VECTOR),
+    Mutant("vector: the keyframes given the whole bound, the curve fit's share forgotten", "tweenrender/vector/export.py",
+           "return max(max_error - fitted - 2 * _ROUNDING,", "return max(max_error - 2 * _ROUNDING,", VECTOR),
+    Mutant("lottie: tangents written as points, not relative to their vertex", "tweenrender/encode/lottie_values.py",
+           "np.round(points[:, 0] - vertex, DIGITS)", "np.round(points[:, 0], DIGITS)", VECTOR),
+    Mutant("curves: a singular fit solved exactly", "tweenrender/vector/curves.py",
+           "solve = np.linalg.pinv(normal + RIDGE * np.trace(normal) / 2 * np.eye(2)) @ basis.T",
+           "solve = np.linalg.solve(normal + RIDGE * np.trace(normal) / 2 * np.eye(2), basis.T)", VECTOR),
     Mutant("vector: a linear segment's easing dropped", "tweenrender/vector/export.py",
            "ease = _timing(segment) or STRAIGHT", "ease = STRAIGHT", VECTOR),
     Mutant("vector paint: a radial gradient's ellipse turned the other way", "tweenrender/vector/paint_keys.py",

@@ -1,4 +1,5 @@
-"""Fixtures: the command line run in-process, and the ``--update-golden`` switch."""
+"""Fixtures: the command line run in-process, the ``--update-golden`` switch, and every Lottie a test writes
+to its ``tmp_path`` validated against the Lottie JSON Schema afterwards."""
 
 from __future__ import annotations
 
@@ -53,3 +54,15 @@ def pool():
 
     with ProcessPoolExecutor(max_workers=2) as executor:
         yield executor
+
+
+@pytest.fixture(autouse=True)
+def _lottie_files_are_schema_valid(request: pytest.FixtureRequest):
+    """After a test that has a ``tmp_path``, every Lottie left in it validates (:mod:`tests.lottie_schema`),
+    but for tests marked ``lottie_input`` (they write malformed Lottie files to be refused)."""
+    folder = request.getfixturevalue("tmp_path") if "tmp_path" in request.fixturenames else None
+    yield
+    if folder is not None and request.node.get_closest_marker("lottie_input") is None:
+        from tests.lottie_schema import check_folder
+
+        check_folder(folder)

@@ -1,11 +1,19 @@
 """Independent players of the vector outputs, and the acceptance measures (DESIGN, "Measures used in
-acceptance"): rlottie and ThorVG (pip wheels with the player inside) draw Lottie JSON; headless
-Chromium draws an animated SVG paused at a time."""
+acceptance"): rlottie and ThorVG (pip wheels with the player inside) and Skottie (skia's Lottie player,
+npm ``canvaskit-wasm`` run by node, CPU raster) draw Lottie JSON; headless Chromium draws an animated
+SVG paused at a time.
+
+Skottie comes from the npm folder ``.ci/run`` installs into: ``$TWEENRENDER_NPM`` if set, else
+``~/.cache/tweenrender/npm`` (``node_modules/canvaskit-wasm`` inside); without it, or without node, the
+checks that need it skip, saying so."""
 
 from __future__ import annotations
 
 import base64
 import json
+import os
+import shutil
+import subprocess
 import tempfile
 import time
 from pathlib import Path
@@ -114,6 +122,19 @@ def check_lottie_players(scene: object, folder: Path, method: str | None = None,
     check_pictures(scene, thorvg_frames(target, sample, size), sample, method, "ThorVG")
 
 
+def check_skottie(scene: object, folder: Path, method: str | None = None, every_frame: bool = True) -> None:
+    """Write ``scene`` as Lottie and check what Skottie draws of every frame (or :func:`sample_frames`)
+    against the project's frames (the caller skips first where :func:`skottie_missing` says why it cannot run)."""
+    import tweenrender as tr
+    from tweenrender.plan.job import total_frames
+
+    target = tr.write(scene, folder / "skottie.json", method=method)
+    count = total_frames(scene)
+    frames = list(range(count)) if every_frame else sample_frames(scene, count)
+    check_pictures(scene, skottie_frames(target, frames, scene.size), frames, method,  # type: ignore[attr-defined]
+                   "Skottie")
+
+
 def check_chromium(cases: list[tuple[str, object, str | None]], folder: Path) -> None:
     """Write each ``(name, scene, method)`` as an animated SVG and check Chromium's pictures at t = 0, ¼, ½, ¾, 1
     of the clip (at frame times) against the project's frames, one browser for all."""
@@ -130,6 +151,34 @@ def check_chromium(cases: list[tuple[str, object, str | None]], folder: Path) ->
     shots = chromium_svg_frames(files)
     for (name, scene, method), frames, pictures in zip(cases, picks, shots):
         check_pictures(scene, pictures, frames, method, f"Chromium, {name}")
+
+
+def npm_folder() -> Path:
+    """Where ``.ci/run`` installs the npm players: ``$TWEENRENDER_NPM``, else ``~/.cache/tweenrender/npm``."""
+    return Path(os.environ.get("TWEENRENDER_NPM") or Path.home() / ".cache" / "tweenrender" / "npm")
+
+
+def skottie_missing() -> str | None:
+    """Why Skottie cannot be run here (``None``: it can)."""
+    if shutil.which("node") is None:
+        return "no node on this machine to run Skottie (npm canvaskit-wasm)"
+    if not (npm_folder() / "node_modules" / "canvaskit-wasm" / "bin" / "full" / "canvaskit.js").exists():
+        return f"Skottie (npm canvaskit-wasm) is not installed in {npm_folder()} (.ci/run installs it there)"
+    return None
+
+
+def skottie_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[np.ndarray]:
+    """Skottie's pictures of ``frames`` (CanvasKit's CPU raster, run by node): straight RGBA ``(H, W, 4)`` each."""
+    width, height = size
+    script = Path(__file__).with_name("skottie_frames.js")
+    with tempfile.TemporaryDirectory(prefix="tweenrender-skottie-") as scratch:
+        out = Path(scratch) / "frames.rgba"
+        done = subprocess.run(["node", str(script), str(npm_folder() / "node_modules" / "canvaskit-wasm"), str(path),
+                               str(width), str(height), str(out), *map(str, frames)],
+                              capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, f"Skottie failed on {path}: {done.stderr.strip()[-500:]}"
+        raw = np.frombuffer(out.read_bytes(), np.uint8).reshape(len(frames), height, width, 4)
+    return [frame.copy() for frame in raw]
 
 
 def rlottie_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[np.ndarray]:

@@ -36,8 +36,8 @@ __all__ = [
     "load_scene", "init_scene", "parse_scene", "frame", "frames", "outlines", "contours", "write", "interpolate",
     "stats", "correspondence", "qcurves", "describe", "sheet", "report", "reel",
     "stats_text", "correspondence_text", "qcurves_text", "frame_count", "png_bytes",
-    "method_names", "format_names", "output_kinds", "listing", "output_format", "default_suffix", "check_preview_settings",
-    "edit_scene_text", "save_scene_text", "editing_state", "drawings_scene_text",
+    "method_names", "format_names", "format_loop", "output_kinds", "listing", "output_format", "default_suffix",
+    "check_preview_settings", "edit_scene_text", "save_scene_text", "editing_state", "drawings_scene_text",
     "start_encoder_search", "encoder_search_done",
     "RenderOptions", "MatchSettings", "Scene", "Shape", "Key", "Matching", "DrawnContour",
     "COSTS", "ALIGNS", "EQUAL_COUNTS", "BALANCES", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS",
@@ -158,7 +158,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
 
     Options come by their long names (``RenderOptions.names()``: ``method, compare, format, size, fps,
     frames, background, balance, paths, onion, strip, cost, align, equal_counts, workers, cluster,
-    max_frames, progress, max_error``) or as one ``options`` object. The format is ``format`` or
+    max_frames, progress, max_error, loop``) or as one ``options`` object. The format is ``format`` or
     ``path``'s extension (:func:`format_names`); a name without one is a folder of PNG frames. The
     target changes only when the whole output was written and checked."""
     from .pipeline.library import write as written
@@ -214,12 +214,21 @@ def default_suffix(fmt: str | None = None) -> str:
     return (lookup(fmt) if fmt else TABLE[DEFAULT]).suffix
 
 
-def format_names(*, vector: bool | None = None, alpha: bool | None = None) -> tuple[str, ...]:
+def format_names(*, vector: bool | None = None, alpha: bool | None = None,
+                 loop: bool | None = None) -> tuple[str, ...]:
     """The output formats a user may ask for, in the format table's order: ``vector`` keeps those of paths
-    (True) or of pictures (False), ``alpha`` those that keep a transparent background (True) or not."""
+    (True) or of pictures (False), ``alpha`` those that keep a transparent background (True) or not,
+    ``loop`` those whose file can say it loops (True) or not."""
     from .encode.formats import names
 
-    return names(vector=vector, alpha=alpha)
+    return names(vector=vector, alpha=alpha, loop=loop)
+
+
+def format_loop(fmt: str) -> str | None:
+    """What ``loop`` makes of a ``fmt`` file, in words (``None``: it cannot say whether it loops)."""
+    from .encode.formats import lookup
+
+    return lookup(fmt).loop
 
 
 def output_kinds(*, vector: bool | None = None) -> str:

@@ -73,7 +73,7 @@ def test_no_name_is_a_usage_error(tmp_path: Path, name: str, words: str, fmt: st
     done = run_module("render", scene, "-o", name, "--format", fmt, "-q", cwd=tmp_path)
     assert done.returncode == 2, done.stderr
     assert done.stderr == f"tweenrender: error: output {name!r} is {words}; expected a file name " \
-                          "(.mp4, .webm, .mov, .gif, .json, .svg) or a folder's name for PNG frames\n"
+                          "(.mp4, .webm, .mov, .gif, .json, .lottie, .svg) or a folder's name for PNG frames\n"
     assert _tree(tmp_path) == before
 
 

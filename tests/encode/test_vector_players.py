@@ -2,7 +2,8 @@
 
 Lottie JSON is drawn by rlottie and by ThorVG (pip wheels with the players inside) — every frame of
 the icon pairs and the paint scene, and for the shipped scenes (1280 × 720) ten frames evenly and
-the frames on both sides of every key — the animated
+the frames on both sides of every key — and by Skottie (npm ``canvaskit-wasm`` run by node, where
+``.ci/run`` installed it; every frame of the icon pairs, the sample of the shipped scenes), the animated
 SVG by headless Chromium paused at t = 0, ¼, ½, ¾, 1 of the clip (at frame times). Each picture
 is compared with ``tr.frame`` at the same time: coverage IoU ≥ 0.98 and mean colour error ≤ 0.03
 (DESIGN, "Measures used in acceptance"), for the shipped scenes, real icon pairs (holes, strokes,
@@ -19,7 +20,7 @@ import pytest
 import tweenrender as tr
 from tweenrender.core.methods.registry import METHODS
 from tests.helpers import DATA, SCENES, write_scene
-from tests.vector_players import check_chromium, check_lottie_players
+from tests.vector_players import check_chromium, check_lottie_players, check_skottie, skottie_missing
 
 SHIPPED = sorted(SCENES.glob("*.toml"))
 ICONS = DATA / "icons"
@@ -111,6 +112,29 @@ def test_icon_pairs_in_rlottie_and_thorvg(pair: tuple[str, str], tmp_path: Path)
 @pytest.mark.parametrize("pair", [ICON_PAIRS[0], ICON_PAIRS[2]], ids=["holes", "strokes"])
 def test_every_method_in_rlottie_and_thorvg(method: str, pair: tuple[str, str], tmp_path: Path) -> None:
     check_lottie_players(_icons(*pair), tmp_path, method, every_frame=False)
+
+
+def _skottie() -> None:
+    reason = skottie_missing()
+    if reason is not None:
+        pytest.skip(reason)
+
+
+@pytest.mark.parametrize("pair", ICON_PAIRS, ids=lambda p: p[0].split("/")[0] + "-" + Path(p[0]).stem)
+def test_icon_pairs_in_skottie_every_frame(pair: tuple[str, str], tmp_path: Path) -> None:
+    _skottie()
+    check_skottie(_icons(*pair), tmp_path)
+
+
+def test_shipped_scenes_and_curved_methods_in_skottie(tmp_path: Path) -> None:
+    """The shipped scenes (1280 × 720) at the sample frames, the rest at every frame."""
+    _skottie()
+    for scene_path in SHIPPED:
+        check_skottie(tr.load_scene(scene_path), tmp_path, every_frame=False)
+    for method in ("nonlinear", "arap"):
+        check_skottie(_icons(*ICON_PAIRS[0]), tmp_path, method)
+    check_skottie(_timed(), tmp_path)
+    check_skottie(_paint_scene(tmp_path), tmp_path)
 
 
 def _timed() -> tr.Scene:

@@ -285,6 +285,7 @@ def _shape_items(document: dict) -> list:
     (lambda d: d.update(fr=0), "fr: expected frames per second from 1 to 240, found 0"),
     (lambda d: d.update(layers=[]), "layers: expected at least one shape layer that draws something, found none"),
 ])
+@pytest.mark.lottie_input
 def test_malformed_files_are_refused_in_one_line(tmp_path: Path, change, message: str) -> None:
     document = _morph()
     change(document)

@@ -15,7 +15,7 @@ from .overlay_flags import add_overlay_flags
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from ..api import default_suffix, format_names, listing, method_names
+    from ..api import default_suffix, format_loop, format_names, listing, method_names
 
     vector = format_names(vector=True)
 
@@ -35,6 +35,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--max-error", type=float, metavar="PX",
                    help=f"{listing(vector)}: how far (output pixels) the keyframed paths may stray from the exact "
                         "inbetween at a frame (default 0.25)")
+    looping = format_names(loop=True)
+    p.add_argument("--loop", action="store_true",
+                   help=f"{listing(looping)} only: the file plays over and over ("
+                        + "; ".join(f"{n}: {format_loop(n)}" for n in looping) + ")")
     p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (of each panel)")
     p.add_argument("--fps", type=fps, metavar="N")
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")

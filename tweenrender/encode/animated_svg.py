@@ -15,8 +15,10 @@ from __future__ import annotations
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
+import numpy as np
+
 from .atomic import replacing
-from .smil import animate, hex_colour, number, path_data
+from .smil import animate, clip_timing, hex_colour, number, path_data, straight_spans
 from .svg_paint import clip_path_elements, gradient_element
 from .vector_data import Array, VectorClip, VectorRun
 
@@ -36,7 +38,7 @@ def write_animated_svg(clip: VectorClip, target: Path) -> Path:
 def svg_document(clip: VectorClip, title: str = "tweenrender") -> str:
     """The SVG text of ``clip``."""
     width, height = clip.size
-    duration = f"{number(clip.frames / clip.fps, 6)}s"
+    timing = clip_timing(clip.frames / clip.fps, clip.loop)
     lines = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
              f'viewBox="0 0 {width} {height}">', f"<title>{escape(title)}</title>"]
     r, g, b, a = clip.background
@@ -44,12 +46,12 @@ def svg_document(clip: VectorClip, title: str = "tweenrender") -> str:
         lines.append(f'<rect width="{width}" height="{height}" fill="{hex_colour((r / 255, g / 255, b / 255))}"'
                      + (f' fill-opacity="{number(a / 255, 4)}"' if a < 255 else "") + "/>")
     for index, run in enumerate(clip.runs):
-        lines.extend(_run(run, f"run{index}", clip.frames, duration))
+        lines.extend(_run(run, f"run{index}", clip.frames, timing))
     lines.append("</svg>")
     return "\n".join(lines) + "\n"
 
 
-def _run(run: VectorRun, ident: str, total: int, duration: str) -> list[str]:
+def _run(run: VectorRun, ident: str, total: int, timing: str) -> list[str]:
     """The run as a group; ``ident`` names its gradient (``ident-fill``) and clip paths (``ident-clip-0``, …)."""
     lines = [f"<g id={quoteattr(f'{run.element}-{run.first}')}"
              + (' visibility="hidden"' if run.first > 0 else "") + _static_opacity(run) + ">"]
@@ -59,35 +61,36 @@ def _run(run: VectorRun, ident: str, total: int, duration: str) -> list[str]:
             else (["visible"], [0.0])
         if run.stop < total:
             values, times = [*values, "hidden"], [*times, (run.stop - _EARLY) / total]
-        lines.append(f'<animate attributeName="visibility" dur="{duration}" fill="freeze" calcMode="discrete" '
+        lines.append(f'<animate attributeName="visibility" {timing} calcMode="discrete" '
                      f'keyTimes="{";".join(number(t, 9) for t in times)}" values="{";".join(values)}"/>')
-    lines.append(animate("opacity", run.paint_frames, [number(o, 4) for o in run.opacity], total, duration))
-    gradient = gradient_element(run, f"{ident}-fill", total, duration)
-    clip_paths, opening, closing = clip_path_elements(run, f"{ident}-clip", total, duration)
+    lines.append(animate("opacity", run.paint_frames, [number(o, 4) for o in run.opacity], total, timing))
+    gradient = gradient_element(run, f"{ident}-fill", total, timing)
+    clip_paths, opening, closing = clip_path_elements(run, f"{ident}-clip", total, timing)
     if gradient or clip_paths:
         lines += ["<defs>", *gradient, *clip_paths, "</defs>"]
     lines += opening
     fill = f"url(#{ident}-fill)" if gradient else None
     groups = run.stroke_groups() if run.stroke is not None else []
     if len(groups) <= 1:
-        lines += _path(run, list(range(len(run.paths))), True, groups[0][1] if groups else None, total, duration,
+        lines += _path(run, list(range(len(run.paths))), True, groups[0][1] if groups else None, total, timing,
                        fill)
     else:  # contours growing from a point stroke with their share of the width: the fill, then each stroke
-        lines += _path(run, list(range(len(run.paths))), True, None, total, duration, fill)
+        lines += _path(run, list(range(len(run.paths))), True, None, total, timing, fill)
         for members, widths in groups:
-            lines += _path(run, members, False, widths, total, duration)
+            lines += _path(run, members, False, widths, total, timing)
     lines += [*closing, "</g>"]
     return [line for line in lines if line]
 
 
 def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None, total: int,
-          duration: str, gradient: str | None = None) -> list[str]:
+          timing: str, gradient: str | None = None) -> list[str]:
     """One ``<path>`` of the contours ``members``: filled (or not; by the paint server ``gradient`` if given),
     stroked ``widths (P,)`` wide (``None``: not)."""
     shapes = [[run.paths[i][k] for i in members] for k in range(len(run.path_frames))]
-    d_values = [path_data(s, tuple(run.closed[i] for i in members)) for s in shapes]
+    lines = [straight_spans(run.paths[i]) if run.paths[i].ndim == 4 else np.zeros(0, dtype=bool) for i in members]
+    d_values = [path_data(s, tuple(run.closed[i] for i in members), lines) for s in shapes]
     attributes = [f'd="{d_values[0]}"', f'fill-rule="{run.fill_rule}"']
-    inner = [animate("d", run.path_frames, d_values, total, duration, run.eases)]
+    inner = [animate("d", run.path_frames, d_values, total, timing, run.eases)]
     for name, colours in (("fill", run.fill if filled else None), ("stroke", run.stroke if widths is not None
                                                                           else None)):
         if name == "fill" and filled and gradient is not None:
@@ -99,13 +102,13 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
         hexes = [hex_colour(c[:3]) for c in colours]
         alphas = [number(c[3], 4) for c in colours]
         attributes += [f'{name}="{hexes[0]}"', f'{name}-opacity="{alphas[0]}"']
-        inner += [animate(name, run.paint_frames, hexes, total, duration),
-                  animate(f"{name}-opacity", run.paint_frames, alphas, total, duration)]
+        inner += [animate(name, run.paint_frames, hexes, total, timing),
+                  animate(f"{name}-opacity", run.paint_frames, alphas, total, timing)]
     if widths is not None and run.stroke is not None:
         numbers = [number(w, 4) for w in widths]
         attributes += [f'stroke-width="{numbers[0]}"', f'stroke-linecap="{run.cap}"',
                        f'stroke-linejoin="{run.join}"', f'stroke-miterlimit="{number(run.miter_limit, 4)}"']
-        inner.append(animate("stroke-width", run.paint_frames, numbers, total, duration))
+        inner.append(animate("stroke-width", run.paint_frames, numbers, total, timing))
     inner = [line for line in inner if line]
     if not inner:
         return ["<path " + " ".join(attributes) + "/>"]

@@ -22,8 +22,8 @@ from typing import Any, Callable, Literal, Sequence
 from ..errors import OptionError, did_you_mean
 
 __all__ = ["Format", "TABLE", "FORMATS", "DEFAULT", "LOSSLESS", "PICTURE_LIMIT", "lookup", "by_suffix",
-           "formats_for", "check_frame_size", "check_alpha", "writer", "reader", "tuning", "is_vector", "names",
-           "suffixes", "frame_folders", "listing", "outputs_text"]
+           "formats_for", "check_frame_size", "check_alpha", "check_loop", "writer", "reader", "tuning", "is_vector",
+           "names", "suffixes", "frame_folders", "listing", "outputs_text"]
 
 PICTURE_LIMIT = 2**31 - 1
 """ffmpeg's av_image_check_size: a frame passes while 8·(width + 128)·(height + 128) is below this."""
@@ -45,7 +45,8 @@ class Format:
     several processes render it as chunks, each with an encoder of its own; ``container`` the
     container's options that a join by stream copy repeats; ``yuv420`` whether opaque frames go to
     ffmpeg as yuv420p planes made here; ``vector`` whether the file holds the animated paths rather than
-    pictures (a player draws them: any size, any background).
+    pictures (a player draws them: any size, any background); ``loop`` what ``--loop`` makes of the file
+    (``None``: it cannot say whether it loops; its player decides).
 
     ``writer``, ``reader`` and ``tuning`` name a function of this package's modules as
     ``"module.name"``, imported where it is used (:func:`writer`, :func:`reader`, :func:`tuning`):
@@ -75,6 +76,7 @@ class Format:
     tuning: str | None = None
     listed: bool = True  # False: an internal format (a GIF's lossless parts), never asked for by name
     vector: bool = False  # the paths themselves, keyframed (Lottie, animated SVG): no frames are drawn
+    loop: str | None = None  # what --loop does to the file; None: the file cannot say
 
     @property
     def keeps_alpha(self) -> bool:
@@ -130,11 +132,15 @@ TABLE: dict[str, Format] = {f.name: f for f in (
             "-loop", "0", "-f", "gif"),
            alpha=(("palettegen=stats_mode=diff", "palettegen=stats_mode=diff:reserve_transparent=1"),
                   ("paletteuse=dither=sierra2_4a", "paletteuse=dither=sierra2_4a:alpha_threshold=128")),
-           max_side=65535, join="lossless", reader="gif_blocks.video_track"),
+           max_side=65535, join="lossless", reader="gif_blocks.video_track",
+           loop="it loops in any case, its loop count 0"),
     # any size the canvas takes; each frame's file is counted as it is written
     Format("png", "PNG", "", "sinks.frames_folder", alpha=(), join="frames"),
     Format("lottie", "Lottie", ".json", "lottie.write_lottie", alpha=(), vector=True),
-    Format("svg", "animated SVG", ".svg", "animated_svg.write_animated_svg", alpha=(), vector=True),
+    Format("dotlottie", "dotLottie", ".lottie", "dotlottie.write_dotlottie", alpha=(), vector=True,
+           loop="its manifest's loop is true"),
+    Format("svg", "animated SVG", ".svg", "animated_svg.write_animated_svg", alpha=(), vector=True,
+           loop="every animation repeats indefinitely"),
     # a GIF's chunk: FFV1 in NUT, BGRA, exact frame times; encoded into the GIF when the parts are joined
     Format("nut", "FFV1", ".nut", _VIDEO, ("-c:v", "ffv1", "-pix_fmt", "bgra", "-f", "nut"), alpha=(),
            max_side=65536, reader="sinks.probe_video", listed=False),
@@ -220,13 +226,22 @@ def is_vector(fmt: str) -> bool:
     return found is not None and found.vector
 
 
-def names(*, vector: bool | None = None, alpha: bool | None = None) -> tuple[str, ...]:
+def names(*, vector: bool | None = None, alpha: bool | None = None, loop: bool | None = None) -> tuple[str, ...]:
     """The formats a user may ask for, in the order help texts list them; ``vector`` keeps only the formats
     of paths (True) or of pictures (False), ``alpha`` only those that keep a transparent background (True)
-    or cannot (False)."""
+    or cannot (False), ``loop`` only those whose file can say it loops (True) or cannot (False)."""
     return tuple(name for name in FORMATS
                  if (vector is None or TABLE[name].vector == vector)
-                 and (alpha is None or TABLE[name].keeps_alpha == alpha))
+                 and (alpha is None or TABLE[name].keeps_alpha == alpha)
+                 and (loop is None or (TABLE[name].loop is not None) == loop))
+
+
+def check_loop(fmt: str, loop: bool) -> None:
+    """Refuse ``loop`` for a format whose file cannot say it loops, saying which can."""
+    if loop and TABLE[fmt].loop is None:
+        can = listing([f"{n} ({TABLE[n].suffix})" for n in names(loop=True)], "or")
+        raise OptionError(f"{fmt} ({TABLE[fmt].codec}) cannot say whether it loops (its player decides); "
+                          f"write {can}", "loop")
 
 
 def suffixes(*, vector: bool | None = None) -> tuple[str, ...]:

@@ -21,7 +21,7 @@ from .lottie_paint import gradient_fill, masks, matte, refuse_unsupported, stret
 from .lottie_values import animated, path_item, percent, scalar, static, transform
 from .vector_data import Array, VectorClip, VectorRun
 
-__all__ = ["lottie_document", "write_lottie"]
+__all__ = ["lottie_document", "lottie_text", "write_lottie"]
 
 _CAPS = {"butt": 1, "round": 2, "square": 3}
 _JOINS = {"miter": 1, "round": 2, "bevel": 3}
@@ -35,10 +35,15 @@ early suits all three, and leaves a thousandth of a frame between consecutive la
 
 def write_lottie(clip: VectorClip, target: Path) -> Path:
     """Write ``clip`` to ``target`` as Lottie JSON, atomically; returns ``target``."""
-    text = json.dumps(lottie_document(clip, target.stem), separators=(",", ":"), allow_nan=False)
+    text = lottie_text(clip, target.stem)
     with replacing(target, ".json", "the Lottie file") as temporary:
         temporary.write_text(text, encoding="utf-8")
     return target
+
+
+def lottie_text(clip: VectorClip, name: str = "tweenrender") -> str:
+    """The Lottie JSON text of ``clip``, compact."""
+    return json.dumps(lottie_document(clip, name), separators=(",", ":"), allow_nan=False)
 
 
 def lottie_document(clip: VectorClip, name: str = "tweenrender") -> dict[str, Any]:
@@ -65,8 +70,10 @@ def _colour_prop(frames: tuple[int, ...], colours: Array) -> tuple[dict[str, Any
 def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
     """The run's layer, below the matte of its clip path of several contours if it has one."""
     frames = clip.frames
-    paths = [path_item(f"contour {i}", i, run.path_frames, p, shut, run.eases)
-             for i, (p, shut) in enumerate(zip(run.paths, run.closed))]
+    paths = []
+    for i, shut in enumerate(run.closed):
+        keyframes, points, eases = run.keys_of(i)  # each contour keyed on its own
+        paths.append(path_item(f"contour {i}", i, keyframes, points, shut, eases))
     groups = run.stroke_groups() if run.stroke is not None else []
     gradient = run.gradient
     stretched = run.gradient_paths is not None

@@ -1,4 +1,4 @@
-"""Lottie property values: static and keyframed properties, transforms and straight-edged paths."""
+"""Lottie property values: static and keyframed properties, transforms and paths (straight or cubic)."""
 
 from __future__ import annotations
 
@@ -54,14 +54,21 @@ def transform(opacity: dict[str, Any], position: dict[str, Any] | None = None, r
 
 
 def _shape_value(points: Array, closed: bool) -> list[dict[str, Any]]:
-    vertices = np.round(points, DIGITS).tolist()
-    zero = [[0, 0]] * len(vertices)
-    return [{"c": closed, "v": vertices, "i": zero, "o": zero}]
+    """One path value: straight edges ``(L, 2)``, or a cubic Bézier path ``(M, 3, 2)`` (in control point,
+    vertex, out control point per vertex), its tangents written relative to their vertex."""
+    if points.ndim == 2:
+        vertices = np.round(points, DIGITS).tolist()
+        zero = [[0, 0]] * len(vertices)
+        return [{"c": closed, "v": vertices, "i": zero, "o": zero}]
+    vertex = np.round(points[:, 1], DIGITS)
+    ins, outs = np.round(points[:, 0] - vertex, DIGITS), np.round(points[:, 2] - vertex, DIGITS)
+    return [{"c": closed, "v": vertex.tolist(), "i": ins.tolist(), "o": outs.tolist()}]
 
 
 def contour(frames: tuple[int, ...], points: Array, closed: bool, eases: tuple[Handles, ...] = ()) -> dict[str, Any]:
-    """A straight-edged path ``points (K, L, 2)`` at ``frames``, each span timed by its ``eases`` (none:
-    straight), as a shape property (``ks`` of a path, ``pt`` of a mask)."""
+    """A path ``points`` at ``frames``, each span timed by its ``eases`` (none: straight), as a shape
+    property (``ks`` of a path, ``pt`` of a mask): straight edges ``(K, L, 2)`` or a cubic Bézier path
+    ``(K, M, 3, 2)`` (:class:`~.vector_data.VectorRun`)."""
     values = [_shape_value(p, closed) for p in points]
     prop = animated(frames, values, eases)
     if prop["a"] == 0:

@@ -65,17 +65,22 @@ class VectorRun:
     """One element drawn over clip frames ``first .. stop - 1``, as keyframes.
 
     ``path_frames (K,)`` are clip frame indices (increasing; they may reach past the run, to the keys
-    it moves between), ``paths`` one ``(K, L_i, 2)`` pixel array per contour, ``closed`` per contour;
+    it moves between), ``paths`` one array per contour: ``(K, M_i, 3, 2)`` pixels, a cubic Bézier path
+    (per vertex its in control point, the vertex and its out control point; an open contour's first in
+    and last out are its vertex), or ``(K, L_i, 2)`` straight edges; ``closed`` per contour;
     ``eases`` the cubic-bezier timing of each span between consecutive path keyframes (K - 1).
     ``paint_frames (P,)`` with ``fill``/``stroke (P, 4)`` straight RGBA in [0, 1] (``None``: never
     drawn), ``width (P,)`` pixels, ``opacity (P,)``, keyed straight. ``exact_frames``: every
     contour's exact pixels at every frame of the run, side by side, ``(stop - first, sum L_i, 2)``,
-    kept for measuring. ``contour_widths (P, C)``: each contour's stroke width where some contour grows
-    from (or shrinks to) a point and is stroked with its share of the width (``None``: all ``width``).
+    kept for measuring, ``exact_lengths`` each contour's L_i (``()``: the paths' own). ``contour_widths
+    (P, C)``: each contour's stroke width where some contour grows from (or shrinks to) a point and is
+    stroked with its share of the width (``None``: all ``width``).
     ``gradient``: the fill as a gradient at the paint keyframes (``fill`` is then ``None``); ``clip_paths``:
     the clip paths the run is drawn through (``None``: not clipped). ``gradient_paths``: for an elliptical
     radial gradient, the contours in the gradient's own frame (a Lottie group's transform places that
-    frame), as ``(frames (K',), ((K', L_i, 2) per contour), eases (K' - 1,))``.
+    frame), as ``(frames (K',), (one array per contour, as ``paths``), eases (K' - 1,))``. ``contour_keys``:
+    each contour keyed on its own, for files that animate contours apart (Lottie), as ``(frames, path,
+    eases)`` per contour (``None``: the run's keyframes).
     """
 
     element: str
@@ -99,6 +104,20 @@ class VectorRun:
     gradient: GradientKeys | None = None
     clip_paths: ClipPathKeys | None = None
     gradient_paths: tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None = None
+    exact_lengths: tuple[int, ...] = ()
+    contour_keys: tuple[tuple[tuple[int, ...], Array, tuple[Handles, ...]], ...] | None = None
+
+    def keys_of(self, index: int) -> tuple[tuple[int, ...], Array, tuple[Handles, ...]]:
+        """Contour ``index``'s own keyframes where it has them (:attr:`contour_keys`), else the run's:
+        ``(frames (K_i,), path (K_i, …) as in ``paths``, eases (K_i - 1,))``."""
+        if self.contour_keys is not None:
+            return self.contour_keys[index]
+        return self.path_frames, self.paths[index], self.eases
+
+    def exact_contours(self) -> list[Array]:
+        """:attr:`exact_frames` split per contour: ``(stop - first, L_i, 2)`` each."""
+        lengths = self.exact_lengths or tuple(p.shape[1] for p in self.paths)
+        return np.split(self.exact_frames, np.cumsum(lengths)[:-1], axis=1) if lengths else []
 
     def stroke_groups(self) -> list[tuple[list[int], Array]]:
         """The contours stroked alike and their width at each paint keyframe: ``[(contour indices, (P,))]``
@@ -120,7 +139,7 @@ class VectorRun:
 @dataclass(frozen=True)
 class VectorClip:
     """The whole file: ``frames`` frames at ``fps`` of ``size`` pixels over ``background``; ``runs`` in
-    paint order (first drawn first)."""
+    paint order (first drawn first); ``loop``: played over and over (else once, held at its last frame)."""
 
     size: tuple[int, int]
     fps: float
@@ -128,3 +147,4 @@ class VectorClip:
     background: Color
     runs: tuple[VectorRun, ...]
     max_error: float
+    loop: bool = False

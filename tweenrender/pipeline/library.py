@@ -182,7 +182,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
     Options come by their long names (``method, compare, format, size, fps, frames, background, balance,
-    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress, max_error``; see
+    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress, max_error, loop``; see
     :class:`~.options.RenderOptions`) or as one ``options`` object. The format is ``format`` or
     ``path``'s extension (any of ``encode.formats.suffixes()``; a name without one is a folder of PNG
     frames). ``background`` overrides the scene's (``"none"``: transparent, kept by every format but MP4).
@@ -195,11 +195,13 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     ``cluster`` extra). ``progress`` is called with ``(done, total)`` frames. The target changes only
     when the whole output was written and checked.
 
-    ``.json`` (format ``lottie``) writes Lottie, ``.svg`` (``svg``) an animated SVG: the paths themselves,
-    keyframed within ``max_error`` output pixels (default 0.25) of every frame; they take no ``compare``,
-    ``paths``, ``onion``, ``strip``, ``workers`` or ``cluster``.
+    ``.json`` (format ``lottie``) writes Lottie, ``.lottie`` (``dotlottie``) the same in a dotLottie
+    archive, ``.svg`` (``svg``) an animated SVG: the paths themselves as cubic Bézier curves, keyframed
+    within ``max_error`` output pixels (default 0.25) of every frame; they take no ``compare``, ``paths``,
+    ``onion``, ``strip``, ``workers`` or ``cluster``. ``loop`` makes the animated SVG repeat and the
+    dotLottie's manifest say it loops (a Lottie JSON cannot say: its player decides).
     """
-    from ..encode.formats import TABLE, check_alpha, check_frame_size
+    from ..encode.formats import TABLE, check_alpha, check_frame_size, check_loop
     from ..encode.targets import check_frames_folder, check_output_name
     from .chunks import render_in_processes
     from .workers import default_workers
@@ -213,6 +215,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     target = check_output_name(path)
     fmt = output_format(target, opts.format)
     not_an_input(target, [scene], folder=TABLE[fmt].folder)
+    check_loop(fmt, opts.loop)
     if TABLE[fmt].folder:
         check_frames_folder(target)
     if TABLE[fmt].vector:
@@ -231,7 +234,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     if TABLE[fmt].vector:
         from ..vector.export import write_vector
 
-        return write_vector(job, fmt, target, opts.max_error)
+        return write_vector(job, fmt, target, opts.max_error, opts.loop)
     check_alpha(fmt, job.scene.background[3] < 255)
     check_frame_size(fmt, *job.frame_size)  # before drawing a frame or starting ffmpeg
     if opts.cluster is not None:

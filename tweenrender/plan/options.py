@@ -209,7 +209,8 @@ class RenderOptions:
     ``"A:B"`` text or a ``range`` (checked against the scene when the clip is known); ``size`` each
     panel's; ``background`` a colour; ``cost``, ``align``, ``equal_counts`` put over the scene's
     ``[correspondence]``, ``balance`` over every shape's; ``max_error`` (vector formats only) how far, in
-    output pixels, the keyframed paths may stray from the exact inbetween at a frame (default 0.25).
+    output pixels, the keyframed paths may stray from the exact inbetween at a frame (default 0.25);
+    ``loop`` makes a file that can say so play over and over (``encode.formats.Format.loop``).
     """
 
     method: str | None = None
@@ -231,6 +232,7 @@ class RenderOptions:
     max_frames: int = DEFAULT_MAX_FRAMES
     progress: Progress | None = None
     max_error: float | None = None  # vector formats: output pixels the keyframed paths may stray
+    loop: bool = False  # the file says it plays over and over (formats whose table entry has a loop)
 
     @property
     def match(self) -> MatchSettings:
@@ -294,4 +296,5 @@ class RenderOptions:
             max_frames=_count(v.get("max_frames", DEFAULT_MAX_FRAMES), 1, 10**12, "max_frames"),
             progress=v.get("progress"),
             max_error=_max_error(v["max_error"]) if "max_error" in v else None,
+            loop=_flag(v.get("loop", False), "loop"),
         )

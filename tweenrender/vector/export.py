@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from .curves import fit_curves, free_points, with_fixed_points
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
 from ..encode.formats import is_vector, listing, names, writer
@@ -37,9 +38,15 @@ Array = NDArray[np.float64]
 DEFAULT_MAX_ERROR = 0.25
 """Output pixels a baked path may stray from the exact inbetween at a frame time."""
 
+CURVE_SHARE = 0.8
+"""The share of ``max_error`` the cubic fit at each frame may take; the keyframes between take the rest
+(measured on icon pairs, ``benchmarks/vector_size.py``: the Lottie is 35× the sources at the median with
+half, 26× with 0.8: a path's vertices weigh more than its keyframes)."""
+
 _ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
 _ROUNDING = 0.5e-3 * np.sqrt(2.0)
-"""How far a vertex moves when the files round its pixels to a thousandth: kept out of the bound."""
+"""How far a vertex moves when the files round its pixels to a thousandth (a control point, written as
+an offset from its vertex, moves twice that at most): kept out of the bound."""
 
 
 RASTER_ONLY = ("compare", "paths", "onion", "strip", "workers", "cluster")
@@ -54,12 +61,13 @@ def refuse_raster_options(fmt: str, options: RenderOptions) -> None:
                               "drawn by its player; render a video or PNG frames for that", name)
 
 
-def write_vector(job: RenderJob, fmt: str, target: Path, max_error: float | None = None) -> Path:
-    """Write ``job`` (one panel, nothing drawn over it) as the vector format ``fmt`` (``lottie`` or ``svg``:
-    :func:`~..encode.formats.is_vector`) to ``target``, atomically, by the format's writer."""
+def write_vector(job: RenderJob, fmt: str, target: Path, max_error: float | None = None, loop: bool = False) -> Path:
+    """Write ``job`` (one panel, nothing drawn over it) as the vector format ``fmt`` (``lottie``, ``dotlottie``
+    or ``svg``: :func:`~..encode.formats.is_vector`) to ``target``, atomically, by the format's writer;
+    ``loop``: the file says it plays over and over."""
     if not is_vector(fmt):
         raise OptionError(f"expected a vector format, {listing(names(vector=True), 'or')}, found {fmt!r}", "format")
-    clip = vector_clip(job, DEFAULT_MAX_ERROR if max_error is None else max_error)
+    clip = replace(vector_clip(job, DEFAULT_MAX_ERROR if max_error is None else max_error), loop=loop)
     written: Path = writer(fmt)(clip, target)
     return written
 
@@ -228,29 +236,49 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         shapes = [*shapes, end_shape]
     closed = tuple(shapes[0].closed[i] for i in keep)
     paths: tuple[Array, ...] = ()
+    contour_keys: tuple[tuple[tuple[int, ...], Array, tuple[Handles, ...]], ...] | None = None
+    fit_tolerance = max_error * CURVE_SHARE
     if exact is not None and every_pair:
         a, b, segment = exact
         ends = pair_paths(segment, np.array([0.0, 1.0]), method)  # every pair, growing ones too: (2, L_i, 2)
         path_frames: tuple[int, ...] = (a, b)
-        paths = tuple(np.stack([_drawn(viewport, ends[i][0], flips[i]), _drawn(viewport, ends[i][1], flips[i])])
-                      for i in keep)
+        fitted_curves = [fit_curves(np.concatenate([s, _drawn(viewport, ends[i][0], flips[i])[None],
+                                                    _drawn(viewport, ends[i][1], flips[i])[None]]), shut,
+                                    fit_tolerance) for s, i, shut in zip(samples, keep, closed)]
+        curves = [c for _, c, _ in fitted_curves]  # (F + 2, M_i, 3, 2) each
+        key_tolerance = _key_tolerance(max_error, max((e for _, _, e in fitted_curves), default=0.0))
+        paths = tuple(c[-2:] for c in curves)
         ease = _timing(segment) or STRAIGHT
         eases: tuple[Handles, ...] = (ease,)
-        # the eased chord must be what is drawn at every frame (a contour may grow otherwise than straight)
+        # the eased chord of the curves must be within the keyframes' share of the bound of the curves fitted
+        # at every frame (a contour may grow otherwise than straight)
         t = segment.local_t(run_times)
-        k0 = np.concatenate([p[0] for p in paths]) if paths else np.zeros((0, 2))
-        k1 = np.concatenate([p[1] for p in paths]) if paths else np.zeros((0, 2))
+        fitted = _flat_curves([c[:len(run_times)] for c in curves], len(run_times))
+        k0, k1 = _flat_curves([p[:1] for p in paths], 1)[0], _flat_curves([p[1:] for p in paths], 1)[0]
         chord = k0 + t[:, None, None] * (k1 - k0)
-        if paths and float(np.linalg.norm(chord - joined, axis=-1).max()) > max_error:
+        if paths and float(np.linalg.norm(chord - fitted, axis=-1).max()) > key_tolerance:
             paths = ()
             exact = None
     if exact is None or not every_pair:
         path_frames, paths, eases = (first,), (), ()
         if samples:
-            keyed = fit_keyframes(np.concatenate(samples, axis=1), max(max_error - _ROUNDING, max_error / 2))
+            fitted_curves = [fit_curves(s, shut, fit_tolerance) for s, shut in zip(samples, closed)]
+            curves = [c for _, c, _ in fitted_curves]
+            errors = [e for _, _, e in fitted_curves]
+            free = [free_points(c) for c in curves]  # only these are keyframed; the rest sit on their vertex
+            keyed = fit_keyframes(np.concatenate([c[:, f] for c, f in zip(curves, free)], axis=1),
+                                  _key_tolerance(max_error, max(errors)))
             path_frames = tuple(first + k for k in keyed.frames)
-            paths = tuple(np.split(keyed.values, np.cumsum([s.shape[1] for s in samples])[:-1], axis=1))
+            cuts = np.cumsum([int(f.sum()) for f in free])[:-1]
+            paths = tuple(with_fixed_points(v, f) for v, f in zip(np.split(keyed.values, cuts, axis=1), free))
             eases = keyed.handles()
+            if len(curves) > 1:  # each contour keyed on its own too, for the files that animate them apart
+                own = []
+                for c, f, error in zip(curves, free, errors):
+                    alone = fit_keyframes(c[:, f], _key_tolerance(max_error, error))
+                    own.append((tuple(first + k for k in alone.frames), with_fixed_points(alone.values, f),
+                                alone.handles()))
+                contour_keys = tuple(own)
     scale = viewport.scale if shape.stroke_scales else 1.0
     paints = [at.paint for at in shapes]
     fill, stroke, width, opacity = _paint_arrays(paints, scale)
@@ -275,8 +303,22 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                     opacity[pick], rule, cap, join, miter, joined,
                     None if contour_widths is None else contour_widths[pick],
                     None if gradient is None else gradient.keys(pick),
-                    clip_path_keys(shapes, first, viewport, max_error))
+                    clip_path_keys(shapes, first, viewport, max_error),
+                    exact_lengths=tuple(s.shape[1] for s in samples),
+                    contour_keys=contour_keys)
     return replace(run, gradient_paths=gradient_frame_paths(run, max_error))
+
+
+def _key_tolerance(max_error: float, fitted: float) -> float:
+    """How far keyframed control points may stray from the curves fitted at each frame, when those are
+    ``fitted`` pixels from the exact in-between: the rest of ``max_error``, less the files' rounding (a
+    point of a cubic is a convex combination of its control points, so it strays no farther)."""
+    return max(max_error - fitted - 2 * _ROUNDING, max_error * (1 - CURVE_SHARE) / 2)
+
+
+def _flat_curves(curves: list[Array], frames: int) -> Array:
+    """Curves ``(F, M_i, 3, 2)`` side by side as points ``(F, 3 · sum M_i, 2)``."""
+    return np.concatenate([c.reshape(frames, -1, 2) for c in curves], axis=1) if curves else np.zeros((frames, 0, 2))
 
 
 def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:

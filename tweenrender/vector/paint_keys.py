@@ -294,7 +294,7 @@ def gradient_frame_paths(run: VectorRun, tolerance: float
     placed = np.stack([_into(exact[f], centre[f], angle[f], ratio[f]) for f in range(len(frames))])
     stretch = max(1.0, float(ratio.max()))  # the transform lengthens no distance more than this
     picked = greedy_keyframes(placed * stretch, tolerance)
-    bounds = np.cumsum([0] + [p.shape[1] for p in run.paths])
+    bounds = np.cumsum([0] + [c.shape[1] for c in run.exact_contours()])
     return (tuple(run.first + k for k in picked), tuple(placed[picked, a:b] for a, b in zip(bounds, bounds[1:])),
             ())
 

@@ -1,0 +1,115 @@
+"""Cubic Bézier paths read back from written Lottie and animated SVG files and played as a player does, written
+independently of the exporter: a path's vertices and tangents move straight between keyframes through the
+span's cubic-bezier timing (bisection), each span is drawn from the closed form of the cubic, and the
+distance to the exact in-between polyline is shapely's discrete Hausdorff distance over densified lines.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import shapely
+
+_POINTS = 48  # points of each drawn cubic
+_DENSIFY = 0.1  # shapely splits each segment into 10 for the Hausdorff distance
+
+
+def timing(x: float, handles: tuple[float, ...]) -> float:
+    """CSS ``cubic-bezier(x1, y1, x2, y2)`` at ``x``: y(u) where x(u) = x, u by bisection."""
+    x1, y1, x2, y2 = handles
+
+    def curve(u: float, p1: float, p2: float) -> float:
+        return 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3
+
+    low, high = 0.0, 1.0
+    for _ in range(60):
+        mid = (low + high) / 2
+        low, high = (mid, high) if curve(mid, x1, x2) < x else (low, mid)
+    return curve(low, y1, y2)
+
+
+def cubic(p0: np.ndarray, p1: np.ndarray, p2: np.ndarray, p3: np.ndarray, count: int = _POINTS) -> np.ndarray:
+    """The cubic Bézier through control points ``(2,)`` each at ``count`` even parameters: ``(count, 2)``."""
+    u = np.linspace(0.0, 1.0, count)[:, None]
+    return (1 - u) ** 3 * p0 + 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3 * p3
+
+
+def drawn(vertices: np.ndarray, ins: np.ndarray, outs: np.ndarray, closed: bool) -> np.ndarray:
+    """The points a Lottie path (``v``, ``i``, ``o`` as ``(M, 2)``; tangents relative to their vertex) draws:
+    ``(P, 2)``, one cubic per span."""
+    count = len(vertices)
+    spans = [(k, k + 1) for k in range(count - 1)] + ([(count - 1, 0)] if closed and count > 1 else [])
+    if not spans:
+        return vertices.copy()
+    return np.concatenate([cubic(vertices[a], vertices[a] + outs[a], vertices[b] + ins[b], vertices[b])
+                           for a, b in spans])
+
+
+def lottie_path_at(prop: dict, frame: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+    """A Lottie path property (``ks``) at ``frame``: vertices, in and out tangents ``(M, 2)`` and closed, each
+    moved straight between keyframes through the span's ``o``/``i`` timing, held before the first and after
+    the last."""
+    if prop["a"] == 0:
+        value = prop["k"]
+        return (np.array(value["v"], float), np.array(value["i"], float), np.array(value["o"], float),
+                bool(value["c"]))
+    keys = prop["k"]
+    times = [k["t"] for k in keys]
+    values = [k["s"][0] for k in keys]
+    arrays = [np.array([[v[name] for v in values]], float)[0] for name in ("v", "i", "o")]  # (K, M, 2) each
+    closed = bool(values[0]["c"])
+    if frame <= times[0] or frame >= times[-1]:
+        index = 0 if frame <= times[0] else len(keys) - 1
+        return arrays[0][index], arrays[1][index], arrays[2][index], closed
+    index = int(np.searchsorted(times, frame, side="right")) - 1
+    key = keys[index]
+    s = timing((frame - times[index]) / (times[index + 1] - times[index]),
+               (key["o"]["x"][0], key["o"]["y"][0], key["i"]["x"][0], key["i"]["y"][0]))
+    v, i, o = (a[index] + s * (a[index + 1] - a[index]) for a in arrays)
+    return v, i, o, closed
+
+
+def svg_path_points(d: str) -> list[tuple[np.ndarray, bool]]:
+    """The subpaths an SVG ``d`` of ``M``, ``L``, ``C`` and ``Z`` (absolute) draws: ``[(points (P, 2), closed)]``."""
+    out: list[tuple[np.ndarray, bool]] = []
+    for sub in re.findall(r"M[^M]*", d):
+        tokens = re.findall(r"[MLCZ]|-?[\d.]+(?:e-?\d+)?", sub)
+        pen, start, pieces, closed = np.zeros(2), np.zeros(2), [], False
+        command, numbers = "", []
+        for token in tokens + ["M"]:
+            if token in "MLCZ":
+                if command == "M":
+                    pen = start = np.array(numbers[:2])
+                    pieces.append(pen[None])
+                elif command == "L":
+                    for k in range(0, len(numbers), 2):
+                        pieces.append(np.stack([pen, np.array(numbers[k:k + 2])]))
+                        pen = np.array(numbers[k:k + 2])
+                elif command == "C":
+                    for k in range(0, len(numbers), 6):
+                        c = np.array(numbers[k:k + 6]).reshape(3, 2)
+                        pieces.append(cubic(pen, c[0], c[1], c[2]))
+                        pen = c[2]
+                elif command == "Z":
+                    pieces.append(np.stack([pen, start]))
+                    closed = True
+                command, numbers = token, []
+            else:
+                numbers.append(float(token))
+        out.append((np.concatenate(pieces), closed))
+    return out
+
+
+def distance(points: np.ndarray, exact: np.ndarray, closed: bool) -> float:
+    """The Hausdorff distance (both ways, shapely's discrete one over densified lines) between drawn points
+    ``(P, 2)`` (a closed path's back at its start) and the exact polyline ``(L, 2)``, closed or not."""
+    exact = np.concatenate([exact, exact[:1]]) if closed else exact
+    lines = [shapely.Point(p[0]) if len(p) == 1 else shapely.LineString(p) for p in (points, exact)]
+    return float(shapely.hausdorff_distance(*lines, densify=_DENSIFY))
+
+
+def lottie_error(prop: dict, frame: float, exact: np.ndarray) -> float:
+    """How far the Lottie path ``prop`` played at ``frame`` is from the exact polyline ``(L, 2)``."""
+    v, i, o, closed = lottie_path_at(prop, frame)
+    return distance(drawn(v, i, o, closed), exact, closed)

@@ -1,0 +1,199 @@
+"""Cubic Bézier contours fitted to exact polylines at every frame, with one vertex count (maths §5.12).
+
+A contour's exact in-between is a polyline ``(F, L, 2)`` (F frames, L vertices, the same vertex
+identity at every frame). :func:`fit_curves` picks *break* vertices once for all frames (the corners,
+then more where needed) and fits each span between two breaks with one cubic whose ends are the
+breaks' exact points and whose inner control points are least squares over the span's vertices,
+at parameters fixed across frames (mean chord length). The fit is then one linear map of the samples,
+so control points move as smoothly as the vertices do and keyframe well. A span is split at its
+worst vertex while, at some frame, a vertex of the polyline lies farther than the tolerance from the
+drawn cubic or a point of the cubic (densely sampled) lies farther than it from the polyline.
+
+A curve is held as ``(F, M, 3, 2)``: per break vertex its in control point, the vertex, its out control
+point, absolute pixels (an open contour's first in and last out are the vertex itself, as are both
+control points of a span that is one edge of the polyline: it is straight at every frame). A player
+interpolating vertices and tangents straight between keyframes draws the Bézier of the interpolated
+control points; as a Bézier point is a convex combination of its control points, control points within
+``e`` of the fitted ones draw points within ``e`` of the fitted curve.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["fit_curves", "free_points", "with_fixed_points", "curve_points", "curve_error", "CORNER_DEGREES"]
+
+Array = NDArray[np.float64]
+
+CORNER_DEGREES = 50.0
+"""A vertex where the polyline turns by more than this at some frame is a break (a corner)."""
+
+RIDGE = 0.05
+"""The ridge on a span's inner offsets, as a share of their normal matrix's mean diagonal."""
+
+_CHUNK = 1 << 20  # point-segment pairs measured at once
+_DENSE = 24  # points of the cubic measured per span, besides those at the vertices' parameters
+
+
+def _bernstein(u: Array) -> Array:
+    """The cubic Bernstein basis at ``u (n,)``: ``(n, 4)``."""
+    v = 1.0 - u
+    return np.stack([v ** 3, 3 * v * v * u, 3 * v * u * u, u ** 3], axis=-1)
+
+
+def _parameters(samples: Array, i0: int, i1: int) -> Array:
+    """Parameters in [0, 1] of vertices ``i0..i1`` of ``samples (F, L', 2)``: mean chord length over frames
+    (even where the span has no length at any frame): ``(i1 - i0 + 1,)``."""
+    steps = np.linalg.norm(np.diff(samples[:, i0:i1 + 1], axis=1), axis=-1).mean(axis=0)  # (n + 1,)
+    total = float(steps.sum())
+    if not np.isfinite(total) or total <= 1e-12:
+        return np.linspace(0.0, 1.0, i1 - i0 + 1)
+    return np.concatenate([[0.0], np.cumsum(steps) / total])
+
+
+def _fit_span(samples: Array, i0: int, i1: int) -> tuple[Array, Array]:
+    """The cubic over vertices ``i0..i1`` of ``samples (F, L', 2)`` at every frame: control points
+    ``(F, 4, 2)`` and the vertices' parameters ``(i1 - i0 + 1,)``, one set for all frames (mean chord
+    length), so the fit is one linear map of the samples. (Moving the parameters towards each vertex's
+    nearest point, Newton's way, was measured to save nothing on icon pairs.)"""
+    u = _parameters(samples, i0, i1)
+    return _solve(samples, i0, i1, u), u
+
+
+def _solve(samples: Array, i0: int, i1: int, u: Array) -> Array:
+    """Control points ``(F, 4, 2)`` of the cubic from vertex ``i0`` to ``i1`` of ``samples (F, L', 2)`` through
+    the vertices at parameters ``u``: the straight line's thirds plus inner offsets solved by least squares,
+    a little ridge (:data:`RIDGE`) keeping them steady where the parameters crowd."""
+    p0, p3 = samples[:, i0], samples[:, i1]  # (F, 2)
+    thirds = np.stack([p0, (2 * p0 + p3) / 3, (p0 + 2 * p3) / 3, p3], axis=1)  # (F, 4, 2): the straight line
+    inner = u[1:-1]
+    if inner.size == 0:
+        return thirds
+    basis = _bernstein(inner)[:, 1:3]  # (n, 2)
+    residual = samples[:, i0 + 1:i1] - (p0[:, None] + inner[None, :, None] * (p3 - p0)[:, None])  # (F, n, 2)
+    normal = basis.T @ basis
+    # least norm where the parameters give no hold (every inner vertex on an end: no offset moves the cubic)
+    solve = np.linalg.pinv(normal + RIDGE * np.trace(normal) / 2 * np.eye(2)) @ basis.T  # (2, n)
+    controls = thirds.copy()
+    controls[:, 1:3] += np.einsum("kn,fnd->fkd", solve, residual)
+    return controls
+
+
+def curve_points(controls: Array, u: Array) -> Array:
+    """Points of cubics ``controls (..., 4, 2)`` at parameters ``u (n,)``: ``(..., n, 2)``."""
+    return np.einsum("nk,...kd->...nd", _bernstein(u), controls)
+
+
+def _to_polyline(points: Array, polyline: Array) -> Array:
+    """Distance from each of ``points (F, P, 2)`` to the polyline ``polyline (F, Q, 2)`` (its Q - 1
+    segments; one point if Q is 1) at the same frame: ``(F, P)``."""
+    if polyline.shape[1] == 1:
+        return np.linalg.norm(points - polyline, axis=-1)
+    a, b = polyline[:, :-1], polyline[:, 1:]  # (F, S, 2)
+    ab = b - a
+    length = np.maximum(np.sum(ab * ab, axis=-1), 1e-300)  # (F, S)
+    ap = points[:, :, None] - a[:, None]  # (F, P, S, 2)
+    s = np.clip(np.einsum("fpsd,fsd->fps", ap, ab) / length[:, None], 0.0, 1.0)
+    nearest = a[:, None] + s[..., None] * ab[:, None]
+    return np.sqrt(np.min(np.sum((points[:, :, None] - nearest) ** 2, axis=-1), axis=-1))
+
+
+def curve_error(controls: Array, u: Array, polyline: Array) -> tuple[Array, Array]:
+    """How far cubics ``controls (F, 4, 2)`` are from ``polyline (F, n, 2)`` (the span's exact vertices,
+    at parameters ``u (n,)``), both ways: per frame the larger of the vertices' distance to the cubic
+    (drawn through ``_DENSE`` points and the vertices' parameters) and the cubic's points' distance to
+    the polyline, ``(F,)``; and each vertex's largest distance over frames, ``(n,)``."""
+    dense = np.union1d(np.linspace(0.0, 1.0, max(_DENSE, 2 * len(u))), u)
+    drawn = curve_points(controls, dense)  # (F, D, 2)
+    step = max(1, _CHUNK // (len(dense) * len(u)))  # frames measured at once
+    vertices = np.concatenate([_to_polyline(polyline[f:f + step], drawn[f:f + step])
+                               for f in range(0, len(drawn), step)])  # (F, n)
+    points = np.concatenate([_to_polyline(drawn[f:f + step], polyline[f:f + step])
+                             for f in range(0, len(drawn), step)])  # (F, D)
+    return np.maximum(vertices.max(axis=1), points.max(axis=1)), vertices.max(axis=0)
+
+
+def _corners(samples: Array, closed: bool) -> set[int]:
+    """Vertices of ``samples (F, L, 2)`` where the polyline turns by more than :data:`CORNER_DEGREES` at
+    some frame (every vertex but the ends of an open one)."""
+    count = samples.shape[1]
+    if count < 3:
+        return set()
+    before = samples - np.roll(samples, 1, axis=1)
+    after = np.roll(samples, -1, axis=1) - samples
+    size = np.linalg.norm(before, axis=-1) * np.linalg.norm(after, axis=-1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        cosine = np.where(size > 0, np.sum(before * after, axis=-1) / np.where(size > 0, size, 1.0), 1.0)
+    turned = np.any(cosine < np.cos(np.radians(CORNER_DEGREES)), axis=0)  # (L,)
+    if not closed:
+        turned[[0, -1]] = False
+    return {int(i) for i in np.flatnonzero(turned)}
+
+
+def fit_curves(samples: Array, closed: bool, tolerance: float) -> tuple[NDArray[np.intp], Array, float]:
+    """Cubic Bézier contours for the polylines ``samples (F, L, 2)`` within ``tolerance`` pixels of them
+    at every frame (both ways): the break vertices ``(M,)`` (indices into L, increasing), the curves
+    ``(F, M, 3, 2)`` (in control point, vertex, out control point) and the largest distance measured (0
+    where every span is one edge). Samples must be finite."""
+    count = samples.shape[1]
+    if count < 2:
+        vertices = samples[:, :, None].repeat(3, axis=2)
+        return np.arange(count), vertices, 0.0
+    ring = np.concatenate([samples, samples[:, :1]], axis=1) if closed else samples  # (F, L', 2)
+    last = ring.shape[1] - 1
+    breaks = sorted(_corners(samples, closed) | {0, last})
+    if closed and len(breaks) < 3 and last >= 3:  # a closed contour takes at least three spans
+        breaks = sorted(set(breaks) | {last // 3, (2 * last) // 3})
+    spans: dict[tuple[int, int], Array] = {}
+    worst = 0.0
+    pending = [(a, b) for a, b in zip(breaks, breaks[1:]) if b > a]
+    while pending:
+        i0, i1 = pending.pop()
+        controls, u = _fit_span(ring, i0, i1)
+        if i1 - i0 >= 2:
+            error, per_vertex = curve_error(controls, u, ring[:, i0:i1 + 1])
+            if float(error.max()) > tolerance:
+                inner = per_vertex[1:-1]
+                cut = i0 + 1 + int(np.argmax(inner)) if inner.size else (i0 + i1) // 2
+                if not i0 < cut < i1 or inner.max() <= 0:
+                    cut = (i0 + i1) // 2
+                pending += [(i0, cut), (cut, i1)]
+                continue
+            worst = max(worst, float(error.max()))
+        spans[(i0, i1)] = controls
+    order = sorted(spans)
+    frames = samples.shape[0]
+    heads = np.array([i0 for i0, _ in order], dtype=np.intp)
+    curves = np.empty((frames, len(order), 3, 2))
+    for k, key in enumerate(order):
+        controls = spans[key]
+        if key[1] - key[0] == 1:  # an edge: straight at every frame, its control points on its ends
+            controls = controls[:, [0, 0, 3, 3]]
+        curves[:, k, 1] = controls[:, 0]
+        curves[:, k, 2] = controls[:, 1]
+        curves[:, (k + 1) % len(order), 0] = controls[:, 2]
+    if not closed:  # the last vertex ends the last span: no span leaves it
+        end = spans[order[-1]]
+        tail = np.stack([end[:, 2], end[:, 3], end[:, 3]], axis=1)[:, None]  # (F, 1, 3, 2)
+        curves[:, 0, 0] = curves[:, 0, 1]
+        curves = np.concatenate([curves, tail], axis=1)
+        heads = np.append(heads, last)
+    return heads, curves, worst
+
+
+def free_points(curves: Array) -> NDArray[np.bool_]:
+    """Which points of ``curves (F, M, 3, 2)`` are their own (``(M, 3)``): every vertex, and each control
+    point that differs from its vertex at some frame (the others are the vertex, at every frame)."""
+    free = np.any(curves != curves[:, :, 1:2], axis=(0, 3))
+    free[:, 1] = True
+    return free
+
+
+def with_fixed_points(points: Array, free: NDArray[np.bool_]) -> Array:
+    """Curves ``(K, M, 3, 2)`` from the values ``(K, count of free, 2)`` of their ``free (M, 3)`` points, the
+    others on their vertex."""
+    curves = np.zeros((len(points), *free.shape, 2))
+    curves[:, free] = points
+    vertices = curves[:, :, 1:2].repeat(3, axis=2)
+    return np.where(free[None, :, :, None], curves, vertices)

@@ -31,7 +31,7 @@ def lottie_documents(folder: Path) -> list[tuple[str, object]]:
     for path in sorted(folder.rglob("*.json")):
         try:
             document = json.loads(path.read_text(encoding="utf-8"))
-        except (OSError, UnicodeDecodeError, ValueError):
+        except (OSError, UnicodeDecodeError, ValueError, RecursionError):  # not a file we wrote
             continue
         if isinstance(document, dict) and "v" in document and "layers" in document:
             out.append((str(path), document))

@@ -66,3 +66,26 @@ def test_a_mask_is_refused_in_one_line_naming_the_file_and_line(tmp_path: Path) 
         tr.load_scene(svg)
     message = str(caught.value)
     assert "\n" not in message and "masked.svg" in message and "mask" in message and "line 2" in message
+
+
+def _clipped(tmp_path: Path, defs: str) -> np.ndarray:
+    svg = tmp_path / "cc.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">' + defs +
+                   '<rect width="100" height="100" fill="#008000" clip-path="url(#a)"/></svg>')
+    return tr.frame(tr.load_scene(svg), 0.0, size=(100, 100), background="#ffffff")[..., :3]
+
+
+def test_a_clip_path_on_a_clip_path_intersects_them(tmp_path: Path) -> None:
+    # SVG 1.1 §14.3.5: the clip path's own clip-path clips its region: [0, 60] ∩ [40, 100] across
+    picture = _clipped(tmp_path, '<clipPath id="b"><rect x="40" width="60" height="100"/></clipPath>'
+                                 '<clipPath id="a" clip-path="url(#b)"><rect width="60" height="100"/></clipPath>')
+    ink = (picture != 255).any(axis=-1)
+    assert ink[50, 45:55].all() and not ink[50, :38].any() and not ink[50, 62:].any()
+
+
+def test_a_clip_path_on_a_clip_path_that_loops_back_is_ignored(tmp_path: Path) -> None:
+    # as Chromium and resvg draw it: b's clip-path leads back to a, so only a and b clip: x in [0, 60] ∩ [0, 80]
+    picture = _clipped(tmp_path, '<clipPath id="b" clip-path="url(#a)"><rect width="80" height="100"/></clipPath>'
+                                 '<clipPath id="a" clip-path="url(#b)"><rect width="60" height="100"/></clipPath>')
+    ink = (picture != 255).any(axis=-1)
+    assert ink[50, 2:58].all() and not ink[50, 62:].any()

@@ -40,6 +40,13 @@ CASES = {
                           'r="10" gradientTransform="translate(20 20) scale(1.5 1)"/></defs>'
                           '<g transform="translate(2 3) scale(0.9)"><rect x="0" y="0" width="40" height="36" '
                           'fill="url(#g)"/></g>',
+    # userSpaceOnUse without coordinates: x2 100 %, cx cy r 50 % of the viewport (editors write these)
+    "user-space-defaults": '<defs><linearGradient id="g" gradientUnits="userSpaceOnUse">'
+                           '<stop offset="0" stop-color="#ffcc00"/><stop offset="1" stop-color="#006633"/>'
+                           '</linearGradient><radialGradient id="h" gradientUnits="userSpaceOnUse" fx="30%">'
+                           '<stop offset="0" stop-color="#ffffff"/><stop offset="1" stop-color="#660066"/>'
+                           '</radialGradient></defs><rect x="2" y="2" width="36" height="16" fill="url(#g)"/>'
+                           '<rect x="2" y="20" width="36" height="18" fill="url(#h)"/>',
 }
 
 
@@ -87,3 +94,14 @@ def test_an_inbetween_gradient_moves_and_grows_with_its_element(tmp_path: Path) 
     assert iou >= 0.99 and error <= 0.01, (iou, error)
     flat = tr.frame(scene, 0.5, method="linear", size=(256, 256), background="#ffffff")
     assert len(np.unique(flat[..., :3].reshape(-1, 3), axis=0)) > 100  # a gradient, not one mean colour
+
+
+def test_a_radial_gradient_of_radius_zero_paints_its_last_stop(tmp_path: Path) -> None:
+    # SVG 1.1 §13.2.3 (and Chromium, resvg): r = 0 paints the area in the last stop's colour and opacity
+    svg = tmp_path / "zero.svg"
+    svg.write_text(HEAD + '<defs><radialGradient id="g" r="0"><stop offset="0" stop-color="#ffffff"/>'
+                   '<stop offset="1" stop-color="#0066cc" stop-opacity="0.5"/></radialGradient></defs>'
+                   '<rect x="5" y="5" width="30" height="30" fill="url(#g)"/></svg>')
+    picture = _ours(svg, 40)
+    expected = 0.5 * np.array([0, 102, 204]) + 0.5 * 255
+    assert np.abs(picture[20, 20] - expected).max() <= 1.5 and (picture[1, 1] == 255).all()

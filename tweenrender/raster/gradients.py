@@ -33,12 +33,12 @@ def gradient_shader(gradient: Gradient, viewport: Viewport) -> skia.Shader | Non
     if gradient.kind == "linear":
         x1, y1, x2, y2 = gradient.geometry
         if (x1, y1) == (x2, y2):  # SVG: the last stop's colour over the whole area
-            return skia.Shader.Color(colours[-1])
+            return skia.Shaders.Color(colours[-1])
         return skia.GradientShader.MakeLinear([skia.Point(x1, y1), skia.Point(x2, y2)], colours, offsets, tile, 0,
                                               matrix)
     cx, cy, r, fx, fy = gradient.geometry
     if r <= 0:
-        return skia.Shader.Color(colours[-1])
+        return skia.Shaders.Color(colours[-1])
     if (fx, fy) == (cx, cy):
         return skia.GradientShader.MakeRadial(skia.Point(cx, cy), r, colours, offsets, tile, 0, matrix)
     return skia.GradientShader.MakeTwoPointConical(skia.Point(fx, fy), 0.0, skia.Point(cx, cy), r, colours, offsets,

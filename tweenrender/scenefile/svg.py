@@ -1,9 +1,10 @@
 """SVG drawings as keys: one element's contours (``points = { svg, id }``), or a whole drawing.
 
-World units are the drawing's *user units* (the coordinates written in the
-file, inside the root's viewBox), with ``world y = -svg y``; the root's
-viewBox→viewport scaling is not applied, so ``width="100mm" viewBox="0 0 100 100"``
-gives 100 units, not 378 CSS pixels. Lengths written with units inside the
+For one element, world units are the drawing's *user units* (the coordinates
+written in the file, inside the root's viewBox), with ``world y = -svg y``; the
+root's viewBox→viewport scaling is not applied, so ``width="100mm" viewBox="0 0 100 100"``
+gives 100 units, not 378 CSS pixels. A whole drawing with a viewBox and an absolute
+width and height is its viewport, the viewBox placed in it by ``preserveAspectRatio``. Lengths written with units inside the
 drawing (``r="2mm"``) convert at 96 per inch, as CSS does. Curves are flattened
 within a tolerance in world units (:mod:`.svg_flatten`).
 
@@ -13,8 +14,9 @@ A whole drawing (:func:`read_drawing`) gives every visible shape element —
 paint as an SVG renderer resolves it (:mod:`.svg_document`). Invisible
 elements (no fill and no stroke, ``display:none``, ``visibility:hidden``, zero
 opacity) are left out. Linear and radial gradient fills are kept
-(:mod:`.svg_gradients`), and clip paths as clip regions (``Element.clips``). Refused:
-masks. Not drawn: filters, markers; gradient strokes and patterns are painted with
+(:mod:`.svg_gradients`), and clip paths as clip regions (``Element.clips``). SVG's
+error rules apply (:mod:`.svg_pathdata`): bad data is drawn up to its first error, an
+element of negative size or a ``<use>`` loop is left out. Refused: masks. Not drawn: filters, markers; gradient strokes and patterns are painted with
 the average colour of their stops.
 """
 
@@ -32,6 +34,9 @@ from ..errors import SceneError, did_you_mean
 from ..model import Color, Contour, Paint, frozen_points
 from .svg_document import SHAPES, Document, Drawn, Node, compose, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
+from .svg_color import parse_color
+from .svg_gradients import stop_color
+from .svg_pathdata import path_prefix, points_prefix
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
            "load_svg_contours", "read_drawing", "view_box"]
@@ -129,7 +134,7 @@ def load_svg_contours(svg_path: Path, element_id: str, tolerance: float = DEFAUL
         if drawn is None:
             raise Refusal(f"expected an element that is drawn, found one inside <defs> or another "
                           f"unrendered container (line {node.line})")
-        contours = _contours(drawn, _FLIP @ drawn.ctm, tol, Budget(MAX_VERTICES, tol))
+        contours = _contours(drawn, _FLIP @ drawn.ctm, tol, Budget(MAX_VERTICES, tol), lenient=False)
         if not contours:
             raise Refusal(_why_not_drawn(node))
         return contours
@@ -209,6 +214,39 @@ def view_box(document: Document) -> tuple[float, float, float, float] | None:
     return None
 
 
+def aspect_matrix(box: tuple[float, float, float, float], width: float, height: float, rule: str
+                  ) -> NDArray[np.float64]:
+    """The 3x3 map of view box ``box`` ``(x, y, w, h)`` into a ``width`` × ``height`` viewport at the origin by
+    the ``preserveAspectRatio`` value ``rule`` (default ``xMidYMid meet``; SVG 1.1 §7.8)."""
+    words = rule.split()
+    if words[:1] == ["defer"]:
+        words = words[1:]
+    align = words[0] if words else "xMidYMid"
+    x, y, w, h = box
+    sx, sy = width / w, height / h
+    if align != "none":
+        sx = sy = max(sx, sy) if words[1:2] == ["slice"] else min(sx, sy)
+    where = {"Min": 0.0, "Mid": 0.5, "Max": 1.0}
+    fx, fy = (where.get(align[1:4], 0.5), where.get(align[5:8], 0.5)) if len(align) == 8 else (0.5, 0.5)
+    return np.array([[sx, 0.0, -x * sx + (width - w * sx) * fx], [0.0, sy, -y * sy + (height - h * sy) * fy],
+                     [0.0, 0.0, 1.0]])
+
+
+def _root_viewport(document: Document) -> tuple[tuple[float, float, float, float] | None, NDArray[np.float64]]:
+    """The drawing's box in its viewport's units and the map of its user units into them: with a
+    ``viewBox`` and an absolute ``width`` and ``height``, the viewport ``(0, 0, width, height)`` and the
+    ``preserveAspectRatio`` map; else the view box and the identity."""
+    box = view_box(document)
+    root = document.root
+    sizes = root.attrs.get("width", ""), root.attrs.get("height", "")
+    if box is None or "viewBox" not in root.attrs or not all(t.strip() for t in sizes) or "%" in "".join(sizes):
+        return box, np.eye(3)
+    width, height = length(root, "width", 0.0), length(root, "height", 0.0)
+    if not (width > 0 and height > 0 and math.isfinite(width) and math.isfinite(height)):
+        return box, np.eye(3)
+    return (0.0, 0.0, width, height), aspect_matrix(box, width, height, root.attrs.get("preserveAspectRatio", ""))
+
+
 def read_drawing(svg_path: Path, tolerance: float | None = None,
                  into: tuple[float, float, float, float] | None = None) -> Drawing:
     """Every visible shape element of the drawing, in paint order, in world units.
@@ -219,15 +257,15 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
     """
     try:
         document = parse(read(Path(svg_path)))
-        box = view_box(document)
+        box, placed = _root_viewport(document)
         drawn = [d for d in walk(document) if d.visible]
         if box is None:  # no viewBox and no size: the elements' own extent
             box = _extent(drawn)
         x, y, w, h = box
         world = (-y - h, x + w, -y)  # the box flipped: ymin, xmax, ymax
-        to_world = _FLIP.copy()
+        to_world = _FLIP @ placed
         if into is not None:
-            to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP
+            to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP @ placed
             world_box = into
         else:
             world_box = (x, world[0], world[1], world[2])
@@ -278,22 +316,39 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     if not contours:
         return None
     paint = _with_gradient(paint, d, to_world, contours)
-    clips = tuple(_clip_region(ident, space, d, to_world, tol, budget) for ident, space in d.clips)
+    clips = tuple(region for ident, space in d.clips for region in _clip_regions(ident, space, d, to_world, tol,
+                                                                                   budget))
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
                    tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
                    miter, tuple(c for c in clips if c is not None))
 
 
-def _clip_region(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,
-                 budget: Budget) -> tuple[Contour, ...] | None:
-    """The region of ``<clipPath id=ident>`` in world units (its shapes' closed contours, nonzero), applied
-    in the user ``space`` of the element that names it; None when ``ident`` is no clip path."""
-    from .svg_document import _Walk
+def _clip_regions(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,
+                  budget: Budget, seen: tuple[str, ...] = ()) -> list[tuple[Contour, ...]]:
+    """The regions of ``<clipPath id=ident>`` in world units (each its shapes' closed contours, nonzero), to be
+    intersected: its own, and those of the clip path on it (SVG 1.1 §14.3.5), applied in the user ``space``
+    of the element that names it; none when ``ident`` is no clip path. A clip-path that leads back into
+    the chain is ignored."""
+    from .svg_document import own_style
 
     nodes = d.document.ids.get(ident)
     if not nodes or nodes[0].tag != "clipPath":
-        return None
-    clip = nodes[0]
+        return []
+    if ident in seen:
+        return []  # a clip path's clip-path in a loop is ignored
+    regions = [_clip_region(nodes[0], ident, space, d, to_world, tol, budget)]
+    reference = own_style(nodes[0], d.document).get("clip-path", "none").strip()
+    if reference.startswith("url("):
+        target = reference[4:].partition(")")[0].strip().strip("'\"")
+        regions += _clip_regions(target.removeprefix("#"), space, d, to_world, tol, budget, seen + (ident,))
+    return regions
+
+
+def _clip_region(clip: Node, ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64],
+                 tol: float, budget: Budget) -> tuple[Contour, ...]:
+    """The region of one ``<clipPath>`` in world units (its shapes' closed contours, nonzero)."""
+    from .svg_document import _Walk
+
     units = clip.attrs.get("clipPathUnits", "userSpaceOnUse").strip()
     if units == "objectBoundingBox":
         if space is not d.ctm:
@@ -390,8 +445,6 @@ def _diagonal(document: Document) -> float:
 def _color(text: str, style: dict[str, str], document: Document, opacity: float) -> Color | None:
     """A paint value as straight RGBA: ``none`` → None; ``currentColor`` → the ``color`` property
     (black by default); ``url(#gradient)`` → the average of its stops; else a CSS colour."""
-    from svgelements import Color as SvgColor
-
     value = text.strip()
     if value in ("none", "transparent") or not value:
         return None
@@ -406,18 +459,13 @@ def _color(text: str, style: dict[str, str], document: Document, opacity: float)
         value = style.get("color", "black").strip() or "black"
         if value.lower() == "currentcolor":
             value = "black"
-    try:
-        c = SvgColor(value)
-    except (ValueError, TypeError):
-        c = None
-    if c is None or c.value is None:
+    c = parse_color(value)
+    if c is None:
         return (0, 0, 0, int(round(255 * opacity)))  # an unreadable colour: black, as browsers fall back
-    return (c.red, c.green, c.blue, int(round(c.alpha * opacity)))
+    return (c[0], c[1], c[2], int(round(c[3] * opacity)))
 
 
 def _gradient_color(ident: str, document: Document, depth: int = 0) -> Color | None:
-    from svgelements import Color as SvgColor
-
     nodes = document.ids.get(ident)
     if not nodes or depth > 8:
         return None
@@ -428,16 +476,7 @@ def _gradient_color(ident: str, document: Document, depth: int = 0) -> Color | N
         return _gradient_color(href.lstrip("#"), document, depth + 1) if href.startswith("#") else None
     colours = []
     for stop in stops:
-        from .svg_document import own_style
-
-        own = own_style(stop, document)
-        try:
-            c = SvgColor(own.get("stop-color", "black"))
-        except (ValueError, TypeError):
-            continue
-        if c.value is None:
-            continue
-        colours.append((c.red, c.green, c.blue, c.alpha * _number(own.get("stop-opacity"), 1.0)))
+        colours.append(stop_color(stop, node, document))
     if not colours:
         return None
     mean = np.mean(np.array(colours, dtype=float), axis=0)
@@ -447,9 +486,12 @@ def _gradient_color(ident: str, document: Document, depth: int = 0) -> Color | N
 # -- geometry ------------------------------------------------------------------------------------------
 
 
-def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budget, unstroked: bool = False
-              ) -> list[tuple[NDArray[np.float64], bool]]:
+def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budget, unstroked: bool = False,
+              lenient: bool = True) -> list[tuple[NDArray[np.float64], bool]]:
     """The element's subpaths flattened into world contours, without degenerate ones.
+
+    ``lenient``: SVG's error rules (bad data drawn up to its first error, a negative size not drawn);
+    else such an element is refused (one element asked for by id).
 
     A subpath is closed when it ends in Z, or ends where it starts; with ``unstroked`` (an
     element drawn without a stroke, whose fill closes every subpath anyway) every subpath of
@@ -457,7 +499,7 @@ def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budge
     """
     if not np.all(np.isfinite(to_world)) or abs(_determinant(to_world)) == 0:
         return []  # a transform that collapses the element: nothing is drawn (as in SVG)
-    shape = _geometry(d.node, d.document)
+    shape = _geometry(d.node, d.document, lenient)
     if shape is None:
         return []
     try:
@@ -476,22 +518,33 @@ def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budge
     return out
 
 
-def _geometry(node: Node, document: Document):  # type: ignore[no-untyped-def]
-    """The element as an svgelements shape in its own coordinates, or None when SVG draws nothing."""
+def _geometry(node: Node, document: Document, lenient: bool = True):  # type: ignore[no-untyped-def]
+    """The element as an svgelements shape in its own coordinates, or None when SVG draws nothing
+    (``lenient``: by SVG's error rules; else a bad element is refused)."""
     from svgelements import Circle, Ellipse, Path, Polygon, Polyline, Rect, SimpleLine
 
     box = view_box(document) or (0.0, 0.0, 100.0, 100.0)
     w, h, diag = box[2], box[3], math.hypot(box[2], box[3]) / math.sqrt(2)
-    _check_syntax(node)
     tag = node.tag
+    if lenient:
+        if tag in ("path", "polygon", "polyline"):
+            _within_limit(node.attrs.get("d" if tag == "path" else "points", ""), node)
+        if any(node.attrs.get(name, "").strip().startswith("-") for name in ("width", "height", "r")):
+            return None  # SVG: a negative size is an error, and the element is not rendered
+    else:
+        _check_syntax(node)
     if tag == "path":
+        d = path_prefix(node.attrs.get("d", ""))[0] if lenient else node.attrs.get("d", "")
+        if not d:
+            return None
         try:
-            return Path(node.attrs.get("d", ""))
+            return Path(d)
         except Exception as error:  # svgelements refuses data with too few numbers for a command
             raise Refusal(_why_not_drawn(node)) from error
     if tag in ("polygon", "polyline"):
         cls = Polygon if tag == "polygon" else Polyline
-        return cls({"points": node.attrs.get("points", "")})
+        points = node.attrs.get("points", "")
+        return cls({"points": points_prefix(points)[0] if lenient else points})
     if tag == "line":
         return SimpleLine({k: str(length(node, k, 0.0, w if k[0] == "x" else h)) for k in ("x1", "y1", "x2", "y2")})
     if tag == "rect":
@@ -500,7 +553,7 @@ def _geometry(node: Node, document: Document):  # type: ignore[no-untyped-def]
             return None
         values = {"x": length(node, "x", 0.0, w), "y": length(node, "y", 0.0, h), "width": width, "height": height}
         for k, rel in (("rx", w), ("ry", h)):
-            if k in node.attrs:
+            if k in node.attrs and not node.attrs[k].strip().startswith("-"):  # a negative radius is auto
                 values[k] = length(node, k, 0.0, rel)
         return Rect({k: str(v) for k, v in values.items()})
     if tag == "circle":
@@ -509,7 +562,15 @@ def _geometry(node: Node, document: Document):  # type: ignore[no-untyped-def]
             return None
         return Circle({"cx": str(length(node, "cx", 0.0, w)), "cy": str(length(node, "cy", 0.0, h)), "r": str(r)})
     if tag == "ellipse":
-        rx, ry = length(node, "rx", 0.0, w), length(node, "ry", 0.0, h)
+        radii = [node.attrs.get(k, "auto").strip() for k in ("rx", "ry")]
+        if lenient and any(r == "auto" or r.startswith("-") for r in radii):  # SVG 2: auto is the other radius
+            valid = [(k, rel) for k, r, rel in (("rx", radii[0], w), ("ry", radii[1], h))
+                     if r != "auto" and not r.startswith("-")]
+            if not valid:
+                return None
+            rx = ry = length(node, valid[0][0], 0.0, valid[0][1])
+        else:
+            rx, ry = length(node, "rx", 0.0, w), length(node, "ry", 0.0, h)
         if rx <= 0 or ry <= 0:
             return None
         return Ellipse({"cx": str(length(node, "cx", 0.0, w)), "cy": str(length(node, "cy", 0.0, h)),

@@ -343,6 +343,7 @@ class _Walk:
         self.keep_hidden = keep_hidden
         self.visited = 0
         self.using: list[str] = []
+        self.looping: dict[str, bool] = {}  # id → whether a <use> of it leads back to itself
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
               shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
@@ -387,17 +388,36 @@ class _Walk:
             raise Refusal(f"expected shapes, found <{node.tag}> (line {node.line}); "
                           "convert it to paths in the editor (Inkscape: Path > Object to Path)")
 
+    def loops(self, ident: str, open_ids: set[str]) -> bool:
+        """Whether the element ``ident`` (through the ``<use>`` elements in it) leads back to an id in
+        ``open_ids`` or to itself; each id is searched once."""
+        if ident in open_ids:
+            return True
+        if ident in self.looping:
+            return self.looping[ident]
+        target = self.document.ids.get(ident)
+        found = False
+        if target:
+            open_ids.add(ident)
+            stack = [target[0]]
+            while stack and not found:
+                current = stack.pop()
+                stack.extend(current.children)
+                if current.tag == "use":
+                    ref = current.attrs.get("href", current.attrs.get("xlink:href", "")).strip()
+                    found = ref.startswith("#") and self.loops(ref[1:], open_ids)
+            open_ids.discard(ident)
+        self.looping[ident] = found
+        return found
+
     def use(self, node: Node, style: dict[str, str], ctm: NDArray[np.float64], opacity: float,
             shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
         href = node.attrs.get("href", node.attrs.get("xlink:href", "")).strip()
         if not href.startswith("#"):
             return  # external references are not followed
         target = self.document.ids.get(href[1:])
-        if not target:
-            raise Refusal(f"expected <use> to refer to an element of the drawing, found {href!r} (line {node.line})")
-        if href in self.using:
-            raise Refusal(f"expected <use> references without a loop, found {href!r} inside itself "
-                          f"(line {node.line})")
+        if not target or href in self.using or self.loops(href[1:], set()):
+            return  # SVG: a <use> of nothing, or in a loop of references, is in error and not rendered
         placed = compose(ctm, np.array([[1.0, 0.0, length(node, "x")], [0.0, 1.0, length(node, "y")], [0.0, 0.0, 1.0]]),
                          node, "the <use> element's x, y transform")
         self.using.append(href)

@@ -13,13 +13,15 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..model import Color, Gradient
+from .svg_color import parse_color
 from .svg_document import Document, Node, matrix, own_style
 
-__all__ = ["read_gradient", "gradient_ref"]
+__all__ = ["read_gradient", "gradient_ref", "stop_color"]
 
 _DEPTH = 8  # href links followed at most
-_DEFAULTS = {"linearGradient": {"x1": "0", "y1": "0", "x2": "1", "y2": "0"},
-             "radialGradient": {"cx": "0.5", "cy": "0.5", "r": "0.5"}}
+# percentages: of the bounding box's unit square, or of the viewport in userSpaceOnUse
+_DEFAULTS = {"linearGradient": {"x1": "0%", "y1": "0%", "x2": "100%", "y2": "0%"},
+             "radialGradient": {"cx": "50%", "cy": "50%", "r": "50%"}}
 
 
 def gradient_ref(value: str) -> str | None:
@@ -54,31 +56,65 @@ def _number(text: str, relative: float) -> float:
     return value
 
 
-def _stops(nodes: list[Node], document: Document, opacity: float) -> list[tuple[float, Color]]:
-    from svgelements import Color as SvgColor
+def _ancestors(target: Node, document: Document) -> list[Node]:
+    """The elements around ``target``, outermost first (empty when it is not in the document's tree)."""
+    stack: list[tuple[Node, tuple[Node, ...]]] = [(document.root, ())]
+    while stack:
+        node, above = stack.pop()
+        if node is target:
+            return list(above)
+        stack.extend((child, above + (node,)) for child in node.children)
+    return []
 
+
+def _inherited(name: str, nodes: list[Node], document: Document, default: str) -> str:
+    """Property ``name`` as the innermost of ``nodes`` (outermost first) that sets it other than ``inherit``."""
+    for node in reversed(nodes):
+        value = own_style(node, document).get(name, "").strip()
+        if value and value != "inherit":
+            return value
+    return default
+
+
+def stop_color(stop: Node, holder: Node, document: Document) -> tuple[float, float, float, float]:
+    """A ``<stop>``'s colour with its ``stop-opacity`` folded in: ``(r, g, b, a)`` floats in [0, 255];
+    ``currentColor`` and ``inherit`` are taken from the gradient and the elements around it."""
+    own = own_style(stop, document)
+    text = own.get("stop-color", "black").strip() or "black"
+    if text in ("inherit", "currentColor", "currentcolor"):
+        around = _ancestors(holder, document) + [holder]
+        if text == "inherit":  # stop-color is not inherited: the parent's own value, up through inherits
+            text = "black"
+            for node in reversed(around):
+                value = own_style(node, document).get("stop-color", "").strip()
+                if value != "inherit":
+                    text = value or "black"
+                    break
+        if text.lower() == "currentcolor":
+            own_colour = own.get("color", "").strip()
+            text = own_colour if own_colour and own_colour != "inherit" else _inherited("color", around, document,
+                                                                                         "black")
+    c = parse_color(text) or (0, 0, 0, 255)
+    opacity_text = own.get("stop-opacity", "1").strip()
+    try:
+        alpha = float(opacity_text[:-1]) / 100.0 if opacity_text.endswith("%") else float(opacity_text)
+    except ValueError:
+        alpha = 1.0
+    return float(c[0]), float(c[1]), float(c[2]), min(max(alpha, 0.0), 1.0) * c[3]
+
+
+def _stops(nodes: list[Node], document: Document, opacity: float) -> list[tuple[float, Color]]:
     holder = next((n for n in nodes if any(c.tag == "stop" for c in n.children)), None)
     if holder is None:
         return []
     stops: list[tuple[float, Color]] = []
     last = 0.0
     for stop in (c for c in holder.children if c.tag == "stop"):
-        own = own_style(stop, document)
         offset = _number(stop.attrs.get("offset", "0"), 1.0)
         offset = min(max(offset if math.isfinite(offset) else 0.0, 0.0, last), 1.0)  # clamped, never decreasing
         last = offset
-        try:
-            c = SvgColor(own.get("stop-color", "black"))
-        except (ValueError, TypeError):
-            c = SvgColor("black")
-        if c.value is None:
-            c = SvgColor("black")
-        try:
-            alpha = float(own.get("stop-opacity", "1").strip().rstrip("%"))
-        except ValueError:
-            alpha = 1.0
-        alpha = min(max(alpha, 0.0), 1.0) * c.alpha * opacity
-        stops.append((offset, (c.red, c.green, c.blue, int(round(alpha)))))
+        r, g, b, alpha = stop_color(stop, holder, document)
+        stops.append((offset, (int(r), int(g), int(b), int(round(alpha * opacity)))))
     return stops
 
 

@@ -163,3 +163,33 @@ def test_point_states_are_exact_on_and_a_few_ulps_off_the_outline() -> None:
             checked += 1
             disagreements += int(state) != _exact_state(p, polygon)
     assert checked == 720 and disagreements == 0
+
+
+def _grid(count: int, cell: float = 3.0) -> list[np.ndarray]:
+    """``count`` unit squares ``(4, 2)`` on a grid of ``cell`` spacing, 20 to a row."""
+    return [SMALL + [cell * (i % 20), cell * (i // 20)] for i in range(count)]
+
+
+def test_many_small_contours_are_tested_pairwise_only_where_their_boxes_meet(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """60 squares, one of which sweeps along its row through its neighbours: the times it meets them are
+    shapely's, and point tests are spent only on pairs whose boxes meet (not on all 1 770 pairs)."""
+    import tweenrender.core.tangles as tangles
+
+    k0 = _grid(60)
+    k1 = [c + [0.0, 0.5] for c in k0]  # every square moves up half a unit, apart from the others
+    k1[0] = k0[0] + [57.0, 0.5]  # the first sweeps right past the other 19 of its row, ending past the last
+    t = np.linspace(0.0, 1.0, 21)
+    frames = [(1.0 - t)[:, None, None] * a + t[:, None, None] * b for a, b in zip(k0, k1)]
+    calls = [0]
+    relation = tangles._relation
+
+    def counted(c: np.ndarray, d: np.ndarray) -> np.ndarray:
+        calls[0] += 1
+        return relation(c, d)
+
+    monkeypatch.setattr(tangles, "_relation", counted)
+    crossings, strokes = contact_times(frames, [True] * 60, t, k0, k1)
+    assert calls[0] < 300  # all pairs: 1 770
+    found = [tangled([f[k] for f in frames], k0, k1, [True] * 60)[0] for k in range(len(t))]
+    assert crossings == [float(x) for x, hit in zip(t, found) if hit] and strokes == []
+    assert len(crossings) >= 15  # the sweeping square meets a neighbour at most of the times

@@ -32,6 +32,8 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from .geometry import bounding_boxes, boxes_holding
+
 __all__ = ["SWEEP", "parents", "tangles", "tangled_times", "proper_crossings", "crossing_pairs", "linear_tangles",
            "point_states", "Apart", "apart_in_keys", "contact_times"]
 
@@ -183,10 +185,12 @@ def parents(contours: Sequence[Array], closed: Sequence[bool]) -> list[int | Non
     """Each contour's parent: the smallest other closed contour around its first vertex (None for none)."""
     shut = [c for c, (p, s) in enumerate(zip(contours, closed)) if s and len(p) >= 3]
     areas = {c: _area(np.asarray(contours[c], dtype=np.float64)) for c in shut}
+    boxes = bounding_boxes([contours[d] for d in shut])  # only a box holding the vertex can have it inside
     out: list[int | None] = []
     for c, points in enumerate(contours):
-        around = [d for d in shut if d != c and len(points) and
-                  _inside(np.asarray(points, dtype=np.float64)[0], np.asarray(contours[d], dtype=np.float64))]
+        first = np.asarray(points, dtype=np.float64)[0] if len(points) else None
+        near = [] if first is None else [shut[k] for k in boxes_holding(first, boxes).tolist()]
+        around = [d for d in near if d != c and _inside(first, np.asarray(contours[d], dtype=np.float64))]
         out.append(min(around, key=lambda d: areas[d]) if around else None)
     return out
 
@@ -292,11 +296,22 @@ class Apart:
     ``nested``: ``(c, d, relation)`` for closed contours ``c < d`` apart in both keys, ``relation`` their
     nesting in both (1: c inside d, -1: d inside c, 0: neither); ``strokes``: pairs ``(c, d)``, one open
     at least, apart in both keys; ``parent``: each contour's parent in the first key (:func:`parents`).
+    Closed contours whose bounding boxes are apart in both keys are left out of ``nested`` (their
+    relation is 0, read from ``boxes``, ``(C, 2, 4)``: each contour's box in either key; see :meth:`far`),
+    so that many small contours cost no more than their number.
     """
 
     nested: tuple[tuple[int, int, int], ...]
     strokes: tuple[tuple[int, int], ...]
     parent: tuple[int | None, ...]
+    boxes: Array | None = None
+
+    def far(self, c: int, d: int) -> bool:
+        """Whether closed contours ``c``, ``d`` have boxes apart in both keys (so neither is inside the other)."""
+        if self.boxes is None:
+            return False
+        return bool(_boxes_apart(self.boxes[c, 0], self.boxes[d:d + 1, 0])[0]
+                    and _boxes_apart(self.boxes[c, 1], self.boxes[d:d + 1, 1])[0])
 
 
 def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> Apart:
@@ -306,17 +321,48 @@ def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[b
     shut = [_shut(k, c) for k, c in zip(k0s, closed)]
     meeting = set(proper_crossings(k0s, shut, touching=True)) | set(proper_crossings(k1s, shut, touching=True))
     nested, strokes = [], []
+    boxes0, boxes1 = bounding_boxes(k0s), bounding_boxes(k1s)
+    closed_ones = np.flatnonzero([s and len(k) > 0 for s, k in zip(shut, k0s)])
     for c in range(len(k0s)):
-        for d in range(c + 1, len(k0s)):
-            if (c, d) in meeting or min(len(k0s[c]), len(k0s[d])) == 0:
-                continue
-            if not (shut[c] and shut[d]):
-                strokes.append((c, d))
+        if len(k0s[c]) == 0:
+            continue
+        if not shut[c]:  # an open stroke: every other contour apart from it in both keys
+            strokes += [(min(c, d), max(c, d)) for d in range(len(k0s))
+                        if d != c and len(k0s[d]) and (min(c, d), max(c, d)) not in meeting
+                        and (shut[d] or d > c)]
+            continue
+        later = closed_ones[closed_ones > c]
+        # boxes apart in both keys: neither inside the other in either (relation 0), found without a point test
+        far = _boxes_apart(boxes0[c], boxes0[later]) & _boxes_apart(boxes1[c], boxes1[later])
+        for d in later[~far].tolist():
+            if (c, d) in meeting:
                 continue
             first = int(_relation(k0s[c][None], k0s[d][None])[0])
             if first == int(_relation(k1s[c][None], k1s[d][None])[0]):
                 nested.append((c, d, first))
-    return Apart(tuple(nested), tuple(strokes), tuple(parents(k0s, shut)))
+    return Apart(tuple(sorted(nested)), tuple(sorted(set(strokes))), tuple(parents(k0s, shut)),
+                 np.stack([boxes0, boxes1], axis=1))
+
+
+def _boxes_meeting(boxes: Array) -> list[tuple[int, int]]:
+    """The pairs ``(i, j)``, ``i < j``, of ``boxes (C, 4)`` that share a point, found by sorting their
+    x-ranges (sweep and prune): all of them, at a cost of about C log C plus their number."""
+    order = np.argsort(boxes[:, 0], kind="stable")
+    lo = boxes[order, 0]
+    ends = np.searchsorted(lo, boxes[order, 2], side="right")  # boxes starting within each one's x-range
+    out = []
+    for a in range(len(order)):
+        if ends[a] <= a + 1:
+            continue
+        i, others = order[a], order[a + 1:ends[a]]
+        meet = (boxes[others, 1] <= boxes[i, 3]) & (boxes[others, 3] >= boxes[i, 1])
+        out += [(min(int(i), int(j)), max(int(i), int(j))) for j in others[meet].tolist()]
+    return out
+
+
+def _boxes_apart(box: Array, boxes: Array) -> NDArray[np.bool_]:
+    """Whether ``box (4,)`` and each of ``boxes (K, 4)`` share no point: ``(K,)``."""
+    return (boxes[:, 0] > box[2]) | (boxes[:, 2] < box[0]) | (boxes[:, 1] > box[3]) | (boxes[:, 3] < box[1])
 
 
 def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
@@ -362,4 +408,13 @@ def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
         rest = np.flatnonzero(~met & ~tangled)
         if len(rest):
             tangled[rest] |= _relation(frames[c][rest], frames[d][rest]) != relation
+    closed_ones = np.flatnonzero([s and len(f[0]) > 0 for s, f in zip(shut, frames)]) if len(t) else []
+    for k in np.flatnonzero(~tangled).tolist():  # contours far apart in both keys meet only where their boxes do
+        boxes = bounding_boxes([frames[c][k] for c in closed_ones])
+        for i, j in _boxes_meeting(boxes):
+            c, d = sorted((int(closed_ones[i]), int(closed_ones[j])))
+            if keys.far(c, d) and ((c, d) in crossed[k] or
+                                   _relation(frames[c][k:k + 1], frames[d][k:k + 1])[0] != 0):
+                tangled[k] = True
+                break
     return [float(x) for x in t[tangled]], [float(x) for x in t[stroked]]

@@ -72,8 +72,15 @@ def init_scene(drawings: Sequence[str | os.PathLike[str]], step: float = 1.0, ea
 def parse_scene(text: str, path: str | os.PathLike[str], fmt: str = "toml") -> Scene:
     """The scene written in ``text`` (``fmt`` ``"toml"`` or ``"json"``); ``path`` names it in errors and
     places its relative file names."""
+    from .errors import OptionError
     from .scenefile import parse_scene as parse
 
+    if not isinstance(text, str):
+        raise OptionError(f"expected the scene's text as a str, found {type(text).__name__}", "text")
+    if not isinstance(path, (str, os.PathLike)):
+        raise OptionError(f"expected a file name to name the scene by, found {type(path).__name__}", "path")
+    if fmt not in ("toml", "json"):
+        raise OptionError(f"expected 'toml' or 'json', found {fmt!r}", "fmt")
     return parse(text, Path(path), fmt)
 
 

@@ -129,3 +129,23 @@ def test_a_contour_keeps_its_partner_of_its_own_size_when_the_two_swap_places() 
     a = [square(-3.5, -0.5, 1), square(1, -2, 4)]  # small at (-3, 0), big at (3, 0)
     b = [square(-5, -2, 4), square(2.5, -0.5, 1)]  # big at (-3, 0), small at (3, 0)
     assert pair_contours(a, [True, True], b, [True, True]) == [(0, 1), (1, 0)]
+
+
+def test_roles_of_many_small_squares_test_only_the_contours_whose_box_holds_the_probe(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """300 unit squares inside one frame around them all: each square is a hole (inside exactly one),
+    the frame an outer — found with a point test per square, not one per pair."""
+    import tweenrender.core.contours as contours_module
+
+    squares = [np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float) + [3 * (i % 20) + 1, 3 * (i // 20) + 1]
+               for i in range(300)]
+    frame = np.array([[0, 0], [61, 0], [61, 46], [0, 46]], dtype=float)
+    calls = [0]
+    inside = contours_module.inside
+
+    def counted(points: np.ndarray, polygon: np.ndarray) -> np.ndarray:
+        calls[0] += 1
+        return inside(points, polygon)
+
+    monkeypatch.setattr(contours_module, "inside", counted)
+    assert roles([frame, *squares], [True] * 301) == ["outer"] + ["hole"] * 300
+    assert calls[0] <= 2 * 301

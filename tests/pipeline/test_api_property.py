@@ -124,6 +124,23 @@ def test_parse_scene(text: str, fmt: object) -> None:
     _only_result_or_refusal(lambda: tr.parse_scene(text, "scene.toml", fmt))  # type: ignore[arg-type]
 
 
+@given(text=ARBITRARY, path=ARBITRARY)
+@SETTINGS
+def test_parse_scene_of_anything(text: object, path: object) -> None:
+    if isinstance(path, str):
+        path = f"/nonexistent/{path!r}.toml"
+    _only_result_or_refusal(lambda: tr.parse_scene(text, path))  # type: ignore[arg-type]
+
+
+@given(options=ARBITRARY, k0=ARBITRARY)
+@SETTINGS
+def test_write_with_anything_as_options(scene: tr.Scene, tmp_path_factory: pytest.TempPathFactory,
+                                        options: object, k0: object) -> None:
+    tmp = tmp_path_factory.mktemp("options")
+    _only_result_or_refusal(lambda: tr.write(scene, tmp / "o.gif", options=options))  # type: ignore[arg-type]
+    _only_result_or_refusal(lambda: tr.interpolate([[0, 0], [1e-300, 0], [0, 1e-300]], [[0, 0]] * 3, k0, "auto"))
+
+
 def test_the_property_tests_can_fail() -> None:
     """The check itself: a raw TypeError is not accepted."""
     with pytest.raises(TypeError):
@@ -137,3 +154,65 @@ def test_a_frame_rate_too_large_for_a_float_is_refused(scene: tr.Scene, tmp_path
         tr.write(scene, tmp_path / "x.mp4", fps=fps)
     with pytest.raises(tr.OptionError, match="fps=: expected 1 to 240"):
         next(tr.frames(scene, fps=fps))
+
+
+SQUARE_KEY = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+NAN_KEY = [[0.0, 0.0], [1.0, 0.0], [math.nan, 1.0], [0.0, 1.0]]
+
+
+def _refused(call, kind: type, named: str) -> None:  # type: ignore[no-untyped-def]
+    """``call`` refuses with ``kind`` (no other exception, no warning), its one line naming ``named``."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(kind) as refusal:
+            call()
+    assert named in str(refusal.value) and "\n" not in str(refusal.value), str(refusal.value)
+
+
+@pytest.mark.parametrize("text, path, fmt, named", [
+    (None, "s.toml", "toml", "text"),
+    (b"[scene]", "s.toml", "toml", "text"),
+    ("[scene]", None, "toml", "path"),
+    ("[scene]", "s.toml", None, "fmt"),
+])
+def test_parse_scene_refuses_what_is_not_text_and_a_name(text: object, path: object, fmt: object, named: str) -> None:
+    _refused(lambda: tr.parse_scene(text, path, fmt), tr.OptionError, f"{named}=")  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("step", [10**400, -10**400, math.nan, math.inf, 0, -1, 1e308])
+def test_load_scene_refuses_a_step_out_of_range(scene: tr.Scene, step: object) -> None:
+    _refused(lambda: tr.load_scene(scene.path, step), tr.OptionError, "step=")  # type: ignore[arg-type]
+    drawing = Path(__file__).parents[2] / "scenes" / "svg"
+    svgs = sorted(drawing.glob("*.svg"))[:2]
+    _refused(lambda: tr.load_scene(svgs, step), tr.OptionError, "step=")  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("k0, t, named", [
+    (NAN_KEY, [0.5], "k0"), ([[math.inf, 0.0], *SQUARE_KEY[1:]], [0.5], "k0"),
+    (SQUARE_KEY, [math.nan], "t"), (SQUARE_KEY, [1e308], "t"), (SQUARE_KEY, -math.inf, "t"),
+])
+@pytest.mark.parametrize("method", ["linear", "rigid", "arap", "auto"])
+def test_interpolate_refuses_nan_and_overflowing_times(k0: object, t: object, named: str, method: str) -> None:
+    _refused(lambda: tr.interpolate(k0, SQUARE_KEY, t, method), tr.GeometryError, f"{named}:")  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("options, named", [
+    (tr.RenderOptions(size=(0, 0)), "size="), (tr.RenderOptions(fps=-5), "fps="),
+    (tr.RenderOptions(onion=-1), "onion="), (tr.RenderOptions(method="bogus"), "method="),
+    ({"fps": 3}, "options="),
+])
+def test_write_checks_options_built_directly(scene: tr.Scene, tmp_path: Path, options: object, named: str) -> None:
+    _refused(lambda: tr.write(scene, tmp_path / "o.mp4", options=options), tr.OptionError, named)  # type: ignore[arg-type]
+    assert not list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("time", [1e308, -1e308, math.nan, 10**400])
+def test_a_time_out_of_range_is_refused_or_drawn_without_warning(scene: tr.Scene, time: float) -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        try:
+            picture = tr.frame(scene, time)
+        except tr.OptionError as error:
+            assert "time=" in str(error)
+        else:
+            assert picture.shape == (24, 32, 4)

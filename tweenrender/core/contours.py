@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .correspondence.assignment import min_cost_assignment
-from .geometry import signed_area
+from .geometry import bounding_boxes, boxes_holding, signed_area
 from .tangles import _relation, proper_crossings
 
 __all__ = ["ROLES", "inside", "roles", "pair_contours", "keep_nesting", "nearest_point", "anchor",
@@ -46,12 +46,14 @@ def roles(contours: Sequence[Array], closed: Sequence[bool]) -> list[str]:
     """``"outer"``, ``"hole"`` or ``"open"`` for each contour ``(N_i, 2)`` of one key."""
     out = []
     shut = [i for i, c in enumerate(closed) if c and len(contours[i]) >= 3]
+    boxes = bounding_boxes([contours[j] for j in shut])  # only a box holding the probe can have it inside
     for i, points in enumerate(contours):
         if not closed[i]:
             out.append("open")
             continue
         probe = _probe(points)
-        depth = sum(int(inside(probe[None], contours[j])[0]) for j in shut if j != i)
+        near = (shut[k] for k in boxes_holding(probe, boxes).tolist())
+        depth = sum(int(inside(probe[None], contours[j])[0]) for j in near if j != i)
         out.append("hole" if depth % 2 else "outer")
     return out
 

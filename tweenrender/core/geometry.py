@@ -10,7 +10,7 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = [
+__all__ = ["bounding_boxes", "boxes_holding", 
     "centroid", "edges", "edge_lengths", "perimeter", "signed_area", "area",
     "best_fit_rotation", "spoke_rotation", "rotate", "cross", "outline_length",
 ]
@@ -85,3 +85,22 @@ def rotate(vectors: Array, angle: Array | float) -> Array:
     c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
     x, y = vectors[..., 0:1], vectors[..., 1:2]
     return np.concatenate([c * x - s * y, s * x + c * y], axis=-1)
+
+
+def bounding_boxes(contours: Sequence[NDArray[np.float64]]) -> NDArray[np.float64]:
+    """Each contour's ``(N_i, 2)`` bounding box ``[xmin, ymin, xmax, ymax]``: ``(C, 4)`` (an empty contour's
+    box holds nothing: ``[inf, inf, -inf, -inf]``)."""
+    out = np.empty((len(contours), 4))
+    out[:, :2], out[:, 2:] = np.inf, -np.inf
+    for i, points in enumerate(contours):
+        points = np.asarray(points, dtype=np.float64)
+        if len(points):
+            out[i, :2], out[i, 2:] = points.min(axis=0), points.max(axis=0)
+    return out
+
+
+def boxes_holding(point: NDArray[np.float64], boxes: NDArray[np.float64]) -> NDArray[np.intp]:
+    """The indices of ``boxes (C, 4)`` holding ``point (2,)``, edges included: the only contours an exact
+    point-in-polygon test can find it inside (``(K,)``, ascending)."""
+    x, y = float(point[0]), float(point[1])
+    return np.flatnonzero((boxes[:, 0] <= x) & (x <= boxes[:, 2]) & (boxes[:, 1] <= y) & (y <= boxes[:, 3]))

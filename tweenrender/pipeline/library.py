@@ -55,14 +55,27 @@ def load_scene(path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], 
             raise OptionError("applies to SVG drawings morphing into each other; a scene file sets ease and "
                               "stagger itself", given[0])
         _check_timing(ease, hold, stagger)
-        return load(Path(path), step, ease, float(hold), float(stagger))
+        return load(Path(path), _step(step), ease, float(hold), float(stagger))
     if isinstance(path, (bytes, bytearray)) or not isinstance(path, Sequence) or \
             not all(isinstance(p, (str, os.PathLike)) for p in path):
         raise OptionError(f"path: expected a scene file's name or a list of SVG files, found {path!r}")
-    if isinstance(step, bool) or not isinstance(step, Real):
-        raise OptionError(f"expected seconds between drawings as a number, found {step!r}", "step")
+    step = _step(step)
     _check_timing(ease, hold, stagger)
-    return load([Path(p) for p in path], float(step), ease, float(hold), float(stagger))
+    return load([Path(p) for p in path], step, ease, float(hold), float(stagger))
+
+
+MAX_STEP = 1e6
+"""The most seconds between two drawings :func:`load_scene` takes (a scene's last key is at most 1e7 s)."""
+
+
+def _step(step: object) -> float:
+    """Seconds between drawings: a number above 0 and at most :data:`MAX_STEP` (``10**400`` is refused, not
+    overflowed)."""
+    if isinstance(step, bool) or not isinstance(step, Real) or not 0 < step <= MAX_STEP:
+        shown = repr(step) if len(repr(step)) <= 40 else f"{repr(step)[:20]}…"
+        raise OptionError(f"expected seconds between drawings above 0 and at most {MAX_STEP:g}, found {shown}",
+                          "step")
+    return float(step)
 
 
 def init_scene(drawings: Sequence[str | os.PathLike[str]], step: float = 1.0, ease: str = "linear",
@@ -209,7 +222,11 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     scene = check_scene(scene)
     if options is not None and named:
         raise OptionError(f"give the options either as options= or by name, not both ({', '.join(named)})")
-    opts = options if isinstance(options, RenderOptions) else RenderOptions.create(**named)
+    if options is not None and not isinstance(options, RenderOptions):
+        raise OptionError(f"expected a RenderOptions (or the options by name), found {type(options).__name__}",
+                          "options")
+    # an object built directly skipped create()'s checks: every value is checked again here
+    opts = RenderOptions.create(**(options.given() if options is not None else named))
     if path is None or not isinstance(path, (str, os.PathLike)):
         raise OptionError(f"path: expected a file or folder name, found {path!r}")
     target = check_output_name(path)
@@ -339,7 +356,12 @@ def _finite_time(time: object) -> float:
         value = math.inf
     if not math.isfinite(value):
         raise OptionError(f"expected a finite number of seconds, found {time!r}", "time")
-    return value
+    # far before the first key or after the last draws that key: held within reach of the timeline's arithmetic
+    return min(max(value, -_FAR), _FAR)
+
+
+_FAR = 1e12
+"""Seconds past which a time draws what it would at ±1e12 (every key is within 1e7 s)."""
 
 
 def not_an_input(target: Path, scenes: Sequence[Scene], folder: bool = False, files: Sequence[str] = ()) -> None:

@@ -244,6 +244,10 @@ class RenderOptions:
         """The options' long names, as :func:`tweenrender.write` and the command line take them."""
         return tuple(f.name for f in fields(cls))
 
+    def given(self) -> dict[str, Any]:
+        """The options that differ from the defaults, by name: what :meth:`create` takes to check them again."""
+        return {f.name: getattr(self, f.name) for f in fields(self) if getattr(self, f.name) != f.default}
+
     @classmethod
     def create(cls, **given: Any) -> RenderOptions:
         """The options ``given`` by name (``None``: the default), each checked; unknown names are refused."""

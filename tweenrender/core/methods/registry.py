@@ -136,6 +136,12 @@ def measured_methods(jointed: bool) -> tuple[str, ...]:
     return tuple(m.name for m in REGISTRY.values() if jointed or not m.needs_joints)
 
 
+MAX_COORDINATE = 1e9
+"""The largest ``|x|``, ``|y|`` of a key :func:`interpolate` takes (a scene's coordinate limit)."""
+MAX_T = 1e6
+"""The largest ``|t|`` :func:`interpolate` takes: far past the keys, short of overflowing a coordinate."""
+
+
 def _numbers(value: object, name: str) -> Array:
     """``value`` as a float64 array, or a :class:`GeometryError` naming ``name`` (text, ``None``, a mapping,
     an integer too large for a float are not numbers)."""
@@ -160,9 +166,14 @@ def interpolate(k0: Array, k1: Array, t: ArrayLike, method: str, joints: Joints 
     k0, k1 = _numbers(k0, "k0"), _numbers(k1, "k1")
     if k0.ndim != 2 or k0.shape[-1:] != (2,) or k0.shape != k1.shape:
         raise GeometryError(f"keys must both be (N, 2) with the same N, found {k0.shape} and {k1.shape}")
+    for name, key in (("k0", k0), ("k1", k1)):
+        if not np.all(np.abs(key) <= MAX_COORDINATE):  # NaN fails too
+            raise GeometryError(f"{name}: expected finite coordinates of at most {MAX_COORDINATE:g} in size")
     t = np.atleast_1d(_numbers(t, "t"))
     if t.ndim != 1:
         raise GeometryError(f"t: expected a number or a list of numbers (T,), found shape {t.shape}")
+    if not np.all(np.abs(t) <= MAX_T):
+        raise GeometryError(f"t: expected finite times from {-MAX_T:g} to {MAX_T:g} (0 and 1 are the keys)")
     frames = found.paths(k0, k1, t, joints)
     frames[t == 0.0] = k0
     frames[t == 1.0] = k1

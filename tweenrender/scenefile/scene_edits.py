@@ -15,6 +15,7 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
+from ..core.contours import nearest_point
 from ..errors import SceneError
 from .scene_writer import drawings_toml
 
@@ -227,7 +228,7 @@ class _Op:
             hints = tomlkit.inline_table()
             for letter in shared:
                 a, b = (np.asarray(k["hints"][letter], dtype=np.float64) for k in (before, after))
-                hints[letter] = [_number(v) for v in _nearest_on(contours, (1.0 - f) * a + f * b)]
+                hints[letter] = [_number(v) for v in nearest_point((1.0 - f) * a + f * b, [np.asarray(c, dtype=np.float64) for c in contours], [True] * len(contours))]
             table["hints"] = hints
 
     # -- values -----------------------------------------------------------------------------------
@@ -253,23 +254,6 @@ class _Op:
             letters = tomlkit.inline_table()
             table[name] = letters
         letters[letter] = point
-
-
-def _nearest_on(contours: Contours, point: np.ndarray) -> np.ndarray:
-    """The point of the closed ``contours``' outlines nearest ``point (2,)``: ``(2,)``."""
-    best, gap = point, math.inf
-    for contour in contours:
-        a = np.asarray(contour, dtype=np.float64)
-        b = np.roll(a, -1, axis=0)
-        edge = b - a
-        length2 = np.maximum((edge * edge).sum(axis=1), 1e-300)
-        s = np.clip(((point - a) * edge).sum(axis=1) / length2, 0.0, 1.0)
-        feet = a + s[:, None] * edge
-        d = np.hypot(*(feet - point).T)
-        k = int(np.argmin(d))
-        if d[k] < gap:
-            best, gap = feet[k], float(d[k])
-    return best
 
 
 def _number(value: float) -> float | int:

@@ -1,8 +1,9 @@
 """How a contour or element without a partner comes and goes (maths §5.17).
 
-It grows from (or shrinks to) a point over the whole segment, its area changing linearly in the
-segment's eased parameter ``t``: it is scaled about the point by √t while it grows and by √(1 − t)
-while it shrinks, so each frame adds (takes) an equal share of its area. Its stroke width scales
+It grows from (or shrinks to) a point, its area changing linearly in the segment's eased parameter
+``t``: scaled about the point by √t while it grows and by √(1 − t) while it shrinks — over the whole
+segment, or from the start (to the stop) :mod:`.clearance` finds clear of the other contours
+(:func:`.clearance.growth_scale`) — so each frame adds (takes) an equal share of its area. Its stroke width scales
 with it, so a stroke's band changes its area linearly too, and nothing is left at the key where
 it is a point. Where an easing overshoots, the scale follows it, but stops at 0: a contour never
 turns inside out.
@@ -13,16 +14,9 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["scale_of", "scaled", "width_share"]
+__all__ = ["scaled", "width_share"]
 
 Array = NDArray[np.float64]
-
-
-def scale_of(t: Array, grows: bool) -> Array:
-    """The scale of a contour growing (``grows``) or shrinking at eased parameters ``t (T,)``:
-    ``√t`` or ``√(1 − t)``, 0 where that share is negative: ``(T,)``."""
-    share = t if grows else 1.0 - t
-    return np.sqrt(np.maximum(share, 0.0))
 
 
 def scaled(point: Array, shape: Array, scale: Array) -> Array:

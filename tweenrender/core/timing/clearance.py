@@ -26,6 +26,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..contours import centre_of_area, inside
+from ..geometry import signed_area
 from ..tangles import _relation, proper_crossings
 
 __all__ = ["GRID", "LATEST", "Growth", "place", "deepest_point", "farthest_point", "growth_scale"]
@@ -107,7 +108,7 @@ def _inside_grid(contour: Array) -> Array:
 def _groups(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[bool]) -> list[list[int]]:
     """The contours without a partner in groups that come and go together: each outermost one with the
     ones (coming or going the same way) inside it in its key; largest groups first."""
-    area = [abs(_area(s)) if c and len(s) >= 3 else 0.0 for s, c in zip(shapes, closed)]
+    area = [abs(signed_area(s)) if c and len(s) >= 3 else 0.0 for s, c in zip(shapes, closed)]
     holder: list[int] = list(range(len(shapes)))
     for j, inner in enumerate(shapes):
         around = [i for i, outer in enumerate(shapes)
@@ -117,11 +118,6 @@ def _groups(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[boo
             holder[j] = max(around, key=lambda i: area[i])
     roots = sorted({holder[j] for j in range(len(shapes))}, key=lambda i: -area[i])
     return [[r] + [j for j in range(len(shapes)) if holder[j] == r and j != r] for r in roots]
-
-
-def _area(points: Array) -> float:
-    x, y = points[:, 0], points[:, 1]
-    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
 
 
 @dataclass(frozen=True, slots=True)

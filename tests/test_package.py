@@ -33,7 +33,8 @@ ALLOWED = {
 }
 FRONT_ENDS = ("cli", "preview")
 THIRD_PARTY_HOME = {"skia": {"raster"}, "imageio_ffmpeg": {"encode"}, "imageio": {"encode"},
-                    "svgelements": {"scenefile"}, "argparse": {"cli"}, "watchfiles": {"preview"}}
+                    "svgelements": {"scenefile"}, "tinycss2": {"scenefile"}, "cssselect2": {"scenefile"},
+                    "argparse": {"cli"}, "watchfiles": {"preview"}}
 
 
 def modules() -> list[str]:

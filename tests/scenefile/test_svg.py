@@ -543,3 +543,27 @@ def test_huge_path_data_is_refused_before_it_is_parsed(tmp_path: Path, monkeypat
     with pytest.raises(SvgError, match="at most 200000 vertices, found data for more"):
         svg.read_drawing(path)
     assert parsed == []  # refused from a count of its numbers: parsing it would take tens of seconds
+
+
+# -- smooth curves after a curve of the other kind (SVG 1.1 §8.3.6, §8.3.7) ---------------------------
+
+def _second_piece(tmp_path: Path, d: str) -> np.ndarray:
+    """The flattened points of path ``d`` right of x = 10 (its second segment), in SVG's y-down units."""
+    path = tmp_path / "s.svg"
+    path.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40"><path id="x" d="{d}" '
+                    'fill="none" stroke="black"/></svg>')
+    ((points, _),) = svg.load_svg_contours(path, "x", tolerance=1e-4)
+    points = points * [1.0, -1.0]
+    return points[points[:, 0] > 10.0 + 1e-9]
+
+
+def test_s_after_a_quadratic_starts_from_the_current_point(tmp_path: Path) -> None:
+    # S's first control point is the current point (10, 0): y(t) = 60 (1 - t) t², highest 80/9 at t = 2/3
+    piece = _second_piece(tmp_path, "M0 0 Q 5 5 10 0 S 20 20 30 0")
+    assert abs(piece[:, 1].max() - 80 / 9) < 1e-3
+
+
+def test_t_after_a_cubic_is_a_straight_line(tmp_path: Path) -> None:
+    # T's control point is the current point (10, 0): the quadratic to (20, 0) is the segment between them
+    piece = _second_piece(tmp_path, "M0 0 C 0 10 10 10 10 0 T 20 0")
+    assert np.abs(piece[:, 1]).max() < 1e-9 and piece[:, 0].max() == pytest.approx(20.0)

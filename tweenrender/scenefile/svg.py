@@ -36,7 +36,8 @@ from .svg_document import SHAPES, Document, Drawn, Node, compose, length, matrix
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
 from .svg_color import parse_color
 from .svg_gradients import stop_color
-from .svg_pathdata import path_prefix, points_prefix
+from .svg_pathdata import path_prefix, points_prefix, smooth_controls
+from .svg_viewport import aspect_matrix
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
            "load_svg_contours", "read_drawing", "view_box"]
@@ -212,24 +213,6 @@ def view_box(document: Document) -> tuple[float, float, float, float] | None:
     if w > 0 and h > 0 and "%" not in root.attrs.get("width", "") + root.attrs.get("height", ""):
         return (0.0, 0.0, w, h)
     return None
-
-
-def aspect_matrix(box: tuple[float, float, float, float], width: float, height: float, rule: str
-                  ) -> NDArray[np.float64]:
-    """The 3x3 map of view box ``box`` ``(x, y, w, h)`` into a ``width`` × ``height`` viewport at the origin by
-    the ``preserveAspectRatio`` value ``rule`` (default ``xMidYMid meet``; SVG 1.1 §7.8)."""
-    words = rule.split()
-    if words[:1] == ["defer"]:
-        words = words[1:]
-    align = words[0] if words else "xMidYMid"
-    x, y, w, h = box
-    sx, sy = width / w, height / h
-    if align != "none":
-        sx = sy = max(sx, sy) if words[1:2] == ["slice"] else min(sx, sy)
-    where = {"Min": 0.0, "Mid": 0.5, "Max": 1.0}
-    fx, fy = (where.get(align[1:4], 0.5), where.get(align[5:8], 0.5)) if len(align) == 8 else (0.5, 0.5)
-    return np.array([[sx, 0.0, -x * sx + (width - w * sx) * fx], [0.0, sy, -y * sy + (height - h * sy) * fy],
-                     [0.0, 0.0, 1.0]])
 
 
 def _root_viewport(document: Document) -> tuple[tuple[float, float, float, float] | None, NDArray[np.float64]]:
@@ -499,7 +482,7 @@ def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budge
     """
     if not np.all(np.isfinite(to_world)) or abs(_determinant(to_world)) == 0:
         return []  # a transform that collapses the element: nothing is drawn (as in SVG)
-    shape = _geometry(d.node, d.document, lenient)
+    shape = _geometry(d.node, d.document, lenient, d.viewport)
     if shape is None:
         return []
     try:
@@ -518,13 +501,15 @@ def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budge
     return out
 
 
-def _geometry(node: Node, document: Document, lenient: bool = True):  # type: ignore[no-untyped-def]
+def _geometry(node: Node, document: Document, lenient: bool = True,  # type: ignore[no-untyped-def]
+              viewport: tuple[float, float] | None = None):
     """The element as an svgelements shape in its own coordinates, or None when SVG draws nothing
-    (``lenient``: by SVG's error rules; else a bad element is refused)."""
+    (``lenient``: by SVG's error rules; else a bad element is refused). Percentages are of ``viewport``
+    ``(width, height)``, by default the root's view box."""
     from svgelements import Circle, Ellipse, Path, Polygon, Polyline, Rect, SimpleLine
 
-    box = view_box(document) or (0.0, 0.0, 100.0, 100.0)
-    w, h, diag = box[2], box[3], math.hypot(box[2], box[3]) / math.sqrt(2)
+    w, h = viewport or (view_box(document) or (0.0, 0.0, 100.0, 100.0))[2:]
+    diag = math.hypot(w, h) / math.sqrt(2)
     tag = node.tag
     if lenient:
         if tag in ("path", "polygon", "polyline"):
@@ -538,7 +523,7 @@ def _geometry(node: Node, document: Document, lenient: bool = True):  # type: ig
         if not d:
             return None
         try:
-            return Path(d)
+            return smooth_controls(Path(d))
         except Exception as error:  # svgelements refuses data with too few numbers for a command
             raise Refusal(_why_not_drawn(node)) from error
     if tag in ("polygon", "polyline"):

@@ -2,9 +2,10 @@
 
 The XML is read with expat (no entities, no DTD subsets, bounded size, element
 count and depth). Walking the tree resolves what an SVG renderer would: CSS
-(presentation attributes, ``<style>`` rules with simple selectors, inline
-``style``), inheritance, ``currentColor``, transforms, ``display``,
-``visibility`` and group ``opacity``, and ``<use>`` — whose expansion is
+(presentation attributes, ``<style>`` sheets matched by :mod:`.svg_css`, inline
+``style``, ``!important``), inheritance, ``currentColor``, transforms, ``display``,
+``visibility`` and group ``opacity``, nested viewports (:mod:`.svg_viewport`), lengths
+relative to the font (:mod:`.svg_lengths`), and ``<use>`` — whose expansion is
 counted as it goes, so a file of nested ``<use>`` s cannot grow without bound.
 """
 
@@ -23,7 +24,10 @@ import numpy as np
 from numpy.typing import NDArray
 from svgelements import Matrix
 
+from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_flatten import Refusal
+from .svg_lengths import DEFAULT_FONT_SIZE, font_relative, font_size
+from .svg_viewport import nested_viewport, root_size
 
 __all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "MAX_RULE_MATCHES", "SHAPES", "Node", "Document",
            "Drawn", "read", "parse"]
@@ -36,9 +40,9 @@ MAX_DEPTH = 200
 """Nesting of elements."""
 MAX_EXPANDED = 50_000
 """Elements visited while drawing, ``<use>`` copies included."""
-MAX_RULE_MATCHES = 2_000_000
-"""Style rules looked at, summed over the elements: a sheet of thousands of rules for one tag over
-thousands of elements is refused rather than matched for minutes."""
+MAX_RULE_MATCHES = MAX_STYLE_WORK
+"""Style rules tried and elements their selectors walk over, summed over the elements: a sheet of
+thousands of rules for one tag over thousands of elements is refused rather than matched for minutes."""
 
 SHAPES = ("path", "polygon", "polyline", "rect", "circle", "ellipse", "line")
 """The elements that draw a shape."""
@@ -52,12 +56,11 @@ _UNSUPPORTED = ("text", "image", "foreignObject")
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
               "stroke-linejoin", "stroke-miterlimit", "visibility", "color")
 _PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask")
+# the properties an element's own style is read for: those above, and what a sheet may set that no child inherits
+_OWN = frozenset(_PROPERTIES + ("transform", "overflow", "font-size"))
 _ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
 _UNSAFE = ("expected plain SVG, found a DOCTYPE with entity declarations (refused: entities can "
            "expand without bound or read other files); save the drawing as plain SVG")
-_RULE = re.compile(r"([^{}]+)\{([^{}]*)\}")
-_SIMPLE_SELECTOR = re.compile(r"^(\*|[A-Za-z][\w-]*)?((?:[.#][\w-]+)*)$")
-_COMMENT = re.compile(r"/\*.*?\*/", re.S)
 
 
 @dataclass(slots=True)
@@ -70,17 +73,17 @@ class Node:
     children: list[Node] = field(default_factory=list)
     text: str = ""
     svg: bool = True  # in the SVG namespace (or none)
+    font: tuple[float, float] = (DEFAULT_FONT_SIZE, DEFAULT_FONT_SIZE)  # its font-size and the root's (user units)
 
 
 @dataclass(slots=True)
 class Document:
-    """A parsed drawing: its root, every element with an id, and the style sheet's rules."""
+    """A parsed drawing: its root, every element with an id, and what its style sheets declare for the
+    elements they match (``id(node)`` → declarations, weakest first; :mod:`.svg_css`)."""
 
     root: Node
     ids: dict[str, list[Node]]
-    rules: list[tuple[tuple[int, int, int], int, tuple[str | None, tuple[str, ...], str | None], dict[str, str]]]
-    index: dict[str, list[int]] = field(default_factory=dict)  # rules by the id, class or tag they need
-    matched: int = 0  # rules looked at for the elements so far (bounded by MAX_RULE_MATCHES)
+    sheet: dict[int, tuple[Declarations, ...]] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -95,6 +98,8 @@ class Drawn:
     document: Document
     # the clip paths on it and its ancestors: (id of the <clipPath>, the user space it is in, 3x3)
     clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()
+    # what percentages are of in the nested viewport it is in (user units); None: the root's
+    viewport: tuple[float, float] | None = None
 
 
 def read(path: Path) -> bytes:
@@ -194,72 +199,33 @@ def parse(data: bytes) -> Document:
                       f"at line {error.lineno}, column {error.offset + 1}") from error
     if not roots or roots[0].tag != "svg" or not roots[0].svg:
         raise Refusal(f"expected an <svg> root element, found <{roots[0].tag if roots else ''}>")
-    document = Document(roots[0], ids, [])
     for node, pieces in texts.values():
         node.text = "".join(pieces)
-    document.rules = _rules(document.root)
-    document.index = _index(document.rules)
+    document = Document(roots[0], ids, sheet_declarations(roots[0]) if texts else {})
+    _resolve_fonts(document)
     return document
 
 
+def _resolve_fonts(document: Document) -> None:
+    """Every element's ``font`` (its ``font-size`` and the root's), inherited down the tree; the cascade is
+    looked at only where a ``font-size`` may be set (an attribute, a ``style``, a matching rule)."""
+    root = document.root
+    stack = [(root, DEFAULT_FONT_SIZE)]
+    root_size = DEFAULT_FONT_SIZE
+    while stack:
+        node, parent = stack.pop()
+        size = parent
+        if "font-size" in node.attrs or "font-size" in node.attrs.get("style", "") or \
+                any("font-size" in layer for layer in document.sheet.get(id(node), ())):
+            size = font_size(own_style(node, document).get("font-size"), parent, root_size)
+        if node is root:
+            root_size = size
+        if size != DEFAULT_FONT_SIZE or root_size != DEFAULT_FONT_SIZE:
+            node.font = (size, root_size)
+        stack.extend((child, size) for child in node.children)
+
+
 # -- CSS ------------------------------------------------------------------------------------------
-
-
-def _rules(root: Node) -> list:  # type: ignore[type-arg]
-    """Rules of every ``<style>``: simple selectors (``*``, ``tag``, ``.class``, ``#id`` and their
-    compounds) with their specificity; rules with other selectors are left out. The sheet is scanned
-    in one pass (:mod:`.css`), so a long or hostile sheet costs time in proportion to its length."""
-    from .css import style_rules
-
-    rules = []
-    order = 0
-    for node in _iterate(root):
-        if node.tag != "style":
-            continue
-        for selectors, body in style_rules(node.text):
-            declarations = _declarations(body)
-            for selector in selectors.split(","):
-                parsed = _selector(selector.strip())
-                if parsed is None:
-                    continue
-                tag, classes, ident = parsed
-                specificity = (int(ident is not None), len(classes), int(tag is not None))
-                rules.append((specificity, order, parsed, declarations))
-                order += 1
-    rules.sort(key=lambda rule: (rule[0], rule[1]))
-    return rules
-
-
-def _index(rules: list) -> dict[str, list[int]]:  # type: ignore[type-arg]
-    """Each rule's position under one key a node must have for it to apply: ``#id``, ``.class``, the tag,
-    or ``*``; a node then looks only at the rules of its own id, classes and tag."""
-    index: dict[str, list[int]] = {}
-    for position, (_, _, (tag, classes, ident), _) in enumerate(rules):
-        key = f"#{ident}" if ident is not None else f".{classes[0]}" if classes else tag or "*"
-        index.setdefault(key, []).append(position)
-    return index
-
-
-def _selector(text: str) -> tuple[str | None, tuple[str, ...], str | None] | None:
-    match = _SIMPLE_SELECTOR.match(text)
-    if not text or match is None:
-        return None
-    tag = match.group(1)
-    parts = re.findall(r"[.#][\w-]+", match.group(2))
-    idents = [p[1:] for p in parts if p[0] == "#"]
-    if len(idents) > 1:
-        return None
-    return (None if tag in (None, "*") else tag, tuple(p[1:] for p in parts if p[0] == "."),
-            idents[0] if idents else None)
-
-
-def _declarations(text: str) -> dict[str, str]:
-    out = {}
-    for item in text.split(";"):
-        name, colon, value = item.partition(":")
-        if colon:
-            out[name.strip().lower()] = value.replace("!important", "").strip()
-    return out
 
 
 def _iterate(node: Node) -> Iterator[Node]:
@@ -271,25 +237,10 @@ def _iterate(node: Node) -> Iterator[Node]:
 
 
 def own_style(node: Node, document: Document) -> dict[str, str]:
-    """The node's own properties: presentation attributes, then matching CSS rules, then ``style``."""
-    style = {name: node.attrs[name].strip() for name in _PROPERTIES if name in node.attrs}
-    if document.rules:
-        classes = set(node.attrs.get("class", "").split())
-        ident_here = node.attrs.get("id")
-        keys = ["*", node.tag, *(f".{c}" for c in classes)] + ([f"#{ident_here}"] if ident_here is not None else [])
-        candidates = sorted({p for key in keys for p in document.index.get(key, ())})
-        document.matched += len(candidates)
-        if document.matched > MAX_RULE_MATCHES:
-            raise Refusal(f"expected at most {MAX_RULE_MATCHES} style rules applied over the drawing's elements, "
-                          "found more")
-        for position in candidates:  # the rules' order: specificity, then the sheet's
-            _, _, (tag, wanted, ident), declarations = document.rules[position]
-            if (tag is None or tag == node.tag) and set(wanted) <= classes and \
-                    (ident is None or ident == ident_here):
-                style.update((k, v) for k, v in declarations.items() if k in _PROPERTIES)
-    if "style" in node.attrs:
-        style.update((k, v) for k, v in _declarations(node.attrs["style"]).items() if k in _PROPERTIES)
-    return style
+    """The node's own properties (``transform`` among them): presentation attributes, then the style
+    sheets' rules that match it, then ``style``, then the ``!important`` ones (:func:`.svg_css.cascade`)."""
+    inline = style_attribute(node.attrs["style"]) if "style" in node.attrs else {}
+    return cascade(node.attrs, document.sheet.get(id(node), ()), inline, _OWN)
 
 
 # -- walking --------------------------------------------------------------------------------------
@@ -322,12 +273,16 @@ def compose(ctm: NDArray[np.float64], step: NDArray[np.float64], node: Node, wha
 
 
 def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -> float:
-    """A length attribute in user units (units at 96 per inch, percentages of ``relative``)."""
+    """A length attribute in user units (units at 96 per inch, percentages of ``relative``, ``em``, ``rem``,
+    ``ex`` of the element's font: :mod:`.svg_lengths`)."""
     from svgelements import Length
 
     text = node.attrs.get(name)
     if text is None or not text.strip():
         return default
+    relative_to_font = font_relative(text, *node.font)
+    if relative_to_font is not None:
+        return relative_to_font
     try:
         value = Length(text.strip()).value(ppi=96.0, relative_length=relative)
         return float(value)
@@ -344,13 +299,16 @@ class _Walk:
         self.visited = 0
         self.using: list[str] = []
         self.looping: dict[str, bool] = {}  # id → whether a <use> of it leads back to itself
+        self.viewport: tuple[float, float] | None = None  # the nested viewport's size; None: the root's
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
-              shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
+              shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = (),
+              instance: Node | None = None) -> Iterator[Drawn]:
+        """The shapes drawn by ``node`` and its children; ``instance`` is the ``<use>`` that instances it."""
         self.visited += 1
         if self.visited > MAX_EXPANDED:
             raise Refusal(f"expected at most {MAX_EXPANDED} elements once <use> copies are counted, found more")
-        if not node.svg or node.tag in _NOT_DRAWN:
+        if not node.svg or (node.tag in _NOT_DRAWN and not (node.tag == "symbol" and instance is not None)):
             return
         own = own_style(node, self.document)
         style = {k: parent[k] for k in _INHERITED if k in parent}
@@ -364,9 +322,8 @@ class _Walk:
         except ValueError:
             alpha = 1.0
         opacity *= min(max(alpha, 0.0), 1.0)
-        if node is not self.document.root and "transform" in node.attrs:
-            ctm = compose(ctm, matrix(node.attrs["transform"], node.line), node,
-                          f"transform {node.attrs['transform'].strip()[:80]!r}")
+        if node is not self.document.root and "transform" in own and node.tag != "symbol":  # SVG 1.1: none on symbols
+            ctm = compose(ctm, matrix(own["transform"], node.line), node, f"transform {own['transform'][:80]!r}")
         if own.get("mask", "none").strip() not in ("none", "") and shown:
             raise Refusal(f"expected no mask, found mask={own['mask'].strip()!r} on <{node.tag}> (line {node.line}): "
                           "masks are not drawn yet; apply the mask in the editor, or use a clip-path")
@@ -376,17 +333,46 @@ class _Walk:
             clips = clips + ((target[1:] if target.startswith("#") else target, ctm),)
         if node.tag in SHAPES:
             visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
-            yield Drawn(node, style, ctm, opacity, visible, self.document, clips)
+            yield Drawn(node, style, ctm, opacity, visible, self.document, clips, viewport=self.viewport)
         elif node.tag == "use":
             yield from self.use(node, style, ctm, opacity, shown, clips)
+        elif node.tag in ("svg", "symbol") and node is not self.document.root:
+            yield from self.viewport_children(node, own, style, ctm, opacity, shown, clips, instance)
         elif node.tag in _CONTAINERS:
-            if node.tag == "svg" and node is not self.document.root:
-                ctm = compose(ctm, _nested_viewport(node), node, "the nested <svg>'s viewport transform")
             for child in node.children:
                 yield from self.visit(child, style, ctm, opacity, shown, clips)
         elif node.tag in _UNSUPPORTED and shown:
             raise Refusal(f"expected shapes, found <{node.tag}> (line {node.line}); "
                           "convert it to paths in the editor (Inkscape: Path > Object to Path)")
+
+    def viewport_children(self, node: Node, own: dict[str, str], style: dict[str, str], ctm: NDArray[np.float64],
+                          opacity: float, shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...],
+                          instance: Node | None) -> Iterator[Drawn]:
+        """The children of a nested ``<svg>`` or an instanced ``<symbol>``, in the viewport it opens
+        (:mod:`.svg_viewport`), clipped to it unless its ``overflow`` is visible."""
+        outer = self.viewport or root_size(self.document.root)
+        viewport = nested_viewport(node, outer, own.get("overflow", "hidden"), instance)
+        if viewport is None:
+            return  # a viewport of zero size draws nothing
+        if viewport.rect is not None:
+            clips = clips + ((self.viewport_clip(viewport.rect), ctm),)
+        ctm = compose(ctm, viewport.to_parent, node, f"the <{node.tag}>'s viewport transform")
+        saved, self.viewport = self.viewport, viewport.size
+        try:
+            for child in node.children:
+                yield from self.visit(child, style, ctm, opacity, shown, clips)
+        finally:
+            self.viewport = saved
+
+    def viewport_clip(self, rect: tuple[float, float, float, float]) -> str:
+        """The id of a ``<clipPath>`` of the rectangle ``rect`` ``(x, y, width, height)``, made for the
+        drawing under a name no file can write (XML has no NUL)."""
+        ident = "\0viewport " + " ".join(repr(v) for v in rect)
+        if ident not in self.document.ids:
+            x, y, w, h = (repr(v) for v in rect)
+            shape = Node("rect", {"x": x, "y": y, "width": w, "height": h}, 0)
+            self.document.ids[ident] = [Node("clipPath", {"id": ident}, 0, [shape])]
+        return ident
 
     def loops(self, ident: str, open_ids: set[str]) -> bool:
         """Whether the element ``ident`` (through the ``<use>`` elements in it) leads back to an id in
@@ -418,37 +404,15 @@ class _Walk:
         target = self.document.ids.get(href[1:])
         if not target or href in self.using or self.loops(href[1:], set()):
             return  # SVG: a <use> of nothing, or in a loop of references, is in error and not rendered
-        placed = compose(ctm, np.array([[1.0, 0.0, length(node, "x")], [0.0, 1.0, length(node, "y")], [0.0, 0.0, 1.0]]),
-                         node, "the <use> element's x, y transform")
+        width, height = self.viewport or root_size(self.document.root)
+        shift = np.array([[1.0, 0.0, length(node, "x", 0.0, width)], [0.0, 1.0, length(node, "y", 0.0, height)],
+                          [0.0, 0.0, 1.0]])
+        placed = compose(ctm, shift, node, "the <use> element's x, y transform")
         self.using.append(href)
         try:
-            referenced = target[0]
-            if referenced.tag == "symbol":
-                for child in referenced.children:
-                    yield from self.visit(child, style, placed, opacity, shown, clips)
-            else:
-                yield from self.visit(referenced, style, placed, opacity, shown, clips)
+            yield from self.visit(target[0], style, placed, opacity, shown, clips, instance=node)
         finally:
             self.using.pop()
-
-
-def _nested_viewport(node: Node) -> NDArray[np.float64]:
-    """A nested ``<svg>``: its x, y offset and its viewBox scaled into its width and height."""
-    x, y = length(node, "x"), length(node, "y")
-    box = node.attrs.get("viewBox")
-    offset = np.array([[1.0, 0.0, x], [0.0, 1.0, y], [0.0, 0.0, 1.0]])
-    if not box:
-        return offset
-    try:
-        bx, by, bw, bh = (float(v) for v in box.replace(",", " ").split())
-    except ValueError:
-        return offset
-    width, height = length(node, "width", bw), length(node, "height", bh)
-    if bw <= 0 or bh <= 0:
-        return offset
-    s = min(width / bw, height / bh)
-    dx, dy = x + (width - s * bw) / 2 - s * bx, y + (height - s * bh) / 2 - s * by
-    return np.array([[s, 0.0, dx], [0.0, s, dy], [0.0, 0.0, 1.0]])
 
 
 def walk(document: Document, keep_hidden: bool = False) -> Iterator[Drawn]:

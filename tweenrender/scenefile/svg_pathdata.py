@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["path_prefix", "points_prefix"]
+__all__ = ["path_prefix", "points_prefix", "smooth_controls"]
 
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _SEPARATORS = re.compile(r"[\s,]*")
@@ -90,3 +90,22 @@ def points_prefix(points: str) -> tuple[str, bool]:
     if len(numbers) % 2:
         numbers, whole = numbers[:-1], False
     return " ".join(f"{numbers[k]},{numbers[k + 1]}" for k in range(0, len(numbers), 2)), whole
+
+
+def smooth_controls(path):  # type: ignore[no-untyped-def]
+    """An svgelements ``Path`` with the first control point of its smooth curves as SVG 1.1 (§8.3.6,
+    §8.3.7) defines it: ``S`` reflects the previous segment's second control point only when that segment
+    is a cubic, ``T`` the previous control point only when that segment is a quadratic; after anything
+    else the control point is the current point (svgelements reflects across kinds: ``T`` after ``S``
+    bent the wrong way)."""
+    from svgelements import CubicBezier, QuadraticBezier
+
+    previous = None
+    for segment in path:
+        if getattr(segment, "smooth", False):
+            if isinstance(segment, CubicBezier) and not isinstance(previous, CubicBezier):
+                segment.control1 = type(segment.start)(segment.start)
+            elif isinstance(segment, QuadraticBezier) and not isinstance(previous, QuadraticBezier):
+                segment.control = type(segment.start)(segment.start)
+        previous = segment
+    return path

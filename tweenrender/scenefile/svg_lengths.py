@@ -1,0 +1,65 @@
+"""Lengths relative to the font, and ``Q``: what CSS Values 3 defines and svgelements reads as bare numbers.
+
+``em`` is the element's ``font-size``, ``rem`` the root element's, ``ex`` half an ``em`` (CSS's value
+when the font's x-height is not known, as resvg takes it); ``Q`` a quarter of a millimetre. A
+``font-size`` is a length (``em`` and ``%`` of the parent's), or a keyword (``medium`` = 16 px, CSS's
+scale of 1.2 per step; ``smaller``, ``larger``).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+__all__ = ["DEFAULT_FONT_SIZE", "font_relative", "font_size"]
+
+DEFAULT_FONT_SIZE = 16.0
+"""``medium``, the initial ``font-size`` (CSS px, = user units)."""
+
+_LENGTH = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(rem|em|ex|q)\s*$", re.IGNORECASE)
+_KEYWORDS = {"xx-small": 9.0, "x-small": 10.0, "small": 13.0, "medium": 16.0, "large": 18.0, "x-large": 24.0,
+             "xx-large": 32.0, "xxx-large": 48.0}
+_PER_UNIT = {"em": 1.0, "ex": 0.5}
+
+
+def font_relative(text: str, em: float, rem: float) -> float | None:
+    """``text`` in user units when it is a number in ``em``, ``rem``, ``ex`` or ``Q``; else None."""
+    match = _LENGTH.match(text)
+    if match is None:
+        return None
+    number, unit = float(match.group(1)), match.group(2).lower()
+    if unit == "q":
+        return number * 96.0 / 25.4 / 4.0
+    value = number * (rem if unit == "rem" else em * _PER_UNIT[unit])
+    return value if math.isfinite(value) else None
+
+
+def font_size(text: str | None, parent: float, root: float) -> float:
+    """The ``font-size`` written ``text`` (None: inherited) in user units, given the parent's and the root's;
+    what cannot be read is inherited."""
+    if text is None:
+        return parent
+    value = text.strip().lower()
+    if value in _KEYWORDS:
+        return _KEYWORDS[value]
+    if value == "smaller":
+        return parent / 1.2
+    if value == "larger":
+        return parent * 1.2
+    if value.endswith("%"):
+        try:
+            found = parent * float(value[:-1]) / 100.0
+        except ValueError:
+            return parent
+    else:
+        relative = font_relative(value, parent, root)
+        if relative is not None:
+            found = relative
+        else:
+            from svgelements import Length
+
+            try:
+                found = float(Length(value).value(ppi=96.0, relative_length=parent))
+            except (ValueError, TypeError):
+                return parent
+    return found if math.isfinite(found) and found >= 0 else parent

@@ -1,0 +1,140 @@
+"""Viewports an SVG drawing opens inside itself: a nested ``<svg>``, a ``<symbol>`` (through ``<use>``), an
+``<svg>`` instanced by ``<use>`` (SVG 1.1 §7.9, §5.6; SVG 2 §5.6.2).
+
+A viewport is a rectangle ``x, y, width, height`` in the user space around it (percentages of the
+viewport around it; ``width`` and ``height`` 100 % by default, a ``<use>``'s own ``width`` and ``height``
+replacing those of the ``<svg>`` or ``<symbol>`` it instances), a new user space inside it (its
+``viewBox`` placed by ``preserveAspectRatio``, else its origin at ``x, y``), and a clip to the rectangle
+unless ``overflow`` is ``visible`` or ``auto``. A viewport of zero width or height draws nothing.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["Viewport", "aspect_matrix", "nested_viewport", "parse_view_box", "root_size"]
+
+
+class Node(Protocol):
+    """An element of the drawing's tree (:class:`.svg_document.Node`)."""
+
+    tag: str
+    attrs: dict[str, str]
+    font: tuple[float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class Viewport:
+    """A viewport opened by an element.
+
+    ``to_parent`` (3 × 3) maps its user space into the user space around it; ``rect`` ``(x, y, width,
+    height)`` is its rectangle in that outer space, or None when its content is not clipped; ``size``
+    ``(width, height)`` is what percentages inside it are of (its viewBox's, else its own size).
+    """
+
+    to_parent: NDArray[np.float64]
+    rect: tuple[float, float, float, float] | None
+    size: tuple[float, float]
+
+
+def aspect_matrix(box: tuple[float, float, float, float], width: float, height: float, rule: str
+                  ) -> NDArray[np.float64]:
+    """The 3x3 map of view box ``box`` ``(x, y, w, h)`` into a ``width`` × ``height`` viewport at the origin by
+    the ``preserveAspectRatio`` value ``rule`` (default ``xMidYMid meet``; SVG 1.1 §7.8)."""
+    words = rule.split()
+    if words[:1] == ["defer"]:
+        words = words[1:]
+    align = words[0] if words else "xMidYMid"
+    x, y, w, h = box
+    sx, sy = width / w, height / h
+    if align != "none":
+        sx = sy = max(sx, sy) if words[1:2] == ["slice"] else min(sx, sy)
+    where = {"Min": 0.0, "Mid": 0.5, "Max": 1.0}
+    fx, fy = (where.get(align[1:4], 0.5), where.get(align[5:8], 0.5)) if len(align) == 8 else (0.5, 0.5)
+    return np.array([[sx, 0.0, -x * sx + (width - w * sx) * fx], [0.0, sy, -y * sy + (height - h * sy) * fy],
+                     [0.0, 0.0, 1.0]])
+
+
+def parse_view_box(text: str | None) -> tuple[float, float, float, float] | None:
+    """A ``viewBox`` value as ``(x, y, width, height)``, or None when it is missing or in error (four finite
+    numbers with a positive width and height are needed: SVG ignores any other)."""
+    if not text:
+        return None
+    try:
+        x, y, w, h = (float(v) for v in text.replace(",", " ").split())
+    except ValueError:
+        return None
+    if not all(math.isfinite(v) for v in (x, y, w, h)) or w <= 0 or h <= 0:
+        return None
+    return (x, y, w, h)
+
+
+def _length(text: str | None, relative: float, default: float, font: tuple[float, float]) -> float:
+    """A length attribute in user units (units at 96 per inch, percentages of ``relative``, ``em``, ``rem``
+    and ``ex`` of ``font``); ``default`` when missing or unreadable."""
+    from svgelements import Length
+
+    from .svg_lengths import font_relative
+
+    if text is None or not text.strip():
+        return default
+    relative_to_font = font_relative(text, *font)
+    if relative_to_font is not None:
+        return relative_to_font
+    try:
+        value = float(Length(text.strip()).value(ppi=96.0, relative_length=relative))
+    except (ValueError, TypeError):
+        return default
+    return value if math.isfinite(value) else default
+
+
+def root_size(root: Node) -> tuple[float, float]:
+    """What percentages directly inside the root ``<svg>`` are of: its viewBox's size, else its absolute
+    ``width`` and ``height``, else 100 × 100."""
+    box = parse_view_box(root.attrs.get("viewBox"))
+    if box is not None:
+        return box[2], box[3]
+    sizes = root.attrs.get("width", ""), root.attrs.get("height", "")
+    if "%" not in "".join(sizes):
+        w, h = _length(sizes[0], 100.0, 0.0, root.font), _length(sizes[1], 100.0, 0.0, root.font)
+        if w > 0 and h > 0:
+            return w, h
+    return 100.0, 100.0
+
+
+def nested_viewport(node: Node, parent_size: tuple[float, float], overflow: str,
+                    instance: Node | None = None) -> Viewport | None:
+    """The viewport of a nested ``<svg>`` or of a ``<symbol>`` instanced by ``<use>`` ``instance`` (whose
+    ``width`` and ``height``, when given, replace the element's); None when it draws nothing (zero size).
+
+    ``parent_size`` is what percentages are of; ``overflow`` the element's ``overflow`` property. A symbol
+    sits at the origin of the ``<use>`` (whose ``x``, ``y`` the caller has applied); a negative size is
+    in error and read as ``auto`` (100 %).
+    """
+    pw, ph = parent_size
+    if node.tag == "symbol":
+        x = y = 0.0
+    else:
+        x, y = _length(node.attrs.get("x"), pw, 0.0, node.font), _length(node.attrs.get("y"), ph, 0.0, node.font)
+    sizes = []
+    for name, relative in (("width", pw), ("height", ph)):
+        source = instance if instance is not None and instance.attrs.get(name, "").strip() else node
+        value = _length(source.attrs.get(name), relative, relative, source.font)
+        sizes.append(relative if value < 0 else value)
+    width, height = sizes
+    if width <= 0 or height <= 0:
+        return None
+    box = parse_view_box(node.attrs.get("viewBox"))
+    offset = np.array([[1.0, 0.0, x], [0.0, 1.0, y], [0.0, 0.0, 1.0]])
+    if box is None:
+        to_parent, size = offset, (width, height)
+    else:
+        to_parent = offset @ aspect_matrix(box, width, height, node.attrs.get("preserveAspectRatio", ""))
+        size = (box[2], box[3])
+    clipped = overflow.strip().lower() not in ("visible", "auto")
+    return Viewport(to_parent, (x, y, width, height) if clipped else None, size)

@@ -4,7 +4,8 @@ The XML is read with expat (no entities, no DTD subsets, bounded size, element
 count and depth). Walking the tree resolves what an SVG renderer would: CSS
 (presentation attributes, ``<style>`` rules with simple selectors, inline
 ``style``), inheritance, ``currentColor``, transforms, ``display``,
-``visibility`` and group ``opacity``, and ``<use>`` — whose expansion is
+``visibility`` and group ``opacity``, ``<switch>`` and conditional attributes (:mod:`.svg_conditions`),
+and ``<use>`` — whose expansion is
 counted as it goes, so a file of nested ``<use>`` s cannot grow without bound.
 """
 
@@ -23,10 +24,11 @@ import numpy as np
 from numpy.typing import NDArray
 from svgelements import Matrix
 
+from .svg_conditions import conditions_hold, switch_choice
 from .svg_flatten import Refusal
 
 __all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "MAX_RULE_MATCHES", "SHAPES", "Node", "Document",
-           "Drawn", "read", "parse"]
+           "Drawn", "Masking", "read", "parse"]
 
 MAX_FILE_BYTES = 20 * 1024 * 1024
 """Larger files are refused before parsing: a keyframe drawing is a few kilobytes."""
@@ -51,7 +53,8 @@ _NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linear
 _UNSUPPORTED = ("text", "image", "foreignObject")
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
               "stroke-linejoin", "stroke-miterlimit", "visibility", "color")
-_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask")
+_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask", "mask-type",
+                             "color-interpolation")
 _ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
 _UNSAFE = ("expected plain SVG, found a DOCTYPE with entity declarations (refused: entities can "
            "expand without bound or read other files); save the drawing as plain SVG")
@@ -83,6 +86,10 @@ class Document:
     matched: int = 0  # rules looked at for the elements so far (bounded by MAX_RULE_MATCHES)
 
 
+Masking = tuple[str, NDArray[np.float64], "Node"]
+"""A mask on an element: the ``<mask>``'s id, the element's user space (3x3), the element (whose box it may use)."""
+
+
 @dataclass(frozen=True, slots=True)
 class Drawn:
     """A shape element as drawn: its node, its resolved style, and its transform to the root's user units."""
@@ -95,6 +102,8 @@ class Drawn:
     document: Document
     # the clip paths on it and its ancestors: (id of the <clipPath>, the user space it is in, 3x3)
     clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()
+    # the masks on it and its ancestors: (id of the <mask>, the user space it is in, the element that names it)
+    masks: tuple[Masking, ...] = ()
 
 
 def read(path: Path) -> bytes:
@@ -346,11 +355,12 @@ class _Walk:
         self.looping: dict[str, bool] = {}  # id → whether a <use> of it leads back to itself
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
-              shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
+              shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = (),
+              masks: tuple[Masking, ...] = ()) -> Iterator[Drawn]:
         self.visited += 1
         if self.visited > MAX_EXPANDED:
             raise Refusal(f"expected at most {MAX_EXPANDED} elements once <use> copies are counted, found more")
-        if not node.svg or node.tag in _NOT_DRAWN:
+        if not node.svg or node.tag in _NOT_DRAWN or not conditions_hold(node):
             return
         own = own_style(node, self.document)
         style = {k: parent[k] for k in _INHERITED if k in parent}
@@ -367,23 +377,28 @@ class _Walk:
         if node is not self.document.root and "transform" in node.attrs:
             ctm = compose(ctm, matrix(node.attrs["transform"], node.line), node,
                           f"transform {node.attrs['transform'].strip()[:80]!r}")
-        if own.get("mask", "none").strip() not in ("none", "") and shown:
-            raise Refusal(f"expected no mask, found mask={own['mask'].strip()!r} on <{node.tag}> (line {node.line}): "
-                          "masks are not drawn yet; apply the mask in the editor, or use a clip-path")
+        masked = own.get("mask", "none").strip()
+        if masked.startswith("url(") and shown:
+            target = masked[4:].partition(")")[0].strip().strip("'\"")
+            masks = masks + ((target.removeprefix("#"), ctm, node),)
         reference = own.get("clip-path", "none").strip()
         if reference.startswith("url(") and shown:
             target = reference[4:].partition(")")[0].strip().strip("'\"")
             clips = clips + ((target[1:] if target.startswith("#") else target, ctm),)
         if node.tag in SHAPES:
             visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
-            yield Drawn(node, style, ctm, opacity, visible, self.document, clips)
+            yield Drawn(node, style, ctm, opacity, visible, self.document, clips, masks)
         elif node.tag == "use":
-            yield from self.use(node, style, ctm, opacity, shown, clips)
+            yield from self.use(node, style, ctm, opacity, shown, clips, masks)
         elif node.tag in _CONTAINERS:
             if node.tag == "svg" and node is not self.document.root:
                 ctm = compose(ctm, _nested_viewport(node), node, "the nested <svg>'s viewport transform")
-            for child in node.children:
-                yield from self.visit(child, style, ctm, opacity, shown, clips)
+            children = node.children
+            if node.tag == "switch":  # its first child whose conditions hold (SVG 1.1 §5.8.2)
+                chosen = switch_choice(node, SHAPES + _CONTAINERS + ("use",) + _UNSUPPORTED)
+                children = [chosen] if chosen is not None else []
+            for child in children:
+                yield from self.visit(child, style, ctm, opacity, shown, clips, masks)
         elif node.tag in _UNSUPPORTED and shown:
             raise Refusal(f"expected shapes, found <{node.tag}> (line {node.line}); "
                           "convert it to paths in the editor (Inkscape: Path > Object to Path)")
@@ -411,7 +426,8 @@ class _Walk:
         return found
 
     def use(self, node: Node, style: dict[str, str], ctm: NDArray[np.float64], opacity: float,
-            shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
+            shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = (),
+            masks: tuple[Masking, ...] = ()) -> Iterator[Drawn]:
         href = node.attrs.get("href", node.attrs.get("xlink:href", "")).strip()
         if not href.startswith("#"):
             return  # external references are not followed
@@ -425,9 +441,9 @@ class _Walk:
             referenced = target[0]
             if referenced.tag == "symbol":
                 for child in referenced.children:
-                    yield from self.visit(child, style, placed, opacity, shown, clips)
+                    yield from self.visit(child, style, placed, opacity, shown, clips, masks)
             else:
-                yield from self.visit(referenced, style, placed, opacity, shown, clips)
+                yield from self.visit(referenced, style, placed, opacity, shown, clips, masks)
         finally:
             self.using.pop()
 

@@ -15,7 +15,7 @@ from numpy.typing import NDArray
 __all__ = [
     "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "COSTS", "ALIGNS", "EQUAL_COUNTS",
     "FILL_RULES", "CAPS", "JOINS", "TURNS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint",
-    "Shape", "Matching", "Scene", "DrawnContour", "Gradient", "frozen_points",
+    "Shape", "Matching", "Scene", "DrawnContour", "Gradient", "MaskShape", "Mask", "frozen_points",
 ]
 
 Points = NDArray[np.float64]
@@ -101,6 +101,34 @@ class Paint:
 
 
 @dataclass(frozen=True, slots=True)
+class MaskShape:
+    """One shape of a mask's content, in world units: its contours, paint (stroke width in world units) and
+    drawing rules, and the clip regions and masks on it."""
+
+    contours: tuple[Contour, ...]
+    paint: Paint
+    fill_rule: str = "nonzero"
+    cap: str = "butt"
+    join: str = "miter"
+    miter_limit: float = 4.0
+    clips: tuple[tuple[Contour, ...], ...] = ()
+    masks: tuple[Mask, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class Mask:
+    """An SVG mask in world units: what it lets through of an element at each point is its content's
+    luminance times alpha there (``alpha``: the alpha alone; ``linear``: the luminance of its colours in
+    linear RGB), inside ``region`` (closed contours, nonzero), times the masks on the mask itself."""
+
+    region: tuple[Contour, ...]
+    shapes: tuple[MaskShape, ...]
+    alpha: bool = False
+    masks: tuple[Mask, ...] = ()
+    linear: bool = False
+
+
+@dataclass(frozen=True, slots=True)
 class Hint:
     """A shape hint: ``letter`` (a–z) sits on vertex ``vertex`` of contour ``contour`` of its key
     (snapped onto the outline when the scene was read); the same letter of the next key is its partner."""
@@ -119,7 +147,7 @@ class Key:
     drawn on its own. ``fill_rule``, ``cap``, ``join`` and ``miter_limit`` ``None`` are the shape's
     (a drawing's keys carry their own). ``layer`` is a drawing's key's place in that drawing's
     paint order (0 first; ``None`` for shapes of a scene file, painted in file order); ``clips``
-    its SVG clip paths in world units.
+    its SVG clip paths in world units, ``masks`` its SVG masks.
     ``ease`` is the easing as the scene writes it (``"spacing"`` for a spacing chart); ``easing`` the
     curve it names (a :mod:`.core.timing.easing` object, a spacing chart included; ``None``: parsed
     from ``ease`` when the timeline is built). ``hints`` are this key's shape
@@ -152,6 +180,7 @@ class Key:
     turns: int = 0
     arcs: tuple[tuple[str, tuple[float, float]], ...] = ()
     breakdown: float | None = None
+    masks: tuple[Mask, ...] = ()  # SVG masks, every one multiplied into what the key draws
 
     @property
     def points(self) -> Points:

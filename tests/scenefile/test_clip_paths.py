@@ -1,4 +1,4 @@
-"""Clip paths drawn at keys and carried with their element, against librsvg's pictures; masks refused."""
+"""Clip paths drawn at keys and carried with their element, against librsvg's pictures."""
 
 from __future__ import annotations
 
@@ -56,16 +56,6 @@ def test_a_clip_moves_and_grows_with_its_element(tmp_path: Path) -> None:
     halfway = tr.frame(scene, 0.5, method="linear", size=(256, 256), background="#ffffff")[..., :3].astype(float)
     iou, error = measures(halfway, reference(clipped("middle", 10, 8, 15)))
     assert iou >= 0.99 and error <= 0.01, (iou, error)
-
-
-def test_a_mask_is_refused_in_one_line_naming_the_file_and_line(tmp_path: Path) -> None:
-    svg = tmp_path / "masked.svg"
-    svg.write_text(HEAD + '<defs><mask id="m"><rect width="40" height="20" fill="white"/></mask></defs>\n'
-                   '<rect width="40" height="40" fill="#123456" mask="url(#m)"/></svg>')
-    with pytest.raises(tr.TweenrenderError) as caught:
-        tr.load_scene(svg)
-    message = str(caught.value)
-    assert "\n" not in message and "masked.svg" in message and "mask" in message and "line 2" in message
 
 
 def _clipped(tmp_path: Path, defs: str) -> np.ndarray:

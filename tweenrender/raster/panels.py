@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Callable, Protocol, Sequence
 
 import numpy as np
@@ -133,6 +134,20 @@ def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
 
 def _fill_and_draw(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, alpha: float,
                    pixels: list[NDArray[np.float64]], kept: list[tuple[NDArray[np.float64], bool]]) -> None:
+    if at.masks:  # the key's masks (carried with the element between keys)
+        from .mask import draw_masked
+
+        every = np.concatenate([p for p, _ in kept])
+        reach = at.paint.stroke_width * (viewport.scale if shape.stroke_scales else 1.0) * \
+            max(1.0, drawn_style(shape, at)[1].miter_limit) + 2.0  # a stroke's miters reach this far out
+        (x0, y0), (x1, y1) = every.min(axis=0) - reach, every.max(axis=0) + reach
+        shown = raster.canvas.getLocalClipBounds()  # what of it can show
+        x0, y0 = max(float(x0), shown.left()), max(float(y0), shown.top())
+        x1, y1 = min(float(x1), shown.right()), min(float(y1), shown.bottom())
+        draw_masked(raster, viewport, at.masks,
+                    lambda: _fill_and_draw(raster, viewport, shape, replace(at, masks=()), alpha, pixels, kept),
+                    skia.Rect.MakeLTRB(x0, y0, max(x0, x1), max(y0, y1)))
+        return
     paint = at.paint
     if paint.gradient is not None and paint.fill is not None:
         from .gradients import gradient_shader

@@ -14,9 +14,10 @@ A whole drawing (:func:`read_drawing`) gives every visible shape element —
 paint as an SVG renderer resolves it (:mod:`.svg_document`). Invisible
 elements (no fill and no stroke, ``display:none``, ``visibility:hidden``, zero
 opacity) are left out. Linear and radial gradient fills are kept
-(:mod:`.svg_gradients`), and clip paths as clip regions (``Element.clips``). SVG's
+(:mod:`.svg_gradients`), clip paths as clip regions (``Element.clips``), and masks (``Element.masks``,
+:mod:`.svg_mask`). SVG's
 error rules apply (:mod:`.svg_pathdata`): bad data is drawn up to its first error, an
-element of negative size or a ``<use>`` loop is left out. Refused: masks. Not drawn: filters, markers; gradient strokes and patterns are painted with
+element of negative size or a ``<use>`` loop is left out. Not drawn: filters, markers; gradient strokes and patterns are painted with
 the average colour of their stops.
 """
 
@@ -31,7 +32,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SceneError, did_you_mean
-from ..model import Color, Contour, Paint, frozen_points
+from ..model import Color, Contour, Mask, MaskShape, Paint, frozen_points
 from .svg_document import SHAPES, Document, Drawn, Node, compose, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
 from .svg_color import parse_color
@@ -99,6 +100,7 @@ class Element:
     join: str
     miter_limit: float
     clips: tuple[tuple[Contour, ...], ...] = ()  # clip regions (world units, nonzero), all of them intersected
+    masks: tuple[Mask, ...] = ()  # masks (world units), all of them multiplied (:mod:`.svg_mask`)
 
 
 @dataclass(frozen=True, slots=True)
@@ -290,9 +292,14 @@ def _extent(drawn: list[Drawn]) -> tuple[float, float, float, float]:
     return (float(x0), float(y0), max(float(x1 - x0), 1e-9), max(float(y1 - y0), 1e-9))
 
 
-def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, budget: Budget) -> Element | None:
+def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, budget: Budget,
+             chain: tuple[str, ...] = ()) -> Element | None:
+    """``d`` in world units, or None when it draws nothing (``chain``: the masks being read around it)."""
     paint, fill_rule, cap, join, miter = _paint(d, scale)
     if not paint.visible:
+        return None
+    masks = _masks(d, to_world, scale, tol, budget, chain) if d.masks else ()
+    if masks is None:
         return None
     unstroked = paint.stroke is None or paint.stroke[3] == 0 or paint.stroke_width <= 0
     contours = _contours(d, to_world @ d.ctm, tol, budget, unstroked)
@@ -303,7 +310,24 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
                                                                                    budget))
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
                    tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
-                   miter, tuple(c for c in clips if c is not None))
+                   miter, tuple(c for c in clips if c is not None), masks)
+
+
+def _masks(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, budget: Budget,
+           chain: tuple[str, ...]) -> tuple[Mask, ...] | None:
+    """The masks on ``d`` in world units (:mod:`.svg_mask`); None when they let nothing of it through."""
+    from .svg_mask import Reading, element_masks
+
+    def shape(drawn: Drawn, inner: tuple[str, ...]) -> MaskShape | None:
+        e = _element(drawn, to_world, scale, tol, budget, inner)
+        return None if e is None else MaskShape(e.contours, e.paint, e.fill_rule, e.cap, e.join, e.miter_limit,
+                                                e.clips, e.masks)
+
+    def outline(drawn: Drawn, placed: NDArray[np.float64]) -> list[NDArray[np.float64]]:
+        return [p for p, _ in _contours(drawn, placed, tol, Budget(MAX_VERTICES, tol), True)]
+
+    box = view_box(d.document) or (0.0, 0.0, 100.0, 100.0)
+    return element_masks(d, Reading(to_world, (box[2], box[3]), shape, outline), budget, chain)
 
 
 def _clip_regions(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,

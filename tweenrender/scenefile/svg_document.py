@@ -5,7 +5,8 @@ count and depth). Walking the tree resolves what an SVG renderer would: CSS
 (presentation attributes, ``<style>`` sheets matched by :mod:`.svg_css`, inline
 ``style``, ``!important``), inheritance, ``currentColor``, transforms, ``display``,
 ``visibility`` and group ``opacity``, nested viewports (:mod:`.svg_viewport`), lengths
-relative to the font (:mod:`.svg_lengths`), and ``<use>`` — whose expansion is
+relative to the font (:mod:`.svg_lengths`), ``<switch>`` and conditional attributes
+(:mod:`.svg_conditions`), and ``<use>`` — whose expansion is
 counted as it goes, so a file of nested ``<use>`` s cannot grow without bound.
 """
 
@@ -24,13 +25,14 @@ import numpy as np
 from numpy.typing import NDArray
 from svgelements import Matrix
 
+from .svg_conditions import conditions_hold, switch_choice
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_flatten import Refusal
 from .svg_lengths import DEFAULT_FONT_SIZE, font_relative, font_size
 from .svg_viewport import nested_viewport, root_size
 
 __all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "MAX_RULE_MATCHES", "SHAPES", "Node", "Document",
-           "Drawn", "read", "parse"]
+           "Drawn", "Masking", "read", "parse"]
 
 MAX_FILE_BYTES = 20 * 1024 * 1024
 """Larger files are refused before parsing: a keyframe drawing is a few kilobytes."""
@@ -55,7 +57,8 @@ _NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linear
 _UNSUPPORTED = ("text", "image", "foreignObject")
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
               "stroke-linejoin", "stroke-miterlimit", "visibility", "color")
-_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask")
+_PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask", "mask-type",
+                             "color-interpolation")
 # the properties an element's own style is read for: those above, and what a sheet may set that no child inherits
 _OWN = frozenset(_PROPERTIES + ("transform", "overflow", "font-size"))
 _ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
@@ -86,6 +89,10 @@ class Document:
     sheet: dict[int, tuple[Declarations, ...]] = field(default_factory=dict)
 
 
+Masking = tuple[str, NDArray[np.float64], "Node"]
+"""A mask on an element: the ``<mask>``'s id, the element's user space (3x3), the element (whose box it may use)."""
+
+
 @dataclass(frozen=True, slots=True)
 class Drawn:
     """A shape element as drawn: its node, its resolved style, and its transform to the root's user units."""
@@ -100,6 +107,8 @@ class Drawn:
     clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()
     # what percentages are of in the nested viewport it is in (user units); None: the root's
     viewport: tuple[float, float] | None = None
+    # the masks on it and its ancestors: (id of the <mask>, the user space it is in, the element that names it)
+    masks: tuple[Masking, ...] = ()
 
 
 def read(path: Path) -> bytes:
@@ -303,12 +312,13 @@ class _Walk:
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
               shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = (),
-              instance: Node | None = None) -> Iterator[Drawn]:
+              masks: tuple[Masking, ...] = (), instance: Node | None = None) -> Iterator[Drawn]:
         """The shapes drawn by ``node`` and its children; ``instance`` is the ``<use>`` that instances it."""
         self.visited += 1
         if self.visited > MAX_EXPANDED:
             raise Refusal(f"expected at most {MAX_EXPANDED} elements once <use> copies are counted, found more")
-        if not node.svg or (node.tag in _NOT_DRAWN and not (node.tag == "symbol" and instance is not None)):
+        if not node.svg or (node.tag in _NOT_DRAWN and not (node.tag == "symbol" and instance is not None)) \
+                or not conditions_hold(node):
             return
         own = own_style(node, self.document)
         style = {k: parent[k] for k in _INHERITED if k in parent}
@@ -324,30 +334,35 @@ class _Walk:
         opacity *= min(max(alpha, 0.0), 1.0)
         if node is not self.document.root and "transform" in own and node.tag != "symbol":  # SVG 1.1: none on symbols
             ctm = compose(ctm, matrix(own["transform"], node.line), node, f"transform {own['transform'][:80]!r}")
-        if own.get("mask", "none").strip() not in ("none", "") and shown:
-            raise Refusal(f"expected no mask, found mask={own['mask'].strip()!r} on <{node.tag}> (line {node.line}): "
-                          "masks are not drawn yet; apply the mask in the editor, or use a clip-path")
+        masked = own.get("mask", "none").strip()
+        if masked.startswith("url(") and shown:
+            target = masked[4:].partition(")")[0].strip().strip("'\"")
+            masks = masks + ((target.removeprefix("#"), ctm, node),)
         reference = own.get("clip-path", "none").strip()
         if reference.startswith("url(") and shown:
             target = reference[4:].partition(")")[0].strip().strip("'\"")
             clips = clips + ((target[1:] if target.startswith("#") else target, ctm),)
         if node.tag in SHAPES:
             visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
-            yield Drawn(node, style, ctm, opacity, visible, self.document, clips, viewport=self.viewport)
+            yield Drawn(node, style, ctm, opacity, visible, self.document, clips, viewport=self.viewport, masks=masks)
         elif node.tag == "use":
-            yield from self.use(node, style, ctm, opacity, shown, clips)
+            yield from self.use(node, style, ctm, opacity, shown, clips, masks)
         elif node.tag in ("svg", "symbol") and node is not self.document.root:
-            yield from self.viewport_children(node, own, style, ctm, opacity, shown, clips, instance)
+            yield from self.viewport_children(node, own, style, ctm, opacity, shown, clips, instance, masks)
         elif node.tag in _CONTAINERS:
-            for child in node.children:
-                yield from self.visit(child, style, ctm, opacity, shown, clips)
+            children = node.children
+            if node.tag == "switch":  # its first child whose conditions hold (SVG 1.1 §5.8.2)
+                chosen = switch_choice(node, SHAPES + _CONTAINERS + ("use",) + _UNSUPPORTED)
+                children = [chosen] if chosen is not None else []
+            for child in children:
+                yield from self.visit(child, style, ctm, opacity, shown, clips, masks)
         elif node.tag in _UNSUPPORTED and shown:
             raise Refusal(f"expected shapes, found <{node.tag}> (line {node.line}); "
                           "convert it to paths in the editor (Inkscape: Path > Object to Path)")
 
     def viewport_children(self, node: Node, own: dict[str, str], style: dict[str, str], ctm: NDArray[np.float64],
                           opacity: float, shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...],
-                          instance: Node | None) -> Iterator[Drawn]:
+                          instance: Node | None, masks: tuple[Masking, ...] = ()) -> Iterator[Drawn]:
         """The children of a nested ``<svg>`` or an instanced ``<symbol>``, in the viewport it opens
         (:mod:`.svg_viewport`), clipped to it unless its ``overflow`` is visible."""
         outer = self.viewport or root_size(self.document.root)
@@ -360,7 +375,7 @@ class _Walk:
         saved, self.viewport = self.viewport, viewport.size
         try:
             for child in node.children:
-                yield from self.visit(child, style, ctm, opacity, shown, clips)
+                yield from self.visit(child, style, ctm, opacity, shown, clips, masks)
         finally:
             self.viewport = saved
 
@@ -397,7 +412,8 @@ class _Walk:
         return found
 
     def use(self, node: Node, style: dict[str, str], ctm: NDArray[np.float64], opacity: float,
-            shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = ()) -> Iterator[Drawn]:
+            shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = (),
+            masks: tuple[Masking, ...] = ()) -> Iterator[Drawn]:
         href = node.attrs.get("href", node.attrs.get("xlink:href", "")).strip()
         if not href.startswith("#"):
             return  # external references are not followed
@@ -410,7 +426,7 @@ class _Walk:
         placed = compose(ctm, shift, node, "the <use> element's x, y transform")
         self.using.append(href)
         try:
-            yield from self.visit(target[0], style, placed, opacity, shown, clips, instance=node)
+            yield from self.visit(target[0], style, placed, opacity, shown, clips, masks, instance=node)
         finally:
             self.using.pop()
 

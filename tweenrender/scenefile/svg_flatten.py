@@ -30,6 +30,7 @@ class Budget:
 
     def __init__(self, limit: int, tolerance: float) -> None:
         self.limit, self.left, self.tolerance = limit, limit, tolerance
+        self.memo: dict[object, object] = {}  # what one reading of the drawing works out once (masks)
 
     def spend(self, count: int) -> None:
         self.left -= count

@@ -124,7 +124,7 @@ def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
     and clip paths of the same make."""
     drawn = []
     for at in shapes:
-        _refuse_cross_fade(shape, at)
+        _refuse_uncarried(shape, at)
         drawn.append(at.visible and all(np.all(np.isfinite(c)) for c in at.contours)
                      and all(at.clips))  # a clip region with no contours hides everything
     gradients = _gradient_looks(shapes, segments)
@@ -146,11 +146,14 @@ def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
     return out
 
 
-def _refuse_cross_fade(shape: Shape, at: ShapeAt) -> None:
-    """A vector file cannot carry cross-fading contours: refuse, naming the element."""
+def _refuse_uncarried(shape: Shape, at: ShapeAt) -> None:
+    """A vector file cannot carry cross-fading contours nor masks: refuse, naming the element."""
     if at.fade is not None:
         raise OptionError(f"element {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which the "
                           "vector formats do not carry; render a video or PNG frames", "format")
+    if at.masks:
+        raise OptionError(f"element {shape.name!r}: it is masked (an SVG <mask>), which the vector formats do not "
+                          "carry; render a video or PNG frames, or use a clip-path in the drawing", "format")
 
 
 def _gradient_looks(shapes: list[ShapeAt], segments: NDArray[np.intp]) -> list[tuple[str, str] | None]:

@@ -37,6 +37,7 @@ from .clearance import GRID, Growth, cached, growth_scale, place
 from .easing import LINEAR, Easing, parse_easing
 from ..geometry import best_fit_rotation, signed_area
 from ..clip_motion import clips_at
+from ..mask_motion import MaskBlend, carried, masks_at, masks_at_key
 from ..gradient_blend import blend_gradient, box_of
 from ..correspondence.hint_search import correspond_hinted, correspond_hinted_open
 from ..correspondence.hints import Link, forced_contour_pairs, segment_links, vertex_links
@@ -191,6 +192,7 @@ class ShapeAt:
     key: Key | None = None  # the key whose fill rule and stroke ends are in force (None: the shape's)
     widths: tuple[float, ...] = ()  # per contour, the share of the stroke width it is drawn with (empty: all)
     clips: tuple[tuple[Points, ...], ...] = ()  # clip regions (closed contours, nonzero), intersected
+    masks: MaskBlend = ()  # the masks, each key's carried with the element (:mod:`..mask_motion`)
 
 
 @dataclass(frozen=True, slots=True)
@@ -450,21 +452,28 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
     whole = bool(growing) and not all(segment.shown)  # an element growing from (shrinking to) a hidden key
     p0, p1 = segment.paints
     c0, c1 = (segment.ends[0].clips, segment.ends[1].clips) if segment.ends is not None else ((), ())
+    m0, m1 = (segment.ends[0].masks, segment.ends[1].masks) if segment.ends is not None else ((), ())
     boxes = None
-    if (p0.gradient is not None or p1.gradient is not None or c0 or c1) and pairs:
+    if (p0.gradient is not None or p1.gradient is not None or c0 or c1 or m0 or m1) and pairs:
         boxes = box_of([p.k0 for p in pairs]), box_of([p.k1 for p in pairs])
     out = []
     for k, (x, paint) in enumerate(zip(t.tolist(), paints)):
         visible = segment.shown[0] if x == 0.0 else segment.shown[1] if x == 1.0 else True
         contours = tuple(f[k] for f in frames)  # type: ignore[index]
         clips: tuple[tuple[Points, ...], ...] = ()
+        masks: MaskBlend = ()
         if x in (0.0, 1.0):
             clips = tuple(tuple(c.points for c in region) for region in (c0 if x == 0.0 else c1))
-        elif boxes is not None:  # gradient and clips move with the element (an overshoot too)
+            masks = masks_at_key(m0 if x == 0.0 else m1)
+        elif boxes is not None:  # gradient, clips and masks move with the element (an overshoot too)
             box = box_of(list(contours))
             if p0.gradient is not None or p1.gradient is not None:
                 paint = replace(paint, gradient=blend_gradient(p0, p1, *boxes, box, x))
             clips = clips_at(c0, c1, *boxes, box, x)
+            if m0 or m1:
+                now = np.concatenate(contours)
+                masks = masks_at(m0, m1, carried(np.concatenate([p.k0 for p in pairs]), now),
+                                 carried(np.concatenate([p.k1 for p in pairs]), now), x)
         phase = 0 if x < segment.switch else 1
         flips = segment.flips[phase] or (False,) * len(pairs)
         drawn_as = segment.ends[phase] if segment.ends is not None else None
@@ -473,7 +482,7 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
             own = [i for i, p in enumerate(pairs) if p.source[end] is not None]
             out.append(ShapeAt(tuple(contours[i] for i in own), tuple(closed[i] for i in own), paint,
                                visible and paint.visible, reversed=tuple(flips[i] for i in own), key=drawn_as,
-                               clips=clips))
+                               clips=clips, masks=masks))
             continue
         # every pair is kept (a constant count, for players that interpolate vertices): at a key, one that
         # grows from or shrinks to a point there is that point, stroked with no width, so nothing of it shows
@@ -486,7 +495,7 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
                 share[i] = float(growth_scale(growths[i], np.array([x]))[0])  # type: ignore[arg-type]
             widths = tuple(share)
         out.append(ShapeAt(contours, closed, paint, visible and paint.visible, x if fading else None, sides,
-                           flips, drawn_as, widths, clips))
+                           flips, drawn_as, widths, clips, masks))
     return out
 
 
@@ -524,7 +533,8 @@ def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequen
 def _still(key: Key) -> ShapeAt:
     return ShapeAt(tuple(c.points for c in key.contours), tuple(c.closed for c in key.contours), key.paint,
                    not key.hidden and key.paint.visible, key=key,
-                   clips=tuple(tuple(c.points for c in region) for region in key.clips))
+                   clips=tuple(tuple(c.points for c in region) for region in key.clips),
+                   masks=masks_at_key(key.masks))
 
 
 def tracks_of(scene: Scene, matching: Matching | None = None) -> tuple[Track, ...]:

@@ -3,9 +3,12 @@ acceptance"): rlottie and ThorVG (pip wheels with the player inside) and Skottie
 npm ``canvaskit-wasm`` run by node, CPU raster) draw Lottie JSON; headless Chromium draws an animated
 SVG paused at a time.
 
-Skottie comes from the npm folder ``.ci/run`` installs into: ``$TWEENRENDER_NPM`` if set, else
-``~/.cache/tweenrender/npm`` (``node_modules/canvaskit-wasm`` inside); without it, or without node, the
-checks that need it skip, saying so."""
+lottie-web (the bodymovin player, npm ``lottie-web``) draws Lottie JSON with its SVG renderer in headless
+Chromium, stopped at each frame.
+
+Skottie and lottie-web come from the npm folder ``.ci/run`` installs into: ``$TWEENRENDER_NPM`` if set, else
+``~/.cache/tweenrender/npm`` (``node_modules/canvaskit-wasm`` and ``node_modules/lottie-web`` inside);
+without it, or without node (Skottie) or chromium (lottie-web), the checks that need it skip, saying so."""
 
 from __future__ import annotations
 
@@ -135,6 +138,20 @@ def check_skottie(scene: object, folder: Path, method: str | None = None, every_
                    "Skottie")
 
 
+def check_lottie_web(scene: object, folder: Path, method: str | None = None, every_frame: bool = True) -> None:
+    """Write ``scene`` as Lottie and check what lottie-web (SVG renderer, headless Chromium) draws of every frame
+    (or :func:`sample_frames`) against the project's frames (the caller skips first where
+    :func:`lottie_web_missing` says why it cannot run)."""
+    import tweenrender as tr
+    from tweenrender.plan.job import total_frames
+
+    target = tr.write(scene, folder / "lottie-web.json", method=method)
+    count = total_frames(scene)
+    frames = list(range(count)) if every_frame else sample_frames(scene, count)
+    pictures = lottie_web_frames(target, frames, scene.size, background_of(scene))  # type: ignore[attr-defined]
+    check_pictures(scene, pictures, frames, method, "lottie-web")
+
+
 def check_chromium(cases: list[tuple[str, object, str | None]], folder: Path) -> None:
     """Write each ``(name, scene, method)`` as an animated SVG and check Chromium's pictures at t = 0, ¼, ½, ¾, 1
     of the clip (at frame times) against the project's frames, one browser for all."""
@@ -165,6 +182,74 @@ def skottie_missing() -> str | None:
     if not (npm_folder() / "node_modules" / "canvaskit-wasm" / "bin" / "full" / "canvaskit.js").exists():
         return f"Skottie (npm canvaskit-wasm) is not installed in {npm_folder()} (.ci/run installs it there)"
     return None
+
+
+def lottie_web_player() -> Path:
+    """Where lottie-web's player script is in :func:`npm_folder`."""
+    return npm_folder() / "node_modules" / "lottie-web" / "build" / "player" / "lottie.min.js"
+
+
+def lottie_web_missing() -> str | None:
+    """Why lottie-web cannot be run here (``None``: it can)."""
+    from tests.browser import chromium
+
+    if chromium() is None:
+        return "no chromium on this machine to run lottie-web"
+    if not lottie_web_player().exists():
+        return f"lottie-web (npm lottie-web) is not installed in {npm_folder()} (.ci/run installs it there)"
+    return None
+
+
+_LOTTIE_PAGE = """<!doctype html><html><head><style>
+html, body {{ margin: 0; overflow: hidden; background: {background} }} svg {{ display: block }}</style></head><body>
+<div id="stage" style="width:{width}px;height:{height}px"></div>
+<script src="{player}"></script><script src="animation.js"></script>
+<script>window.animation = lottie.loadAnimation({{container: document.getElementById("stage"), renderer: "svg",
+loop: false, autoplay: false, animationData: window.animationData}});</script></body></html>"""
+
+
+def lottie_web_frames(path: Path, frames: list[int], size: tuple[int, int],
+                      background: tuple[int, int, int]) -> list[np.ndarray]:
+    """lottie-web's pictures of ``frames`` (its SVG renderer in headless Chromium, ``goToAndStop`` at each frame,
+    over the opaque ``background``): RGB ``(H, W, 3)`` each."""
+    from tests.browser import _Browser, chromium
+    from tests.helpers import read_png
+
+    executable = chromium()
+    if executable is None:
+        raise FileNotFoundError("chromium")
+    width, height = size
+    out = []
+    with tempfile.TemporaryDirectory(prefix="tweenrender-lottie-web-") as scratch:
+        (Path(scratch) / "animation.js").write_text(f"window.animationData = {path.read_text(encoding='utf-8')};",
+                                                    encoding="utf-8")
+        page = Path(scratch) / "page.html"
+        page.write_text(_LOTTIE_PAGE.format(background="rgb({},{},{})".format(*background), width=width,
+                                            height=height, player=lottie_web_player().resolve().as_uri()),
+                                encoding="utf-8")
+        browser = _Browser(executable, str(Path(scratch) / "profile"))
+        try:
+            target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+            browser.send("Page.enable", session=session)
+            browser.send("Emulation.setDeviceMetricsOverride",
+                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False}, session=session)
+            browser.send("Page.navigate", {"url": page.resolve().as_uri()}, session=session)
+            _wait_for(browser, session, "!!(window.animation && window.animation.isLoaded)")
+            for frame in frames:
+                browser.send("Runtime.evaluate", {"expression": f"window.animation.goToAndStop({frame}, true)",
+                                                  "returnByValue": True}, session=session)
+                browser.send("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
+                                                                "requestAnimationFrame(r)))",
+                                                  "awaitPromise": True}, session=session)
+                shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
+                with tempfile.NamedTemporaryFile(suffix=".png") as handle:
+                    handle.write(base64.b64decode(shot["data"]))
+                    handle.flush()
+                    out.append(read_png(Path(handle.name))[..., :3])
+        finally:
+            browser.close()
+    return out
 
 
 def skottie_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[np.ndarray]:

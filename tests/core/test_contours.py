@@ -149,3 +149,55 @@ def test_roles_of_many_small_squares_test_only_the_contours_whose_box_holds_the_
     monkeypatch.setattr(contours_module, "inside", counted)
     assert roles([frame, *squares], [True] * 301) == ["outer"] + ["hole"] * 300
     assert calls[0] <= 2 * 301
+
+
+def test_nesting_of_many_small_squares_is_tested_where_boxes_nest(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """400 unit squares inside one frame, each moving a little: the exact nesting test runs only on the
+    pairs whose bounding boxes lie one within the other (the frame with each square), not on every pair
+    (79 800), and nothing is parted."""
+    import tweenrender.core.contours as contours_module
+
+    a = [np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float) + [3 * (i % 20) + 1, 3 * (i // 20) + 1]
+         for i in range(400)]
+    b = [s + [0.5, 0.25] for s in a]
+    frame = np.array([[0, 0], [62, 0], [62, 62], [0, 62]], dtype=float)
+    calls = [0]
+    nested = contours_module._nested
+
+    def counted(c: np.ndarray, d: np.ndarray) -> int:
+        calls[0] += 1
+        return nested(c, d)
+
+    monkeypatch.setattr(contours_module, "_nested", counted)
+    partners = [(i, i) for i in range(401)]
+    assert contours_module.keep_nesting(partners, [frame, *a], [True] * 401, [frame, *b], [True] * 401) == partners
+    assert calls[0] <= 2 * 401
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_misnested_pairs_match_every_pair_tested(seed: int) -> None:
+    """Random squares, some nested, some swapping nesting between the keys: the pairs found nested differently
+    are those a test of every pair finds (brute force: shapely's containment)."""
+    import shapely
+
+    from tweenrender.core.contours import _misnested
+
+    rng = np.random.default_rng(seed)
+    count = 24
+    a = [square(*rng.uniform(0, 10, 2), rng.choice([0.5, 2.0, 6.0])) for _ in range(count)]
+    b = [c + rng.uniform(-1.5, 1.5, 2) if rng.random() < 0.5 else c.copy() for c in a]
+    pairs = [(i, i) for i in range(count)]
+    found = {frozenset(pq) for pq in _misnested(pairs, a, b)}
+
+    def relation(key: list[np.ndarray], p: int, q: int) -> int | None:
+        sp, sq = shapely.Polygon(key[p]), shapely.Polygon(key[q])
+        if sp.boundary.intersects(sq.boundary):
+            return None  # they meet: not apart
+        return 1 if sq.contains(sp) else -1 if sp.contains(sq) else 0
+
+    expected = set()
+    for p, q in itertools.combinations(range(count), 2):
+        ra, rb = relation(a, p, q), relation(b, p, q)
+        if ra is not None and rb is not None and ra != rb:
+            expected.add(frozenset({(p, p), (q, q)}))
+    assert found == expected

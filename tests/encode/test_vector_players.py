@@ -2,8 +2,10 @@
 
 Lottie JSON is drawn by rlottie and by ThorVG (pip wheels with the players inside) — every frame of
 the icon pairs and the paint scene, and for the shipped scenes (1280 × 720) ten frames evenly and
-the frames on both sides of every key — and by Skottie (npm ``canvaskit-wasm`` run by node, where
-``.ci/run`` installed it; every frame of the icon pairs, the sample of the shipped scenes), the animated
+the frames on both sides of every key — by Skottie (npm ``canvaskit-wasm`` run by node, where
+``.ci/run`` installed it; every frame of the icon pairs, the sample of the shipped scenes) and by
+lottie-web (npm ``lottie-web``, its SVG renderer in headless Chromium; every frame of the icon pairs and
+the paint and timed scenes, the sample of the shipped scenes), the animated
 SVG by headless Chromium paused at t = 0, ¼, ½, ¾, 1 of the clip (at frame times). Each picture
 is compared with ``tr.frame`` at the same time: coverage IoU ≥ 0.98 and mean colour error ≤ 0.03
 (DESIGN, "Measures used in acceptance"), for the shipped scenes, real icon pairs (holes, strokes,
@@ -20,7 +22,8 @@ import pytest
 import tweenrender as tr
 from tweenrender.core.methods.registry import METHODS
 from tests.helpers import DATA, SCENES, write_scene
-from tests.vector_players import check_chromium, check_lottie_players, check_skottie, skottie_missing
+from tests.vector_players import (check_chromium, check_lottie_players, check_lottie_web, check_skottie,
+                                  lottie_web_missing, skottie_missing)
 
 SHIPPED = sorted(SCENES.glob("*.toml"))
 ICONS = DATA / "icons"
@@ -135,6 +138,29 @@ def test_shipped_scenes_and_curved_methods_in_skottie(tmp_path: Path) -> None:
         check_skottie(_icons(*ICON_PAIRS[0]), tmp_path, method)
     check_skottie(_timed(), tmp_path)
     check_skottie(_paint_scene(tmp_path), tmp_path)
+
+
+def _lottie_web() -> None:
+    reason = lottie_web_missing()
+    if reason is not None:
+        pytest.skip(reason)
+
+
+@pytest.mark.parametrize("pair", ICON_PAIRS, ids=lambda p: p[0].split("/")[0] + "-" + Path(p[0]).stem)
+def test_icon_pairs_in_lottie_web_every_frame(pair: tuple[str, str], tmp_path: Path) -> None:
+    _lottie_web()
+    check_lottie_web(_icons(*pair), tmp_path)
+
+
+def test_shipped_scenes_and_curved_methods_in_lottie_web(tmp_path: Path) -> None:
+    """The shipped scenes (1280 × 720) at the sample frames, the rest at every frame."""
+    _lottie_web()
+    for scene_path in SHIPPED:
+        check_lottie_web(tr.load_scene(scene_path), tmp_path, every_frame=False)
+    for method in ("nonlinear", "arap"):
+        check_lottie_web(_icons(*ICON_PAIRS[0]), tmp_path, method)
+    check_lottie_web(_timed(), tmp_path)
+    check_lottie_web(_paint_scene(tmp_path), tmp_path)
 
 
 def _timed() -> tr.Scene:

@@ -399,10 +399,10 @@ def test_gradients_and_clip_paths_are_written(tmp_path: Path) -> None:
     assert keys[0]["s"][:4] == [0, 1, 0, 0] and keys[-1]["s"][4:8] == [0.5, 0, 1, 0]
     assert [mask["mode"] for mask in layer["masksProperties"]] == ["a"]
     svg = tr.write(scene, tmp_path / "x.svg").read_text()
-    assert '<linearGradient id="run0-fill" gradientUnits="userSpaceOnUse" spreadMethod="pad"' in svg
+    assert '<linearGradient id="tr-run0-fill" gradientUnits="userSpaceOnUse" spreadMethod="pad"' in svg
     assert svg.count("<stop ") == 3 and '<animate attributeName="stop-color"' in svg
-    assert 'fill="url(#run0-fill)"' in svg and '<g clip-path="url(#run0-clip-0)">' in svg
-    assert re.search(r'<clipPath id="run0-clip-0">\s*<path d="[^"]+" clip-rule="nonzero">\s*<animate attributeName="d"',
+    assert 'fill="url(#tr-run0-fill)"' in svg and '<g clip-path="url(#tr-run0-clip-0)">' in svg
+    assert re.search(r'<clipPath id="tr-run0-clip-0">\s*<path d="[^"]+" clip-rule="nonzero">\s*<animate attributeName="d"',
                      svg)
 
 

@@ -119,12 +119,13 @@ def pair_contours(a: Sequence[Array], a_closed: Sequence[bool], b: Sequence[Arra
         pb = np.array([_box_centre([b[j]]) - centre_b for j in jb])
         sa = np.log([contour_size(a[i], a_closed[i]) for i in ia])
         sb = np.log([contour_size(b[j], b_closed[j]) for j in jb])
-        cost = (np.linalg.norm(pa[:, None] - pb[None], axis=-1) / scale
+        cost = (np.hypot(pa[:, None, 0] - pb[None, :, 0], pa[:, None, 1] - pb[None, :, 1]) / scale
                 + _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))
         rows, cols = min_cost_assignment(cost)
         pairs += [(ia[r], jb[c]) for r, c in zip(rows, cols)]
-        pairs += [(i, None) for k, i in enumerate(ia) if k not in set(rows.tolist())]
-        pairs += [(None, j) for k, j in enumerate(jb) if k not in set(cols.tolist())]
+        paired_rows, paired_cols = set(rows.tolist()), set(cols.tolist())
+        pairs += [(i, None) for k, i in enumerate(ia) if k not in paired_rows]
+        pairs += [(None, j) for k, j in enumerate(jb) if k not in paired_cols]
     matched = sorted((p for p in pairs if p[0] is not None), key=lambda p: p[0])  # type: ignore[arg-type, return-value]
     new = sorted((p for p in pairs if p[0] is None), key=lambda p: p[1])  # type: ignore[arg-type, return-value]
     return matched + new
@@ -171,12 +172,29 @@ def _misnested(pairs: Sequence[tuple[int, int]], a: Sequence[Array], b: Sequence
     meeting = set(proper_crossings(ka, [True] * len(ka), touching=True)) | \
         set(proper_crossings(kb, [True] * len(kb), touching=True))
     out = []
-    for p in range(len(pairs)):
-        for q in range(p + 1, len(pairs)):
-            if (p, q) in meeting:
-                continue
-            if _nested(ka[p], ka[q]) != _nested(kb[p], kb[q]):
-                out.append((pairs[p], pairs[q]))
+    # nested in either key needs boxes one within the other there: the other pairs are apart in both
+    for p, q in sorted(_boxes_within(bounding_boxes(ka)) | _boxes_within(bounding_boxes(kb))):
+        if (p, q) in meeting:
+            continue
+        if _nested(ka[p], ka[q]) != _nested(kb[p], kb[q]):
+            out.append((pairs[p], pairs[q]))
+    return out
+
+
+def _boxes_within(boxes: Array) -> set[tuple[int, int]]:
+    """The index pairs ``(p, q)``, ``p < q``, of ``boxes (C, 4)`` (``[xmin, ymin, xmax, ymax]``) where one box
+    lies within the other, edges included: each box against the boxes whose left edge falls within its
+    own x range (found in the boxes sorted by left edge), so the work follows the pairs whose x ranges
+    nest, not every pair."""
+    order = np.argsort(boxes[:, 0], kind="stable")
+    left = boxes[order, 0]
+    out: set[tuple[int, int]] = set()
+    for p in range(len(boxes)):
+        lo, hi = np.searchsorted(left, boxes[p, 0], "left"), np.searchsorted(left, boxes[p, 2], "right")
+        others = order[lo:hi]
+        held = others[(boxes[others, 1] >= boxes[p, 1]) & (boxes[others, 2] <= boxes[p, 2])
+                      & (boxes[others, 3] <= boxes[p, 3]) & (others != p)]  # within box p
+        out.update((min(p, int(q)), max(p, int(q))) for q in held.tolist())
     return out
 
 

@@ -6,8 +6,9 @@ a group, shown only over its frames (``visibility``, discrete) and faded by the 
 ``<animate>`` moves ``d`` through the path keyframes (``calcMode="spline"`` with the easing's
 ``keySplines`` for an exact segment) and ``fill``, ``fill-opacity``, ``stroke``,
 ``stroke-opacity``, ``stroke-width`` through the paint keyframes; gradient fills and clip paths as
-:mod:`.svg_paint` writes them. Frame ``f`` is at
-``keyTime f / F`` of ``dur = F / fps`` seconds; every animation freezes at its end.
+:mod:`.svg_paint` writes them, with ids of the file's own (``tr-run0-fill``, ``tr-run0-clip-0``, …, under
+a prefix no group id begins with: :func:`own_prefix`); each group's id is its element's name and first
+frame. Frame ``f`` is at ``keyTime f / F`` of ``dur = F / fps`` seconds; every animation freezes at its end.
 """
 
 from __future__ import annotations
@@ -45,15 +46,32 @@ def svg_document(clip: VectorClip, title: str = "tweenrender") -> str:
     if a > 0:
         lines.append(f'<rect width="{width}" height="{height}" fill="{hex_colour((r / 255, g / 255, b / 255))}"'
                      + (f' fill-opacity="{number(a / 255, 4)}"' if a < 255 else "") + "/>")
+    prefix = own_prefix([_group_id(run) for run in clip.runs])
     for index, run in enumerate(clip.runs):
-        lines.extend(_run(run, f"run{index}", clip.frames, timing))
+        lines.extend(_run(run, f"{prefix}run{index}", clip.frames, timing))
     lines.append("</svg>")
     return "\n".join(lines) + "\n"
 
 
+def own_prefix(taken: list[str]) -> str:
+    """The prefix of the file's own ids (its gradients' and clip paths'): ``tr-``, else ``tr1-``, ``tr2-``, …,
+    the first that begins none of the ids ``taken`` (the groups', named after the drawing's elements), so no
+    id of the file is used twice and a reference finds the element it means."""
+    prefix, count = "tr-", 0
+    while any(ident.startswith(prefix) for ident in taken):
+        count += 1
+        prefix = f"tr{count}-"
+    return prefix
+
+
+def _group_id(run: VectorRun) -> str:
+    """The id of a run's group: its element's name and first frame."""
+    return f"{run.element}-{run.first}"
+
+
 def _run(run: VectorRun, ident: str, total: int, timing: str) -> list[str]:
     """The run as a group; ``ident`` names its gradient (``ident-fill``) and clip paths (``ident-clip-0``, …)."""
-    lines = [f"<g id={quoteattr(f'{run.element}-{run.first}')}"
+    lines = [f"<g id={quoteattr(_group_id(run))}"
              + (' visibility="hidden"' if run.first > 0 else "") + _static_opacity(run) + ">"]
     if run.first > 0 or run.stop < total:
         # switched a thousandth of a frame early, so a frame's own time is never on the edge

@@ -228,7 +228,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
          ending: tuple[ShapeAt, list[Array]] | None = None) -> VectorRun:
     keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
     flips = shapes[0].reversed or (False,) * len(shapes[0].contours)
-    samples = [np.stack([_drawn(viewport, at.contours[i], flips[i]) for at in shapes]) for i in keep]  # (F, L_i, 2)
+    samples = [_drawn(viewport, np.stack([at.contours[i] for at in shapes]), flips[i]) for i in keep]  # (F, L_i, 2)
     joined = np.concatenate(samples, axis=1) if samples else np.zeros((len(shapes), 0, 2))
     every_pair = exact is not None and len(shapes[0].contours) == len(exact[2].pairs)
     if ending is not None and len(shapes[0].contours) == len(ending[1]):
@@ -334,9 +334,10 @@ def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:
 
 
 def _drawn(viewport: Viewport, points: Array, flip: bool) -> Array:
-    """A contour ``(N, 2)`` in output pixels, in the order it is drawn (reversed where its key winds so)."""
+    """A contour ``(N, 2)`` (or one per frame, ``(F, N, 2)``) in output pixels, in the order it is drawn
+    (reversed where its key winds so)."""
     pixels = viewport.to_pixels(points)
-    return pixels[::-1] if flip else pixels
+    return pixels[..., ::-1, :] if flip else pixels
 
 
 def _paint_arrays(paints: list[Paint], scale: float) -> tuple[Array | None, Array | None, Array, Array]:

@@ -14,6 +14,7 @@ frame:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -38,7 +39,11 @@ _COARSE = np.array([(p, q) for p in np.linspace(0.0, 1.0, 5) for q in np.linspac
 _MOVES = np.array([(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)], dtype=np.float64)
 _FINEST = 1 / 256  # the search for a span's timing stops at this step
 _BISECTIONS = 30  # halvings in the search for a keyframe's values that miss by least
-_MEMORY = 1 << 21  # floats a batch of candidate spans may hold at once
+_SCREEN = 24
+"""Frames of a long span the search for its timing measures before checking the timing found at every frame."""
+_REACH_SHARE = 1 / 16
+"""The search for a span's end stops when the gap between the farthest end that fits and the nearest that
+fails beyond it is this share of the span: the span is then at most that much shorter than it might be."""
 
 
 def timing(u: Array, ease: Array) -> Array:
@@ -175,13 +180,13 @@ def fit_keyframes(values: Array, tolerance: float, eased: bool = True) -> Keyfra
     ``tolerance`` of every frame at every vertex: frames increasing from 0 to F - 1 (one keyframe
     when every frame is the first), the first and last keyframes' values exact.
 
-    From the last keyframe ``a`` (values ``z_a``) a span grows frame by frame while some end values
-    ``z_b``, within the tolerance of frame ``b``, put every frame between within the tolerance
-    (:func:`_room`), evenly timed, or else (with ``eased``) within :data:`EASED_SHARE` of it under
-    some :func:`timing` (searched); it stops before the first end that fails. ``z_b`` is then the end
-    that misses the span's frames by least (:func:`_knot`). Non-finite values are keyframes of their
-    own, exact, as are the frames after them. Should rounding ever let the result stray past the
-    tolerance, :func:`greedy_keyframes` answers instead.
+    From the last keyframe ``a`` (values ``z_a``) a span reaches as far as some end values ``z_b``,
+    within the tolerance of frame ``b``, put every frame between within the tolerance (:func:`_room`),
+    evenly timed, or else (with ``eased``) within :data:`EASED_SHARE` of it under some :func:`timing`
+    (searched); the end is found by doubling steps and halving gaps (:func:`_reach`), so the work grows
+    linearly with the frames. ``z_b`` is then the end that misses the span's frames by least
+    (:func:`_knot`). Non-finite values are keyframes of their own, exact, as are the frames after them.
+    Should rounding ever let the result stray past the tolerance, :func:`greedy_keyframes` answers instead.
     """
     flat = _flat(values)
     frames = len(flat)
@@ -221,16 +226,18 @@ class _Room:
 
 
 def _room(values: Array, a: int, start: Array, ends: NDArray[np.intp], eases: Array,
-          limit: float | Array) -> _Room:
+          limit: float | Array, between: NDArray[np.intp] | None = None) -> _Room:
     """The room of spans from frame ``a`` (values ``start (N, D)``) to each of ``ends (C,)``, timed by
-    ``eases (C, 2)``, in ``values (F, N, D)``, for ``limit`` (or one per vertex, ``(N,)``).
+    ``eases (C, 2)``, in ``values (F, N, D)``, for ``limit`` (or one per vertex, ``(N,)``), measured at
+    the frames ``between (M,)`` (each after ``a``; by default every frame up to the farthest end).
 
     At a frame between, at fraction s of the way (timed), the end correction λ·unit moves the played
     point by s·λ·unit from the chord's point c: it is within the limit r of x when
     |s·λ·unit - (x - c)|² ≤ r², an interval of λ (a quadratic); the room is their intersection with
     the end's own [-r, r].
     """
-    between = a + 1 + np.arange(int(ends.max()) - a - 1)  # (M,)
+    if between is None:
+        between = a + 1 + np.arange(int(ends.max()) - a - 1)  # (M,)
     u = (between[None, :] - a) / (ends[:, None] - a)  # (C, M)
     inside = u < 1.0
     s = np.where(inside, timing(np.minimum(u, 1.0), eases), 0.0)  # (C, M), > 0 inside
@@ -293,28 +300,22 @@ def _span(values: Array, finite: NDArray[np.bool_], a: int, start: Array, limit:
           ahead: bool = True) -> tuple[int, Array, tuple[float, float]]:
     """The keyframe after frame ``a`` (values ``start (N, D)``) in ``values (F, N, D)`` (``finite (F,)``
     where every value is): its frame, values ``(N, D)`` (:func:`_knot`) and the span's timing handles
-    ``(p, q)``. A span of one frame ends at the exact values, or (looking ``ahead``) at
+    ``(p, q)``. The end is searched by :func:`_reach`, evenly timed, then further with a timing of its own
+    (with ``eased``). A span of one frame ends at the exact values, or (looking ``ahead``) at
     :func:`_outward`'s where the next span then reaches further."""
     frames = len(values)
     if a + 2 > frames - 1 or not (finite[a] and finite[a + 1] and np.all(np.isfinite(start))):
         return a + 1, values[a + 1], STRAIGHT_EASE
     stop = a + 2 + int(np.argmin(np.append(finite[a + 2:], False)))  # the first non-finite frame after a + 1
-    end, ease = a + 1, STRAIGHT_EASE
-    first, batch = a + 2, 4
-    while first < stop:  # evenly timed, a batch of ends at a time, each batch twice the last (memory allowing)
-        ends = np.arange(first, min(stop, first + batch))
-        first, batch = first + batch, max(1, min(2 * batch, _MEMORY // max(1, values[0].size * (ends[-1] - a))))
-        room = _room(values, a, start, ends, np.tile(STRAIGHT_EASE, (len(ends), 1)), limit)
-        fits = np.append(_shortfall(room, ends == frames - 1) <= 0, False)
-        last = int(np.argmin(fits)) - 1  # the last end before the first that fails
-        end = int(ends[last]) if last >= 0 else end
-        if last < len(ends) - 1:
-            break
-    for b in range(end + 1, stop if eased else 0):  # then with a timing of its own, an end at a time
-        found = _eased(values, a, start, b, limit * EASED_SHARE)
-        if found is None:
-            break
-        end, ease = b, found
+    exact_end = frames - 1
+
+    def even(b: int) -> tuple[float, float] | None:
+        room = _room(values, a, start, np.array([b]), np.array([STRAIGHT_EASE]), limit)
+        return STRAIGHT_EASE if _shortfall(room, np.array([b == exact_end]))[0] <= 0 else None
+
+    end, ease = _reach(a, a + 1, STRAIGHT_EASE, stop, even)
+    if eased and end + 1 < stop:
+        end, ease = _reach(a, end, ease, stop, lambda b: _eased(values, a, start, b, limit * EASED_SHARE))
     if end > a + 1:
         return end, _knot(values, a, start, end, ease, limit if ease == STRAIGHT_EASE else limit * EASED_SHARE), ease
     knot = values[a + 1]
@@ -324,6 +325,33 @@ def _span(values: Array, finite: NDArray[np.bool_], a: int, start: Array, limit:
                 > _span(values, finite, a + 1, knot, limit, eased, False)[0]):
             knot = outward
     return a + 1, knot, STRAIGHT_EASE
+
+
+def _reach(a: int, end: int, ease: tuple[float, float], stop: int,
+           fits: Callable[[int], tuple[float, float] | None]) -> tuple[int, tuple[float, float]]:
+    """The farthest end found before ``stop`` of a span from frame ``a`` that ``fits`` (its timing, else
+    ``None``), starting from ``end`` (which fits, timed by ``ease``): ends tried at steps doubling from
+    ``end`` (from twice :data:`_REACH_SHARE` of the span so far, or one frame; the last before ``stop``) up
+    to the first that fails, then halving the gap between the last that fits and it down to
+    :data:`_REACH_SHARE` of the span (one frame on short spans). Every step is a share of the
+    span, so the same motion sampled more finely takes as many tries, each measuring the span's frames:
+    a span of n frames costs a bounded multiple of n measures, not n²; a span is kept only where it fits."""
+    failed, step = stop, max(1, int((end - a) * _REACH_SHARE * 2))
+    while end < stop - 1:
+        candidate = min(end + step, stop - 1)
+        found = fits(candidate)
+        if found is None:
+            failed = candidate
+            break
+        end, ease, step = candidate, found, 2 * step
+    while failed - end > max(1, int((end - a) * _REACH_SHARE)):
+        middle = (end + failed) // 2
+        found = fits(middle)
+        if found is None:
+            failed = middle
+        else:
+            end, ease = middle, found
+    return end, ease
 
 
 def _near(values: Array, a: int, start: Array, b: int, limit: float) -> bool:
@@ -339,21 +367,36 @@ def _near(values: Array, a: int, start: Array, b: int, limit: float) -> bool:
 
 def _eased(values: Array, a: int, start: Array, b: int, limit: float) -> tuple[float, float] | None:
     """A timing ``(p, q)`` in [0, 1]² under which the span from frame ``a`` (values ``start``) to ``b``
-    fits its room; ``None`` if the search finds none. The search starts from the best of even timing
-    and a 5 × 5 grid, then moves to the best of the eight neighbours at a step while that misses by
-    less, else halves the step, down to 1/256."""
+    fits its room; ``None`` if the search finds none. A long span is searched at :data:`_SCREEN` frames
+    of it spread evenly (fewer constraints: every timing that fits all its frames fits those), the
+    timing found then checked at every frame, and searched at every frame from there if it misses."""
     if not _near(values, a, start, b, limit):
         return None
     exact = b == len(values) - 1
+    if b - a - 1 <= _SCREEN:
+        return _timing_search(values, a, start, b, limit, exact, None, None)
+    screen = np.unique(np.rint(np.linspace(a + 1, b - 1, _SCREEN)).astype(np.intp))
+    found = _timing_search(values, a, start, b, limit, exact, screen, None)
+    if found is None:
+        return None
+    return _timing_search(values, a, start, b, limit, exact, None, np.array([found]))
+
+
+def _timing_search(values: Array, a: int, start: Array, b: int, limit: float, exact: bool,
+                   between: NDArray[np.intp] | None, first: Array | None) -> tuple[float, float] | None:
+    """The search of :func:`_eased`, measured at the frames ``between`` (``None``: every one): from the best
+    of ``first (C, 2)`` timings (by default even timing and a 5 × 5 grid), it moves to the best of the eight
+    neighbours at a step (1/8, or 1/64 from a given start) while that misses by less, else halves the step,
+    down to 1/256; ``None`` if none fits."""
 
     def shortfall(eases: Array) -> Array:
-        room = _room(values, a, start, np.full(len(eases), b), eases, limit)
+        room = _room(values, a, start, np.full(len(eases), b), eases, limit, between)
         return _shortfall(room, np.full(len(eases), exact))
 
-    candidates = np.vstack([[STRAIGHT_EASE], _COARSE])
+    candidates = np.vstack([[STRAIGHT_EASE], _COARSE]) if first is None else first
     short = shortfall(candidates)
     centre, missed = candidates[int(np.argmin(short))], float(short.min())
-    step = 1 / 8
+    step = 1 / 8 if first is None else 1 / 64
     while missed > 0:
         if step < _FINEST:
             return None

@@ -1,0 +1,91 @@
+"""Vector export's work grows linearly with the frames of a clip: the same motion sampled four times as
+finely costs about four times the values measured (counted, not timed) by the keyframe fit alone and by a
+whole export (the fits of curves, path keyframes and paint keyframes). Quadratic work (a span's end searched
+one frame at a time, each try measuring every frame of the span) would cost sixteen times."""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+import tweenrender as tr
+from tests.helpers import write_scene
+from tweenrender.vector import curves, keyframes
+
+LINEAR = 4.5
+"""At most this many times the work for four times the frames (4: exactly linear; the work of the searches
+varies a little with how the frames fall)."""
+
+
+def _counting(monkeypatch: pytest.MonkeyPatch) -> Counter[str]:
+    """Count the values each measuring step of the fit evaluates: frames × ends × vertices."""
+    work: Counter[str] = Counter()
+
+    def wrap(module: Any, name: str, cost: Callable[..., int]) -> None:
+        inner = getattr(module, name)
+
+        def counted(*args: Any, **kwargs: Any) -> Any:
+            work[name] += cost(*args, **kwargs)
+            return inner(*args, **kwargs)
+
+        monkeypatch.setattr(module, name, counted)
+
+    wrap(keyframes, "_room", lambda values, a, start, ends, eases, limit, between=None:
+         len(ends) * (int(max(ends)) - a if between is None else len(between)) * values.shape[1])
+    wrap(keyframes, "_within", lambda values, a, b, *_: (b - a) * values.shape[1])
+    wrap(keyframes, "_farthest", lambda values, a, *_: (len(values) - a) * values.shape[1])
+    wrap(curves, "curve_error", lambda controls, u, polyline: polyline.shape[0] * polyline.shape[1])
+    return work
+
+
+def _turning(frames: int) -> np.ndarray:
+    """Twelve points of a ring of radius 100 px turning a quarter turn, eased in and out, while it swells and
+    shrinks back: ``(F, 12, 2)``."""
+    t = np.linspace(0.0, 1.0, frames)[:, None]
+    angle = np.linspace(0, 2 * np.pi, 12, endpoint=False)[None] + np.pi / 2 * (3 * t ** 2 - 2 * t ** 3)
+    radius = 100 + 20 * np.sin(np.pi * t)
+    return np.stack([radius * np.cos(angle), radius * np.sin(angle)], axis=-1)
+
+
+def test_keyframe_fit_work_is_linear_in_frames(monkeypatch: pytest.MonkeyPatch) -> None:
+    work = _counting(monkeypatch)
+    counts = []
+    for frames in (241, 961):
+        work.clear()
+        fitted = keyframes.fit_keyframes(_turning(frames), 0.2)
+        assert keyframes.max_deviation(_turning(frames), fitted) <= 0.2
+        counts.append(sum(work.values()))
+    assert counts[1] <= LINEAR * counts[0], f"work {counts[0]} for 241 frames, {counts[1]} for 961"
+
+
+SCENE = """size = [320, 320]
+fps = 60
+view = [0, 0, 10, 10]
+method = "{method}"
+[[shape]]
+name = "blob"
+fill = "#336699"
+[[shape.key]]
+time = 0
+points = [[2, 2], [5, 1.5], [8, 2], [8.5, 5], [8, 8], [5, 8.5], [2, 8], [1.5, 5]]
+[[shape.key]]
+time = {seconds}
+points = [[5, 1], [7, 3], [9, 5], [7, 7], [5, 9], [3, 7], [1, 5], [3, 3]]
+"""
+
+
+@pytest.mark.parametrize("method", ["nonlinear", "rigid"])
+def test_export_work_is_linear_in_frames(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, method: str) -> None:
+    work = _counting(monkeypatch)
+    counts = []
+    for seconds in (2, 8):  # 121 and 481 frames of the same motion
+        scene = tr.load_scene(write_scene(tmp_path, SCENE.format(seconds=seconds, method=method), f"{seconds}.toml"))
+        work.clear()
+        tr.write(scene, tmp_path / f"{seconds}.json")
+        counts.append(sum(work.values()))
+    assert counts[1] <= LINEAR * counts[0], f"work {counts[0]} for 121 frames, {counts[1]} for 481"

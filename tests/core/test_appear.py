@@ -300,3 +300,21 @@ def test_a_piece_that_would_pass_through_an_outline_to_reach_its_partner_goes_an
     sizes = sorted(float(np.ptp(c, axis=0).max()) for c in middle.contours)
     # the inner square at half its side's share (√0.5 · 2) and the new one likewise, not one square moving
     assert sum(abs(s - np.sqrt(0.5) * 2.0) < 1e-9 for s in sizes) == 2
+
+
+def test_a_stroke_whose_ends_meet_morphs_into_a_closed_outline(tmp_path: Path) -> None:
+    """Tabler's heart is one open path whose end stops 0.006 short of its start (round caps and joins:
+    it is drawn as a closed heart); Feather's heart is closed. They are one heart to the eye, so the one
+    becomes the other: at every in-between one contour is drawn, its area between the keys' areas (no
+    heart shrinking away while another grows inside it)."""
+    from tests.helpers import DATA
+
+    icons = DATA / "icons"
+    scene = tr.load_scene([icons / "tabler" / "heart.svg", icons / "feather" / "heart.svg"], step=1.0)
+    (first,), (last,) = drawn(scene, 0.0), drawn(scene, 1.0)
+    areas = [area(c) for c in (*first.contours, *last.contours) if len(c) >= 3]
+    for t in (0.1, 0.25, 0.5, 0.75, 0.9):
+        (at,) = drawn(scene, t)
+        shown = [c for c in at.contours if np.ptp(c, axis=0).max() > 0]
+        assert len(shown) == 1, t
+        assert 0.9 * min(areas) <= area(shown[0]) <= 1.1 * max(areas), t

@@ -3,7 +3,9 @@
 Elements of consecutive drawings are matched by id where both drawings have it,
 else by a minimum-cost assignment on position (relative to the view), size and
 colour. A chain of matched elements becomes one :class:`~tweenrender.model.Shape`.
-An element with no partner in the next (previous) drawing shrinks to (grows from)
+An element drawn with a stroke alone matched with one drawn with a fill alone is outlined
+(:mod:`.stroke_outline`): its stroke's band becomes the filled shape. An element with no partner
+in the next (previous) drawing shrinks to (grows from)
 its own centre of area over that segment, its area linear in time (maths §5.17) —
 or fades, with ``unmatched = "fade"``: its shape gets a *hidden* key there.
 
@@ -26,6 +28,7 @@ from ..core.timing.easing import Easing
 from ..errors import SceneError
 from ..model import Contour, Hint, Key, Shape, frozen_points
 from .controls import check_hints, check_stagger, pinned
+from .stroke_outline import fill_only, outlined, stroke_only
 from .svg import Drawing, Element, read_drawing
 
 __all__ = ["DrawingKey", "read_drawings", "drawing_shapes", "with_breakdowns"]
@@ -355,6 +358,9 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
            arcs: Sequence[dict[str, tuple[float, float]]] = ()) -> Shape:
     first_k, last_k = chain[0][0], chain[-1][0]
     elements = [drawings[k].elements[e] for k, e in chain]
+    if any(fill_only(e.paint) for e in elements) and any(stroke_only(e.paint) for e in elements):
+        # a stroke becoming a fill: its band of ink is what becomes the filled shape
+        elements = [outlined(e) if stroke_only(e.paint) else e for e in elements]
     out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint, fill_rule=e.fill_rule, cap=e.cap, join=e.join,
                miter_limit=e.miter_limit, layer=index, clips=e.clips, masks=e.masks, easing=keys[k].easing,
                hints=hints[k].get(index, ()), delay=delays.get(k, 0.0), turn=keys[k].turn, turns=keys[k].turns,

@@ -575,7 +575,7 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
         end = next(e for e in range(k + 1, len(keys)) if keys[e].breakdown is None or e == len(keys) - 1)
         first, last = keys[k], keys[end]
         links = tuple(segment_links(first.hints, last.hints))
-        pairs = _pairs(first, last, shape.fill_rule, matching, rule, balance, links)
+        pairs = _pairs(first, last, shape.fill_rule, matching, rule, balance, links, (shape.cap, shape.join))
         anchors = _anchors(pairs, links)
         balanced_joints: tuple[tuple[int, int], ...] = ()
         if joints and len(pairs) == 1:
@@ -688,7 +688,10 @@ def make_breakdowns(shape: Shape, matching: Matching, method: str, *, unmatched:
 
 
 def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str,
-           balance: str = "copies", links: tuple[Link, ...] = ()) -> tuple[Pair, ...]:
+           balance: str = "copies", links: tuple[Link, ...] = (), caps: tuple[str, str] = ("round", "round")
+           ) -> tuple[Pair, ...]:
+    """The contour pairs of the segment from ``before`` to ``after`` (``caps``: the shape's cap and join,
+    where its keys do not set their own)."""
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
         # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order;
@@ -700,6 +703,14 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
     forced = forced_contour_pairs(links)
     partners = pair_contours([c.points for c in a], [c.closed for c in a], [c.points for c in b],
                              [c.closed for c in b], forced=forced)
+    shut_a, shut_b = _shut_strokes(before, caps), _shut_strokes(after, caps)
+    changed = any(x is not y for x, y in zip(shut_a + shut_b, a + b))
+    if changed and any(i is None or j is None for i, j in partners):
+        # a stroke whose ends meet is a closed outline to the eye: paired as one, if that leaves fewer alone
+        closing = pair_contours([c.points for c in shut_a], [c.closed for c in shut_a], [c.points for c in shut_b],
+                                [c.closed for c in shut_b], forced=forced)
+        if len(closing) < len(partners):
+            partners, a, b = closing, shut_a, shut_b
     partners = keep_nesting(partners, [c.points for c in a], [c.closed for c in a], [c.points for c in b],
                             [c.closed for c in b], forced)
     pairs = []
@@ -719,6 +730,28 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
         k0, k1 = (alone.points, collapsed) if i is not None else (collapsed, alone.points)
         pairs.append(Pair(_frozen(k0), _frozen(k1), alone.closed, (n, n), None, (i, j)))
     return tuple(pairs)
+
+
+SHUT_GAP = 1e-3
+"""An open contour whose ends are closer than this share of its box's diagonal ..."""
+
+
+def _shut_strokes(key: Key, caps: tuple[str, str]) -> tuple[Contour, ...]:
+    """``key``'s contours with each open one whose ends meet (within :data:`SHUT_GAP`) closed — where
+    that draws the same: round caps and joins, or no stroke (a fill closes it anyway)."""
+    paint = key.paint
+    stroked = paint.stroke is not None and paint.stroke[3] > 0 and paint.stroke_width > 0
+    if stroked and ((key.cap or caps[0]) != "round" or (key.join or caps[1]) != "round"):
+        return key.contours
+    out = []
+    for contour in key.contours:
+        points = contour.points
+        if not contour.closed and len(points) >= 4:
+            gap = float(np.hypot(*(points[-1] - points[0])))
+            if gap <= SHUT_GAP * float(np.hypot(*np.ptp(points, axis=0))):
+                contour = Contour(points[:-1] if gap == 0.0 else points, True)
+        out.append(contour)
+    return tuple(out)
 
 
 def _paints(before: Key, after: Key, unmatched: str) -> tuple[Paint, Paint]:

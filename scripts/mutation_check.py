@@ -137,7 +137,7 @@ MUTANTS = [
     Mutant("steps: jump-start does not jump at the start", "tweenrender/core/timing/easing.py",
            'if self.jump in ("jump-start", "jump-both"):', 'if self.jump in ("jump-both",):', CONTROLS),
     Mutant("spacing: no Fritsch–Carlson limit", "tweenrender/core/timing/spacing.py",
-           "if radius > 9.0:", "if radius > 900.0:", CONTROLS),
+           "if length > 3.0 * delta[k]:", "if length > 300.0 * delta[k]:", CONTROLS),
     Mutant("hints: pieces solved with sg stretch of the wrong step", "tweenrender/core/correspondence/_hint_kernel.py",
            "energy[r, c, step] = best + stretch[ni, nj, step]", "energy[r, c, step] = best + stretch[ni, nj, 1]",
            CONTROLS),
@@ -430,6 +430,18 @@ MUTANTS = [
            'lines.append(f"hold = {_number(hold)}")', "pass", ("tests/cli/test_init.py",)),
     Mutant("init: replaces an existing scene", "tweenrender/encode/atomic.py",
            "        os.link(temporary, target)", "        os.replace(temporary, target)", ("tests/cli/test_init.py",)),
+    # -- limits and temporaries ---------------------------------------------------------------------
+    Mutant("scratch: a folder whose owner runs swept", "tweenrender/encode/scratch.py",
+           "if not runs or (own and int(pid) == os.getpid()):", "if True:", ("tests/encode/test_scratch.py",)),
+    Mutant("scratch: an owner's start time not compared", "tweenrender/encode/scratch.py",
+           "(started == 0 or now == 0 or now == started)", "True", ("tests/encode/test_scratch.py",)),
+    Mutant("pairing: a pair that saves nothing kept", "tweenrender/scenefile/drawings.py",
+           "for r, c in zip(rows, cols) if saving[r, c] < 0.0]", "for r, c in zip(rows, cols)]",
+           ("tests/scenefile/test_element_pairing.py",)),
+    Mutant("spread: subnormal edges measured by their squares", "tweenrender/core/balance.py",
+           "first, second = float(np.hypot(*(corner - before))), float(np.hypot(*(after - corner)))",
+           "first, second = float(np.linalg.norm(corner - before)), float(np.linalg.norm(after - corner))",
+           ("tests/core/test_balance.py",)),
 ]
 
 

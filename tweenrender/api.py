@@ -38,7 +38,7 @@ __all__ = [
     "stats_text", "correspondence_text", "qcurves_text", "frame_count", "png_bytes",
     "method_names", "format_names", "format_loop", "output_kinds", "listing", "output_format", "default_suffix",
     "check_preview_settings", "edit_scene_text", "save_scene_text", "editing_state", "drawings_scene_text",
-    "start_encoder_search", "encoder_search_done",
+    "start_encoder_search", "encoder_search_done", "sweep_temporaries",
     "RenderOptions", "MatchSettings", "Scene", "Shape", "Key", "Matching", "DrawnContour",
     "COSTS", "ALIGNS", "EQUAL_COUNTS", "BALANCES", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS",
     "__version__",
@@ -281,6 +281,14 @@ def encoder_search_done() -> None:
     from .encode.sinks import ffmpeg_search_done
 
     ffmpeg_search_done()
+
+
+def sweep_temporaries() -> None:
+    """Remove what runs that were killed left in ``$TMPDIR/tweenrender-<uid>/`` (parts, scratch folders):
+    the folders of processes that no longer run, never one whose process still runs."""
+    from .encode.scratch import sweep_scratch
+
+    sweep_scratch()
 
 
 def check_preview_settings(method: str | None, size: tuple[int, int] | None,

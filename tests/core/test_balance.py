@@ -59,3 +59,48 @@ def test_spread_balance_in_a_scene_keeps_the_keys_outlines() -> None:
     assert float(perimeter(spread_.k1)) == pytest.approx(float(perimeter(copies.k1)))
     assert float(signed_area(spread_.k1)) == pytest.approx(float(signed_area(copies.k1)))
     assert not spread_.k1.flags.writeable  # the model's arrays stay read-only
+
+
+def test_copies_on_subnormal_edges_are_spread_as_on_unit_edges() -> None:
+    # spreading is by arc-length proportions, so it commutes with scaling; a power of two scales exactly,
+    # and at 2**-1000 an edge's squared length underflows to zero (the place a naive norm divides by 0)
+    a = np.array([[0, 0], [4, 0], [4, 0], [4, 0], [4, 4], [0, 4]], dtype=np.float64)
+    b = np.array([[0, 0], [2, 0], [3, 0], [6, 0], [6, 6], [0, 6]], dtype=np.float64)
+    tiny = 2.0 ** -1000
+    with np.errstate(divide="raise", invalid="raise", over="raise"):
+        spread_a, spread_b = spread(a * tiny, b * tiny)
+    unit_a, unit_b = spread(a, b)
+    assert np.allclose(spread_a / tiny, unit_a, rtol=1e-12, atol=0)
+    assert np.allclose(spread_b / tiny, unit_b, rtol=1e-12, atol=0)
+
+
+NEAR_COINCIDENT = """size = [160, 120]
+fps = 4
+[[shape]]
+name = "s"
+stroke = "#000000"
+[[shape.key]]
+time = 0
+points = [[0, 0], [1e-300, 0], [0, 1e-300]]
+[[shape.key]]
+time = 1
+points = [[0, 0], [1e-300, 0], [1e-300, 1e-300], [0, 1e-300], [5e-301, 5e-301]]
+"""
+
+
+@pytest.mark.parametrize("method", ["auto", "arap", "injective"])
+def test_a_key_of_subnormal_size_draws_finite_outlines(tmp_path, method: str) -> None:
+    import warnings
+
+    from tweenrender import api
+
+    scene_path = tmp_path / "tiny.toml"
+    scene_path.write_text(NEAR_COINCIDENT)
+    scene = api.load_scene(scene_path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for time in np.linspace(0.0, 1.0, 9):
+            drawn = api.outlines(scene, float(time), method=method)
+            assert drawn and all(np.isfinite(c).all() for c in drawn)
+            # every vertex stays within the keys' box, [0, 1e-300]²
+            assert all((np.abs(c) <= 1e-300).all() for c in drawn)

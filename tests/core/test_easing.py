@@ -162,6 +162,22 @@ def test_fritsch_carlson_tangents_by_hand() -> None:
     assert d[2] == pytest.approx(1.8, rel=1e-12)
 
 
+def test_a_subnormal_tick_is_drawn_as_a_flat_start() -> None:
+    # a first secant of 2e-320 makes beta = d1 / delta0 overflow; the chart is then, within rounding,
+    # that of [0, 0, 1]: flat to the middle, then tangents 0 and 2 on the second half, -h³ + 2h²
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        chart = spacing_chart([0, 1e-320, 1])
+        h = np.linspace(0, 1, 101)
+        second_half = chart(0.5 + 0.5 * h)
+        first_half = chart(0.5 * h)
+    assert np.all(np.isfinite(chart.tangents))
+    assert second_half == pytest.approx(-h ** 3 + 2 * h ** 2, abs=1e-12)
+    assert np.all(np.abs(first_half) <= 1e-300)
+
+
 @pytest.mark.parametrize("ticks, expected", [([0.1, 1], "0 first"), ([0, 0.5, 0.4, 1], "non-decreasing"),
                                              ([0], "at least two")])
 def test_bad_spacing(ticks, expected) -> None:

@@ -67,3 +67,18 @@ def test_rigid_copy_carries_every_vertex_rigidly() -> None:
 def test_polygons_that_cannot_be_triangulated_are_refused(polygon: list) -> None:
     with pytest.raises(MeshError):
         triangulate(np.array(polygon, dtype=np.float64))
+
+
+@pytest.mark.parametrize("exponent", [-200, -400, -520])
+def test_a_tiny_polygon_is_triangulated_as_its_unit_copy(exponent: int) -> None:
+    # triangulating commutes with scaling, and a power of two scales exactly; at these scales an
+    # area squared times a squared length underflows to zero (the refinement's quality test divides by it)
+    rng = np.random.default_rng(5)
+    polygon = random_star(rng, 9)
+    scale = 2.0 ** exponent
+    with np.errstate(all="ignore"):  # underflow of a product is no error; its division by zero was
+        tiny_points, tiny_triangles, tiny_places = triangulate(polygon * scale)
+    points, triangles, places = triangulate(polygon)
+    assert np.array_equal(tiny_triangles, triangles)
+    assert np.allclose(tiny_points / scale, points, rtol=1e-9, atol=1e-12)
+    assert np.array_equal(tiny_points[:len(polygon)], polygon * scale)  # the polygon's own vertices exactly

@@ -126,7 +126,11 @@ def _environment(tmp: Path) -> dict[str, str]:
 
 
 def _ours_in(tmp: Path) -> list[str]:
-    return sorted(p.name for p in tmp.iterdir() if p.name.startswith("tweenrender-"))
+    """What the runs left in ``tmp``: the folders in the one place for temporaries (and any other
+    ``tweenrender-`` entry)."""
+    root = tmp / f"tweenrender-{os.getuid()}"
+    others = [p.name for p in tmp.iterdir() if p.name.startswith("tweenrender-") and p != root]
+    return sorted(others + ([p.name for p in root.iterdir()] if root.is_dir() else []))
 
 
 def _start_cluster_render(tmp_path: Path, scene: Path, target: Path) -> subprocess.Popen[str]:
@@ -140,7 +144,7 @@ def _start_cluster_render(tmp_path: Path, scene: Path, target: Path) -> subproce
     while time.monotonic() < deadline:
         # a worker's part folder (not dask's scratch) holding the part's temporary, being written
         try:
-            parts = [p.stat().st_size for folder in tmp.glob("tweenrender-part-*") if "-dask-" not in folder.name
+            parts = [p.stat().st_size for folder in tmp.glob(f"tweenrender-{os.getuid()}/*-part-*")
                      for p in folder.iterdir()]
         except FileNotFoundError:  # a folder or file gone between the listing and the look
             parts = []
@@ -193,13 +197,13 @@ def test_a_killed_cluster_render_leaves_what_the_next_run_removes(tmp_path: Path
     _kill_leftovers(process, kids)
     left = _ours_in(tmp_path / "tmp")
     assert left, "a killed render cannot clean up (else this test shows nothing)"
-    assert all(name.startswith(f"tweenrender-part-{process.pid}-") for name in left), left
-    beside = [p.name for p in tmp_path.iterdir() if p.name not in ("scene.toml", "tmp")]
-    assert all(name.startswith(".movie.mp4.") for name in beside) and len(beside) <= 1, beside
+    # every temporary folder is in the one place, named by the run (its pid) that owned it; none beside
+    # the target
+    assert all(name.startswith(f"{process.pid}-") for name in left), left
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml", "tmp"]
+    # the next run of any command removes them
     short = write_scene(tmp_path, SMALL, "short.toml")
-    done = subprocess.run([sys.executable, "-m", "tweenrender", "render", str(short), "-o", str(target), "-q",
-                           "--cluster", "local:1"], capture_output=True, text=True, env=_environment(tmp_path / "tmp"),
-                          timeout=150)
+    done = subprocess.run([sys.executable, "-m", "tweenrender", "check", str(short)], capture_output=True, text=True,
+                          env=_environment(tmp_path / "tmp"), timeout=150)
     assert done.returncode == 0 and done.stderr == "", done.stderr
     assert _ours_in(tmp_path / "tmp") == []
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["movie.mp4", "scene.toml", "short.toml", "tmp"]

@@ -82,12 +82,20 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _interrupted()
     try:
         with _terminate_cleanly():
+            _sweep_temporaries()
             return args.run(args)
     except KeyboardInterrupt:
         return _interrupted()
     except BrokenPipeError:
         # the reader of stdout went away (``| head``): nothing left to say, and nowhere to say it
         _silence_stdout()
+        return 1
+    except (MemoryError, OSError, ImportError) as error:  # ImportError: a library that could not be mapped
+        said = _exhausted(error)
+        if said is None:
+            return _unexpected(error, args.verbose)
+        _explain(args.verbose)
+        print(f"tweenrender: error: {said}", file=sys.stderr)
         return 1
     except TweenrenderError as error:
         _explain(args.verbose)
@@ -96,10 +104,45 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"tweenrender: error: {printable(said) or 'no message'}", file=sys.stderr)
         return error.exit_code
     except Exception as error:  # noqa: BLE001 - the last line of defence against tracebacks
-        _explain(args.verbose)
-        print(f"tweenrender: error: unexpected {type(error).__name__}: {printable(_one_line(str(error)))} "
-              "(run with -v for details)", file=sys.stderr)
-        return 1
+        return _unexpected(error, args.verbose)
+
+
+def _sweep_temporaries() -> None:
+    """Every run removes what killed runs left among the temporaries (never a running one's)."""
+    from ..api import sweep_temporaries
+
+    with contextlib.suppress(OSError):
+        sweep_temporaries()
+
+
+def _unexpected(error: BaseException, verbose: bool) -> int:
+    _explain(verbose)
+    print(f"tweenrender: error: unexpected {type(error).__name__}: {printable(_one_line(str(error)))} "
+          "(run with -v for details)", file=sys.stderr)
+    return 1
+
+
+def _exhausted(error: BaseException) -> str | None:
+    """What to say when the process ran out of memory or file descriptors (None: it did not), naming the
+    limit it met when one is set."""
+    import errno
+    import resource
+
+    chain: list[BaseException] = []
+    while error is not None and len(chain) < 10:  # a library that could not be mapped is wrapped in another
+        chain.append(error)
+        error = error.__cause__ or error.__context__  # type: ignore[assignment]
+    if any(isinstance(e, MemoryError) or getattr(e, "errno", None) == errno.ENOMEM
+           or "failed to map segment" in str(e) for e in chain):  # (dlopen's words for ENOMEM)
+        limit = resource.getrlimit(resource.RLIMIT_AS)[0]
+        room = f": the process may use at most {limit / (1 << 20):.0f} MiB (ulimit -v)" \
+            if limit != resource.RLIM_INFINITY else ""
+        return f"out of memory{room}"
+    if any(getattr(e, "errno", None) in (errno.EMFILE, errno.ENFILE) for e in chain):
+        limit = resource.getrlimit(resource.RLIMIT_NOFILE)[0]
+        room = f": at most {limit} open files at once (ulimit -n)" if limit != resource.RLIM_INFINITY else ""
+        return f"out of file descriptors{room}"
+    return None
 
 
 @contextlib.contextmanager

@@ -21,7 +21,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--count", type=int, default=SHEET_COUNT, metavar="N",
                    help=f"inbetweens per row, evenly spaced in time over the clip (default {SHEET_COUNT})")
     p.add_argument("--size", type=size, metavar="WxH",
-                   help="size of the whole sheet (default 1280 wide, rows as tall as the view asks)")
+                   help="size of the whole sheet (default 1280 wide, rows as tall as the view asks; at most "
+                        "4096x4096 pixels in area)")
     p.add_argument("--paths", action="store_true", help="draw every vertex's path behind the outlines")
     add_matching_flags(p)
     add_balance_flag(p)

@@ -71,12 +71,13 @@ def _spread_one(key: Array, other: Array, fixed: Sequence[int] = ()) -> Array:
         before = 0.5 * (key[index[0]] + corner)
         after = 0.5 * (corner + key[index[-1]])
         # where the run's copies go: the half-edge before the vertex, then the half-edge after it
-        first, second = float(np.linalg.norm(corner - before)), float(np.linalg.norm(after - corner))
+        # lengths by hypot: a norm's squares underflow to zero on edges under about 1e-154
+        first, second = float(np.hypot(*(corner - before))), float(np.hypot(*(after - corner)))
         # the other key's stretch: half its edge in, its run of vertices, half its edge out
         stretch = other[index].copy()
         stretch[0] = 0.5 * (other[index[0]] + other[index[1]])
         stretch[-1] = 0.5 * (other[index[-2]] + other[index[-1]])
-        steps = np.linalg.norm(np.diff(stretch, axis=0), axis=1)
+        steps = np.hypot(*np.diff(stretch, axis=0).T)
         total = float(steps.sum())
         if total > 0:
             share = np.cumsum(steps)[:-1] / total  # (length,) proportions of the run's vertices
@@ -97,6 +98,8 @@ def _spread_one(key: Array, other: Array, fixed: Sequence[int] = ()) -> Array:
                 out[slot] = corner
             elif at < first:
                 out[slot] = before + (corner - before) * (at / first)
-            else:
+            elif second > 0:
                 out[slot] = corner + (after - corner) * ((at - first) / second)
+            else:  # both half-edges of zero length (a key drawn at one point): the copy stays too
+                out[slot] = corner
     return out

@@ -14,9 +14,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..model import Color, Gradient, Paint
-from .paint import blend_colors
+from .paint import blend_color_rows
 
-__all__ = ["Box", "box_of", "blend_gradient", "color_at"]
+__all__ = ["Box", "box_of", "blend_gradient", "color_at", "colors_at"]
 
 Box = tuple[float, float, float, float]
 """``(xmin, ymin, xmax, ymax)`` in world units."""
@@ -44,11 +44,18 @@ def _matrix(gradient: Gradient) -> NDArray[np.float64]:
     return np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]])
 
 
+def colors_at(gradient: Gradient, offsets: NDArray[np.float64]) -> NDArray[np.int64]:
+    """The gradient's colours at ``offsets (S,)`` in [0, 1]: ``(S, 4)`` straight RGBA, interpolated as SVG
+    does, in sRGB, rounded."""
+    stops = np.array([o for o, _ in gradient.stops])
+    colours = np.array([c for _, c in gradient.stops], dtype=float)
+    at = np.asarray(offsets, dtype=np.float64)
+    return np.rint(np.column_stack([np.interp(at, stops, colours[:, k]) for k in range(4)])).astype(np.int64)
+
+
 def color_at(gradient: Gradient, offset: float) -> Color:
     """The gradient's colour at ``offset`` in [0, 1] (straight RGBA, interpolated as SVG does, in sRGB)."""
-    offsets = np.array([o for o, _ in gradient.stops])
-    colours = np.array([c for _, c in gradient.stops], dtype=float)
-    return tuple(int(round(np.interp(offset, offsets, colours[:, k]))) for k in range(4))  # type: ignore[return-value]
+    return tuple(int(v) for v in colors_at(gradient, np.array([offset]))[0])  # type: ignore[return-value]
 
 
 def _as_gradient(paint: Paint, like: Gradient) -> Gradient | None:
@@ -84,7 +91,8 @@ def blend_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: floa
         relative, geometry = relative_near, near.geometry
     placed = frames[2] @ relative
     offsets = sorted({o for o, _ in g0.stops} | {o for o, _ in g1.stops})
-    stops = tuple((o, blend_colors(color_at(g0, o), color_at(g1, o), np.array([t]))[0]) for o in offsets)
+    at = np.array(offsets)
+    stops = tuple(zip(offsets, blend_color_rows(colors_at(g0, at), colors_at(g1, at), t)))
     return Gradient(near.kind, geometry,
                     (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
                      float(placed[0, 2]), float(placed[1, 2])), stops, near.spread)  # type: ignore[arg-type]

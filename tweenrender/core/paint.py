@@ -13,7 +13,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..model import Color, Paint
 
-__all__ = ["srgb_to_oklab", "oklab_to_srgb", "blend_colors", "blend_paints"]
+__all__ = ["srgb_to_oklab", "oklab_to_srgb", "blend_colors", "blend_color_rows", "blend_paints"]
 
 Array = NDArray[np.float64]
 
@@ -75,6 +75,24 @@ def blend_colors(c0: Color | None, c1: Color | None, t: ArrayLike) -> list[Color
     alphas = np.rint(alpha * 255.0).astype(int)
     out: list[Color | None] = [(int(r), int(g), int(b_), int(al)) for (r, g, b_), al in zip(rgb, alphas)]
     return [c0 if x == 0.0 else c1 if x == 1.0 else o for x, o in zip(t.tolist(), out)]  # the keys, exactly
+
+
+def blend_color_rows(c0: NDArray[np.int64], c1: NDArray[np.int64], t: float) -> list[Color]:
+    """Each pair of straight RGBA rows ``c0[i] → c1[i]`` (``(S, 4)``, 0 to 255) at one ``t``, as
+    :func:`blend_colors` blends one pair: ``(S,)`` colours, in one pass over the rows."""
+    c0, c1 = np.asarray(c0, dtype=np.int64), np.asarray(c1, dtype=np.int64)
+    if t == 0.0 or t == 1.0:
+        return [tuple(int(v) for v in row) for row in (c0 if t == 0.0 else c1)]  # type: ignore[misc]
+    rgba0, rgba1 = c0 / 255.0, c1 / 255.0
+    lab0, lab1 = srgb_to_oklab(rgba0[:, :3]), srgb_to_oklab(rgba1[:, :3])
+    alpha = (1.0 - t) * rgba0[:, 3] + t * rgba1[:, 3]  # (S,)
+    premultiplied = (1.0 - t) * lab0 * rgba0[:, 3:] + t * lab1 * rgba1[:, 3:]
+    plain = (1.0 - t) * lab0 + t * lab1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        straight = np.where(alpha[:, None] > 0, premultiplied / alpha[:, None], plain)
+    rows = np.column_stack([np.rint(oklab_to_srgb(straight) * 255.0), np.rint(alpha * 255.0)]).astype(np.int64)
+    rows = np.where(np.all(c0 == c1, axis=1)[:, None], c0, rows)  # equal colours stay exactly
+    return [tuple(int(v) for v in row) for row in rows]  # type: ignore[misc]
 
 
 def blend_paints(p0: Paint, p1: Paint, t: ArrayLike) -> list[Paint]:

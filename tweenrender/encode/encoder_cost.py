@@ -11,7 +11,6 @@ from __future__ import annotations
 import os
 import resource
 import subprocess
-import tempfile
 from typing import Sequence
 
 import numpy as np
@@ -29,7 +28,9 @@ def encoder_seconds(fmt: str, pictures: Sequence[NDArray[np.uint8]], fps: float,
 
     height, width = pictures[0].shape[:2]
     planes = Yuv420(width, height, "rgba") if sends_yuv420(fmt, width, height, alpha) else None
-    with tempfile.TemporaryDirectory(prefix="tweenrender-probe-") as folder:
+    from .scratch import scratch_folder
+
+    with scratch_folder("probe") as folder:
         output = os.path.join(folder, f"probe.{fmt}")
         command = ffmpeg_command(fmt, width, height, fps, "pipe:0", output,
                                  "rgba" if planes is None else "yuv420p", alpha)

@@ -92,8 +92,36 @@ def ffmpeg_exe() -> str:
         if not _FOUND:
             import imageio_ffmpeg
 
-            _FOUND.append(imageio_ffmpeg.get_ffmpeg_exe())
+            try:
+                _FOUND.append(imageio_ffmpeg.get_ffmpeg_exe())
+            except RuntimeError:
+                _why_ffmpeg_cannot_start()
+                raise
         return _FOUND[0]
+
+
+def _why_ffmpeg_cannot_start() -> None:
+    """imageio-ffmpeg calls any ffmpeg it could not run "not found"; one it could not start for want of
+    file descriptors or memory raises that ``OSError`` (or :class:`MemoryError`) here instead."""
+    import errno
+
+    try:  # where imageio-ffmpeg keeps the one it bundles (its own, unpublished names)
+        from imageio_ffmpeg._definitions import FNAME_PER_PLATFORM, get_platform
+        from imageio_ffmpeg._utils import _get_bin_dir
+
+        bundled = Path(_get_bin_dir()) / FNAME_PER_PLATFORM.get(get_platform(), "ffmpeg")
+    except (ImportError, AttributeError):
+        return
+    try:
+        subprocess.run([str(bundled), "-version"], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL, timeout=30, check=False)
+    except OSError as error:
+        if error.errno in (errno.ENOMEM, errno.EAGAIN):
+            raise MemoryError("ffmpeg could not start: out of memory") from error
+        if error.errno in (errno.EMFILE, errno.ENFILE):
+            raise
+    except subprocess.SubprocessError:
+        pass
 
 
 def find_ffmpeg_early() -> None:

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import contextlib
 import os
-import tempfile
 from concurrent.futures import Executor, Future
 from dataclasses import replace
 from pathlib import Path
@@ -36,30 +35,22 @@ def part_format(fmt: str) -> str:
     return LOSSLESS.name if lookup(fmt).join == "lossless" else fmt
 
 
-_PART_PREFIX = "tweenrender-part-"
-"""Folders of parts being rendered, in the temporary folder: ``tweenrender-part-<render's pid>-<random>``."""
-
-
 def sweep_parts(own: bool = False) -> None:
-    """Remove the part folders of renders that no longer run (killed with their workers before these
+    """Remove the temporary folders of runs that no longer run (killed with their workers before these
     could clean up); with ``own``, this process's too (once its workers are stopped)."""
-    import shutil
+    from ..encode.scratch import sweep_scratch
 
-    from ..encode.atomic import alive
-
-    for folder in Path(tempfile.gettempdir()).glob(f"{_PART_PREFIX}*-*"):
-        owner = folder.name[len(_PART_PREFIX):].split("-", 1)[0]
-        if owner.isdigit() and ((own and int(owner) == os.getpid()) or not alive(int(owner))):
-            shutil.rmtree(folder, ignore_errors=True)
+    sweep_scratch(own)
 
 
 @contextlib.contextmanager
 def run_folder(what: str) -> Iterator[Path]:
-    """A folder in the temporary folder for this run's ``what`` (``tweenrender-part-<pid>-<what>-…``),
-    removed afterwards; a run killed before that leaves it to the next run's :func:`sweep_parts`."""
-    with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getpid()}-{what}-", ignore_cleanup_errors=True) \
-            as folder:
-        yield Path(folder)
+    """A temporary folder for this run's ``what`` (see :mod:`..encode.scratch`), removed afterwards; a run
+    killed before that leaves it to the next run's sweep."""
+    from ..encode.scratch import scratch_folder
+
+    with scratch_folder(what) as folder:
+        yield folder
 
 
 def render_part(job: RenderJob, fmt: str) -> Any:
@@ -78,9 +69,12 @@ def render_part(job: RenderJob, fmt: str) -> Any:
             if TABLE[fmt].folder:
                 frames = Frames(job)
                 return [png_bytes(draw_frame(frames, index)) for index in job.frame_range]
+            from ..encode.scratch import scratch_folder
+
             sweep_parts()  # on a worker machine, those of renders killed there before
-            with tempfile.TemporaryDirectory(prefix=f"{_PART_PREFIX}{os.getppid()}-") as folder:
-                path = Path(folder) / f"part.{fmt}"
+            # owned by the process that started this worker: when it ends, the folder is anyone's to remove
+            with scratch_folder("part", owner=os.getppid()) as folder:
+                path = folder / f"part.{fmt}"
                 render(job, fmt, path)
                 return path.read_bytes()
     except Stopped as stop:  # the part, its folder and its encoder are gone by now: end the worker
@@ -92,9 +86,9 @@ def render_chunks(job: RenderJob, fmt: str, target: Path, executor: Executor, ch
     """Render ``job`` as ``chunks`` parts on ``executor`` and join them into ``target`` as ``fmt``.
 
     Parts are submitted at once and joined in order; ``progress`` hears of
-    each part's frames as it arrives. Video parts are written beside
-    ``target`` as hidden temporaries and removed after the join; ``target``
-    changes only if every part and the join succeeded.
+    each part's frames as it arrives. Video parts are written to a folder among
+    the run's temporaries (:mod:`..encode.scratch`) and removed after the join;
+    ``target`` changes only if every part and the join succeeded.
     """
     target = Path(target)
     kind = part_format(fmt)
@@ -137,6 +131,7 @@ def render_in_processes(job: RenderJob, fmt: str, target: Path, workers: int,
             # rather than wait for their chunks to finish
             _stop_workers(pool)
             pool.shutdown(wait=True, cancel_futures=True)
+            sweep_parts(own=True)  # the workers are stopped: what a stopped one left is removable
             raise
 
 
@@ -165,18 +160,13 @@ def _join_frames(job: RenderJob, fmt: str, target: Path, futures: list[Future[An
 
 def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: list[Future[Any]],
                  sizes: list[int], progress: Progress | None) -> Path:
-    from ..encode.atomic import discard, os_reason, prepare_folder, sibling
+    from ..encode.atomic import os_reason, prepare_folder
     from ..encode.concat import concat
 
     prepare_folder(target)
     total = len(job.frame_range)
     parts: list[Path] = []
-    folder = sibling(target, ".parts")  # one folder per run: a killed run leaves one entry, swept as one
-    try:
-        folder.mkdir()
-    except OSError as error:
-        raise EncodeError(f"{target}: cannot create a folder for the parts beside it ({os_reason(error)})") from None
-    try:
+    with run_folder("parts") as folder:  # with every temporary folder: a killed run's is swept by the next
         done = 0
         for future, size in zip(futures, sizes):
             part = folder / f"{len(parts):04d}.{kind}"
@@ -185,12 +175,10 @@ def _join_videos(job: RenderJob, fmt: str, kind: str, target: Path, futures: lis
             try:
                 part.write_bytes(data)
             except OSError as error:
-                raise EncodeError(f"{target}: cannot write part {len(parts)} beside it ({os_reason(error)})") \
-                    from None
+                raise EncodeError(f"{target}: cannot write part {len(parts)} in {folder.parent} "
+                                  f"({os_reason(error)})") from None
             done += size
             if progress is not None:
                 progress(done, total)
         return concat(parts, target, expected=total, fmt=fmt, rate=job.rate,
                       alpha=job.scene.background[3] < 255)
-    finally:
-        discard(folder)

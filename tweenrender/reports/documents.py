@@ -12,8 +12,8 @@ from ..errors import OptionError
 from ..model import Scene
 from .analyses import picture_target
 from ..pipeline.library import not_an_input, output_format
-from ..plan.options import (DEFAULT_MAX_FRAMES, MAX_ONION, REEL_FPS, REEL_SIZE, SHEET_COUNT, MatchSettings, Progress,
-                            check_fps, check_methods, check_size, own_method_first)
+from ..plan.options import (DEFAULT_MAX_FRAMES, MAX_ONION, REEL_FPS, REEL_SIZE, SHEET_COUNT, SHEET_PIXELS,
+                            MatchSettings, Progress, check_fps, check_methods, check_size, own_method_first)
 
 __all__ = ["sheet", "report", "reel"]
 
@@ -34,6 +34,9 @@ def sheet(scene: Scene, path: str | os.PathLike[str], *, methods: Sequence[str] 
     if isinstance(count, bool) or not isinstance(count, int) or not 0 <= count <= 200:
         raise OptionError(f"expected a whole number from 0 to 200, found {count!r}", "count")
     checked = None if size is None else check_size(size)
+    if checked is not None and checked[0] * checked[1] > SHEET_PIXELS:
+        raise OptionError(f"expected a sheet of at most {SHEET_PIXELS} pixels (4096x4096, or as many in another "
+                          f"shape), found {checked[0]}x{checked[1]} = {checked[0] * checked[1]}", "size")
     tracks = tracks_of(scene)
     view = scene_view(scene, tracks, rows)
     return write_sheet(scene, tracks, rows, view, target, count, checked, bool(paths))

@@ -16,6 +16,7 @@ world; every later drawing's view box is fitted into it, centred, aspect kept
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable, Sequence
@@ -28,6 +29,7 @@ from ..core.timing.easing import Easing
 from ..errors import SceneError
 from ..model import Contour, Hint, Key, Shape, frozen_points
 from .controls import check_hints, check_stagger, pinned
+from .scene_limits import LIMITS
 from .stroke_outline import fill_only, outlined, stroke_only
 from .svg import Drawing, Element, read_drawing
 
@@ -40,6 +42,7 @@ _SIZE_WEIGHT = 0.5
 _COLOR_WEIGHT = 1.0
 _KIND_COST = 0.5  # a filled element with a stroke-only one
 _UNMATCHED_COST = 0.6  # leaving an element without a partner: beyond this, it goes and another comes
+_ROWS = 256  # rows of the cost matrix computed at once
 _SETTLING = 4  # passes placing the elements that come or go in the paint order
 
 
@@ -84,6 +87,10 @@ def drawing_shapes(drawings: Sequence[Drawing], keys: Sequence[DrawingKey], unma
     builds the error for a bad hint or stagger, ``where`` a path such as ``drawing[1].hints.a``."""
     box = drawings[0].box
     diagonal = float(np.hypot(box[2] - box[0], box[3] - box[1])) or 1.0
+    elements = sum(len(drawing.elements) for drawing in drawings)  # each one key of a shape: refused before
+    if elements > LIMITS["keys"]:                                   # they are paired, not after
+        raise fail("drawing", f"expected at most {LIMITS['keys']} keys in the scene, found {elements} "
+                            f"(one for each element of each drawing)")
     drawings, hints = _pinned_drawings(drawings, keys, fail)
     arcs = [_world(drawing, key.arcs) for drawing, key in zip(drawings, keys)]
     chains: list[list[tuple[int, int]]] = [[(0, e)] for e in range(len(drawings[0].elements))]
@@ -194,33 +201,39 @@ def match_elements(a: Sequence[Element], b: Sequence[Element], diagonal: float,
     (shape hints make them) come first, then ids, then the assignment."""
     pairs: list[tuple[int | None, int | None]] = [(i, j) for i, j in forced]
     taken_a, taken_b = {i for i, _ in forced}, {j for _, j in forced}
-    ids_a = {e.id: i for i, e in enumerate(a) if e.id and sum(x.id == e.id for x in a) == 1 and i not in taken_a}
-    ids_b = {e.id: j for j, e in enumerate(b) if e.id and sum(x.id == e.id for x in b) == 1 and j not in taken_b}
+    ids_a, ids_b = _unique_ids(a, taken_a), _unique_ids(b, taken_b)
     for ident, i in ids_a.items():
         if ident in ids_b:
             pairs.append((i, ids_b[ident]))
-    left = [i for i in range(len(a)) if i not in {p[0] for p in pairs}]
-    right = [j for j in range(len(b)) if j not in {p[1] for p in pairs}]
+    paired_a, paired_b = {p[0] for p in pairs}, {p[1] for p in pairs}
+    left = [i for i in range(len(a)) if i not in paired_a]
+    right = [j for j in range(len(b)) if j not in paired_b]
     if left and right:
         if len(left) == len(right) == 1 and not pairs:
             pairs.append((left[0], right[0]))  # one element each: always the same one
             left, right = [], []
         else:
-            cost = _costs([a[i] for i in left], [b[j] for j in right], diagonal)
-            m, n = cost.shape
-            big = 1e9
-            full = np.full((m + n, n + m), big)
-            full[:m, :n] = cost
-            full[:m, n:] = np.where(np.eye(m, dtype=bool), _UNMATCHED_COST, big)
-            full[m:, :n] = np.where(np.eye(n, dtype=bool), _UNMATCHED_COST, big)
-            full[m:, n:] = 0.0
-            rows, cols = min_cost_assignment(full)
-            paired = [(left[r], right[c]) for r, c in zip(rows, cols) if r < m and c < n]
+            # leaving an element unpaired costs _UNMATCHED_COST, so a pair is worth what it saves,
+            # 2·_UNMATCHED_COST - cost, and one that saves nothing is not made: a rectangular assignment
+            # of the savings finds the least total (an (m + n)² matrix of "unpaired" slots would too,
+            # at four times the memory)
+            saving = _costs([a[i] for i in left], [b[j] for j in right], diagonal)
+            saving -= 2.0 * _UNMATCHED_COST
+            np.minimum(saving, 0.0, out=saving)
+            rows, cols = min_cost_assignment(saving)
+            paired = [(left[r], right[c]) for r, c in zip(rows, cols) if saving[r, c] < 0.0]
             pairs += paired
-            left = [i for i in left if i not in {p[0] for p in paired}]
-            right = [j for j in right if j not in {p[1] for p in paired}]
+            paired_a, paired_b = {p[0] for p in paired}, {p[1] for p in paired}
+            left = [i for i in left if i not in paired_a]
+            right = [j for j in right if j not in paired_b]
     pairs += [(i, None) for i in left] + [(None, j) for j in right]
     return pairs
+
+
+def _unique_ids(elements: Sequence[Element], taken: set[int]) -> dict[str, int]:
+    """Each id written on exactly one of ``elements`` → that element's index (unless ``taken``)."""
+    counts = Counter(e.id for e in elements if e.id)
+    return {e.id: i for i, e in enumerate(elements) if e.id and counts[e.id] == 1 and i not in taken}
 
 
 def _costs(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> np.ndarray:
@@ -238,11 +251,16 @@ def _costs(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> np.nd
 
     ca, sa, la, fa = features(a)
     cb, sb, lb, fb = features(b)
-    cost = (_POSITION_WEIGHT * np.linalg.norm(ca[:, None] - cb[None], axis=-1) / diagonal
-            + _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))
-    colour = np.linalg.norm(la[:, None] - lb[None], axis=-1)
-    cost += _COLOR_WEIGHT * np.nan_to_num(colour, nan=0.0)  # an element without colour matches any
-    cost += _KIND_COST * (fa[:, None] != fb[None])
+    cost = np.empty((len(a), len(b)))
+    for start in range(0, len(a), _ROWS):  # a block of rows at a time: no (m, n, 3) differences in memory
+        rows = slice(start, start + _ROWS)
+        apart = np.hypot(ca[rows, None, 0] - cb[None, :, 0], ca[rows, None, 1] - cb[None, :, 1])
+        block = _POSITION_WEIGHT / diagonal * apart
+        block += _SIZE_WEIGHT * np.abs(sa[rows, None] - sb[None])
+        colour = np.sqrt(sum((la[rows, None, q] - lb[None, :, q]) ** 2 for q in range(3)))
+        block += _COLOR_WEIGHT * np.nan_to_num(colour, nan=0.0)  # an element without colour matches any
+        block += _KIND_COST * (fa[rows, None] != fb[None])
+        cost[rows] = block
     return cost
 
 

@@ -10,7 +10,9 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import stat
+import sys
 import tomllib
 from pathlib import Path
 from typing import Any, Sequence
@@ -134,6 +136,16 @@ class _DuplicateKey(ValueError):
         self.key = key
 
 
+def _in_scene_words(error: ValueError) -> str:
+    """A parser's ValueError as a scene's message: Python's refusal of a very long integer names the
+    limit, not the interpreter setting that lifts it."""
+    found = re.search(r"value has (\d+) digits", str(error))
+    if found:
+        return (f"expected integers of at most {sys.get_int_max_str_digits()} digits, "
+                f"found one of {found.group(1)} digits")
+    return str(error)
+
+
 def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
     """Validate scene ``text`` (``fmt`` ``"toml"`` or ``"json"``; JSON whose top level has ``v``, ``fr``,
     ``ip``, ``op`` and ``layers`` is a Lottie animation, :mod:`.lottie_reader`); ``path`` names it in errors."""
@@ -154,7 +166,7 @@ def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
         except RecursionError:
             raise SceneError(path, None, "not valid JSON: nested too deeply") from None
         except ValueError as error:  # e.g. an integer of more than 4300 digits
-            raise SceneError(path, None, f"not valid JSON: {error}") from None
+            raise SceneError(path, None, f"not valid JSON: {_in_scene_words(error)}") from None
         from .lottie_reader import is_lottie
 
         if is_lottie(data):
@@ -187,5 +199,5 @@ def parse_scene(text: str, path: str | Path, fmt: str = "toml") -> Scene:
         except RecursionError:
             raise SceneError(path, None, "not valid TOML: nested too deeply") from None
         except ValueError as error:  # e.g. an integer of more than 4300 digits
-            raise SceneError(path, None, f"not valid TOML: {error}") from None
+            raise SceneError(path, None, f"not valid TOML: {_in_scene_words(error)}") from None
     return SceneReader(path, text, fmt).scene(data)

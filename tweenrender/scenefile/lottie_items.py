@@ -14,6 +14,7 @@ import numpy as np
 from ..model import Color, Gradient
 from .lottie_geometry import PathItem, Transform
 from .lottie_props import Array, Malformed, Prop, Unreadable
+from .scene_limits import LIMITS
 
 __all__ = ["PaintItem", "Element", "layer_elements", "gradient_at"]
 
@@ -56,6 +57,8 @@ class PaintItem:
             self.count = int(stops.get("p", 0))
             if self.count < 1:
                 raise Malformed(f"expected at least one gradient stop, found p = {stops.get('p')!r}")
+            if self.count > LIMITS["gradient_stops"]:
+                raise Malformed(f"expected at most {LIMITS['gradient_stops']} gradient stops, found p = {self.count}")
             self.stops = Prop(stops["k"], "gradient stops")
             props += [self.start, self.end, self.highlight, self.angle, self.stops]
         self.animated = any(p.animated for p in props)

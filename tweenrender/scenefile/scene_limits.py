@@ -27,6 +27,8 @@ LIMITS = {
     # to the first frame here, 8 000 shapes 1.9 s and 69 MB (100 000 took minutes, or 2 GB)
     "keys": 10_000,        # in the scene, every shape's and drawing's together
     "shapes": 10_000,      # in the scene, drawings' elements included
+    # every in-between blends each stop of both keys' gradients: 100 000 stops took minutes a frame
+    "gradient_stops": 1_000,  # per gradient (SVG <stop>s, a Lottie gradient's p)
 }
 
 

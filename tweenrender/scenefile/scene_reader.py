@@ -419,5 +419,9 @@ def _renamed(shape: Shape, taken: dict[str, int]) -> Shape:
 def fitted_size(box: tuple[float, float, float, float], most: tuple[int, int] = (1280, 720)) -> tuple[int, int]:
     """The largest even size within ``most`` with the aspect of world ``box`` (a drawing's default size)."""
     width, height = box[2] - box[0], box[3] - box[1]
-    scale = min(most[0] / width, most[1] / height)
-    return (max(2, 2 * round(width * scale / 2)), max(2, 2 * round(height * scale / 2)))
+    # by the aspect, never by most / width, which overflows for a subnormal box
+    if width * most[1] >= height * most[0]:
+        fit_width, fit_height = most[0], most[0] * (height / width)
+    else:
+        fit_width, fit_height = most[1] * (width / height), most[1]
+    return (max(2, 2 * round(fit_width / 2)), max(2, 2 * round(fit_height / 2)))

@@ -248,9 +248,14 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
             box = _extent(drawn)
         x, y, w, h = box
         world = (-y - h, x + w, -y)  # the box flipped: ymin, xmax, ymax
-        to_world = _FLIP @ placed
+        with np.errstate(all="ignore"):  # a tiny viewBox in a large size overflows: refused below
+            to_world = _FLIP @ placed
+            if into is not None:
+                to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP @ placed
+        if not np.isfinite(to_world).all():
+            raise Refusal(f"expected a viewBox whose scale into the drawing's size is finite, found "
+                          f"viewBox {document.root.attrs.get('viewBox', '')!r}")
         if into is not None:
-            to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP @ placed
             world_box = into
         else:
             world_box = (x, world[0], world[1], world[2])

@@ -14,7 +14,9 @@ from numpy.typing import NDArray
 
 from ..model import Color, Gradient
 from .svg_color import parse_color
+from .scene_limits import LIMITS
 from .svg_document import Document, Node, matrix, own_style
+from .svg_flatten import Refusal
 
 __all__ = ["read_gradient", "gradient_ref", "stop_color"]
 
@@ -107,9 +109,13 @@ def _stops(nodes: list[Node], document: Document, opacity: float) -> list[tuple[
     holder = next((n for n in nodes if any(c.tag == "stop" for c in n.children)), None)
     if holder is None:
         return []
+    written = [c for c in holder.children if c.tag == "stop"]
+    if len(written) > LIMITS["gradient_stops"]:
+        raise Refusal(f"gradient {holder.attrs.get('id', '')!r} (line {holder.line}): expected at most "
+                      f"{LIMITS['gradient_stops']} stops, found {len(written)}")
     stops: list[tuple[float, Color]] = []
     last = 0.0
-    for stop in (c for c in holder.children if c.tag == "stop"):
+    for stop in written:
         offset = _number(stop.attrs.get("offset", "0"), 1.0)
         offset = min(max(offset if math.isfinite(offset) else 0.0, 0.0, last), 1.0)  # clamped, never decreasing
         last = offset

@@ -127,14 +127,22 @@ def triangulate(points: Array) -> tuple[Array, Triangles, Array]:
     points = np.asarray(points, dtype=np.float64)
     _check_polygon(points)
     n = len(points)
+    # triangulated at unit size: the refinement's tests multiply up to six lengths, which underflow
+    # for polygons under about 1e-50 across (and overflow for huge ones)
+    low = points.min(axis=0)
+    extent = float(np.max(points.max(axis=0) - low))
+    unit = (points - low) / extent
     ccw = float(signed_area(points)) > 0
     order = np.arange(n) if ccw else np.arange(n)[::-1]
-    seed = ear_clip(points[order])
-    mesh = _Refiner(points[order], seed, order, ccw)
+    seed = ear_clip(unit[order])
+    mesh = _Refiner(unit[order], seed, order, ccw)
     mesh.make_delaunay()
-    area = abs(float(signed_area(points)))
+    area = abs(float(signed_area(unit)))
     mesh.refine(max_area=area / _SIZE, budget=max(300, _BUDGET * n))
-    return mesh.result()
+    vertices, triangles, places = mesh.result()
+    vertices = vertices * extent + low
+    vertices[:n] = points  # the polygon's own vertices exactly, not rounded through the unit copy
+    return vertices, triangles, places
 
 
 def ear_clip(points: Array) -> Triangles:

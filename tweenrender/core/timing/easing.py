@@ -207,7 +207,11 @@ def parse_easing(text: str) -> Easing:
         found = _STEPS.fullmatch(word)
         if not found:
             raise EasingSyntaxError(f"expected steps(n) or steps(n, {' | '.join(JUMPS)}), found {text!r}")
-        count, jump = int(found.group(1)), found.group(2) or "jump-end"
+        written, jump = found.group(1), found.group(2) or "jump-end"
+        digits = len(written.lstrip("+-").lstrip("0"))
+        # past 4300 digits int() itself refuses, in Python's words: a count that long is just too large
+        count = int(written) if digits <= 9 else (-1 if written.startswith("-") else 10**10)
+        shown = written if digits <= 9 else f"a number of {digits} digits"
         jump = _JUMP_ALIASES.get(jump, jump)
         if jump not in JUMPS:
             raise EasingSyntaxError(f"expected a jump of {', '.join(JUMPS)} in steps(n, jump), "
@@ -215,7 +219,7 @@ def parse_easing(text: str) -> Easing:
         least = 2 if jump == "jump-none" else 1
         if not least <= count <= 10_000:
             raise EasingSyntaxError(f"expected n from {least} to 10000 in steps(n{', jump-none' * (least == 2)}), "
-                                    f"found {count}")
+                                    f"found {shown}")
         return Steps(count, jump, text=word)
     raise EasingSyntaxError(f"unknown easing {text!r}; expected one of {', '.join(EASING_FORMS)}")
 

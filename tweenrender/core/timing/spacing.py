@@ -88,11 +88,11 @@ def fritsch_carlson_tangents(ticks: ArrayLike) -> Array:
         if delta[k] == 0.0:
             d[k] = d[k + 1] = 0.0
             continue
-        alpha, beta = d[k] / delta[k], d[k + 1] / delta[k]
-        radius = alpha * alpha + beta * beta
-        if radius > 9.0:
-            tau = 3.0 / math.sqrt(radius)
-            d[k], d[k + 1] = tau * alpha * delta[k], tau * beta * delta[k]
+        # alpha² + beta² > 9 and the scaling by 3 / sqrt(alpha² + beta²), written without dividing
+        # by delta_k, whose quotients overflow when it is subnormal ([0, 1e-320, 1])
+        length = math.hypot(d[k], d[k + 1])
+        if length > 3.0 * delta[k]:
+            d[k], d[k + 1] = 3.0 * delta[k] * (d[k] / length), 3.0 * delta[k] * (d[k + 1] / length)
     return d
 
 

@@ -39,6 +39,7 @@ _FRAME: Color = (30, 34, 45, 60)
 _BACK: Color = (255, 255, 255, 255)
 _MARGIN = 0.12  # of the axis range, around the farthest control point
 _ZOOM_BELOW = 0.2  # inset when the curves span less than this share of the axes' width
+_FAR_PIXELS = 1e9  # pixel coordinates are kept within this, far off any picture
 
 
 @dataclass(frozen=True, slots=True)
@@ -65,12 +66,17 @@ class _Map:
     """World box ``[cx ± r] × [cy ± r]`` onto a pixel square at ``(x, y)`` of side ``side``, y up."""
 
     def __init__(self, cx: float, cy: float, r: float, x: float, y: float, side: float) -> None:
-        self.cx, self.cy, self.r, self.x, self.y, self.side = cx, cy, r, x, y, side
+        # a half-side of at least the least float: the curves of a shape of 1e-160 and less are subnormal
+        self.cx, self.cy, self.r, self.x, self.y, self.side = cx, cy, max(r, 5e-324), x, y, side
 
     def __call__(self, p: NDArray[np.float64]) -> NDArray[np.float64]:
-        s = self.side / (2 * self.r)
-        return np.stack([self.x + (p[..., 0] - self.cx + self.r) * s,
-                         self.y + (self.cy + self.r - p[..., 1]) * s], axis=-1)
+        # shares of the box first, then pixels: side / 2r overflows for a subnormal box; points far
+        # outside a tiny box are kept a billion pixels off the picture
+        with np.errstate(over="ignore"):
+            u = (p[..., 0] - self.cx + self.r) / (2 * self.r)
+            v = (self.cy + self.r - p[..., 1]) / (2 * self.r)
+            pixels = np.stack([self.x + u * self.side, self.y + v * self.side], axis=-1)
+        return np.clip(pixels, -_FAR_PIXELS, _FAR_PIXELS)
 
 
 def _groups(pix: NDArray[np.float64], tol: float) -> list[list[int]]:

@@ -1,0 +1,112 @@
+"""Pairing the elements of consecutive drawings: the least total cost over every partial pairing (brute
+force on small drawings), the same for a thousand elements in bounded memory, and a refusal past the limit."""
+
+from __future__ import annotations
+
+import itertools
+import resource
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tweenrender.model import Contour, Paint
+from tweenrender.scenefile import drawings
+from tweenrender.scenefile.drawings import _costs, match_elements
+from tweenrender.scenefile.svg import Element
+
+
+def _element(x: float, y: float, side: float, fill: tuple[int, int, int, int] | None, ident: str | None = None
+             ) -> Element:
+    points = np.array([[x, y], [x + side, y], [x + side, y + side], [x, y + side]], dtype=np.float64)
+    paint = Paint(fill=fill, stroke=None if fill else (0, 0, 0, 255))
+    return Element(ident, "rect", 1, (Contour(points),), paint, "nonzero", "butt", "miter", 4.0)
+
+
+def _random_drawing(rng: np.random.Generator, count: int) -> list[Element]:
+    return [_element(*rng.uniform(0, 100, 2), rng.uniform(1, 30),
+                     None if rng.random() < 0.2 else tuple(int(v) for v in rng.integers(0, 256, 3)) + (255,))
+            for _ in range(count)]
+
+
+def _least_total(cost: np.ndarray, unmatched: float) -> float:
+    """Every partial pairing of rows with columns: pairs' costs plus ``unmatched`` per element left over."""
+    m, n = cost.shape
+    best = unmatched * (m + n)
+    for size in range(1, min(m, n) + 1):
+        for rows in itertools.combinations(range(m), size):
+            for cols in itertools.permutations(range(n), size):
+                total = sum(cost[r, c] for r, c in zip(rows, cols)) + unmatched * (m + n - 2 * size)
+                best = min(best, total)
+    return best
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_the_pairing_has_the_least_total_cost_of_every_partial_pairing(seed: int) -> None:
+    rng = np.random.default_rng(seed)
+    a, b = _random_drawing(rng, int(rng.integers(2, 5))), _random_drawing(rng, int(rng.integers(2, 5)))
+    diagonal = float(np.hypot(100, 100))
+    pairs = match_elements(a, b, diagonal)
+    cost = _costs(a, b, diagonal)
+    unmatched = drawings._UNMATCHED_COST
+    assert sorted(i for i, _ in pairs if i is not None) == list(range(len(a)))
+    assert sorted(j for _, j in pairs if j is not None) == list(range(len(b)))
+    paired = [(i, j) for i, j in pairs if i is not None and j is not None]
+    total = sum(cost[i, j] for i, j in paired) + unmatched * (len(a) + len(b) - 2 * len(paired))
+    assert total == pytest.approx(_least_total(cost, unmatched), abs=1e-9)
+
+
+def test_ids_pair_first_and_a_repeated_id_does_not() -> None:
+    a = [_element(0, 0, 5, (255, 0, 0, 255), "x"), _element(50, 50, 5, (0, 0, 255, 255), "y"),
+         _element(90, 0, 5, (0, 255, 0, 255), "y")]
+    b = [_element(60, 60, 5, (0, 0, 255, 255), "y"), _element(0, 0, 5, (255, 0, 0, 255)),
+         _element(52, 52, 5, (0, 0, 255, 255), "x")]
+    pairs = match_elements(a, b, 141.0)
+    assert (0, 2) in pairs  # "x" by its id, though (0, 0) sits where b's element 1 is
+    assert (1, 0) in pairs  # "y" is twice in a: paired by cost (the nearer blue one), not by id
+
+
+def _rects_svg(count: int, shift: int) -> str:
+    rects = "".join(f'<rect x="{(i % 100) * 10 + shift}" y="{(i // 100) * 10}" width="6" height="6"/>'
+                    for i in range(count))
+    return f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 1000 {10 * (count // 100 + 1)}">{rects}</svg>'
+
+
+def _peak_kib(*args: object) -> tuple[subprocess.CompletedProcess[str], int]:
+    """Run ``python -m tweenrender ARGS`` in a child; with the largest resident size (KiB) of any child so far."""
+    done = subprocess.run([sys.executable, "-m", "tweenrender", *map(str, args)], capture_output=True, text=True,
+                          timeout=600)
+    return done, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+
+
+def test_checking_3000_elements_a_drawing_stays_within_400_mb(tmp_path: Path) -> None:
+    # the pairing's costs, one (m, n) matrix: 72 MB here, where three-dimensional differences and a
+    # (m + n)² assignment took about ten times that (1.8 GB for 5000 rects)
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text(_rects_svg(3000, 0))
+    b.write_text(_rects_svg(3000, 1))
+    done, peak = _peak_kib("check", a, b)
+    assert done.returncode == 0 and done.stderr == "", done.stderr
+    assert "3000 shapes" in done.stdout  # each rect paired with its shifted self
+    assert peak < 400 * 1024, f"{peak / 1024:.0f} MB"
+
+
+def test_drawings_with_too_many_elements_are_refused_before_pairing(tmp_path: Path, monkeypatch) -> None:
+    # every element of every drawing is a key of some shape: 5001 + 5001 are over the scene's 10000 keys,
+    # which is said before any pairing is tried (the pairing here would fail the test)
+    import tweenrender as tr
+    from tweenrender.errors import SceneError
+
+    def no_pairing(*args: object, **kwargs: object) -> None:
+        raise AssertionError("paired before the count was checked")
+
+    monkeypatch.setattr(drawings, "match_elements", no_pairing)
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text(_rects_svg(5001, 0))
+    b.write_text(_rects_svg(5001, 1))
+    with pytest.raises(SceneError) as caught:
+        tr.load_scene([a, b])
+    assert str(caught.value) == (f"{a}: expected at most 10000 keys in the scene, found 10002 "
+                                 "(one for each element of each drawing)")

@@ -12,10 +12,12 @@ the line the command line prints. The command line and the preview use this modu
 :mod:`tweenrender.errors`) only; the stages below it do the work. Each function imports its stage when
 first called, so ``import tweenrender`` stays light.
 
-Four settings of the correspondence come by name wherever keys are matched (``sheet``, ``report``,
+Five settings of the correspondence come by name wherever keys are matched (``sheet``, ``report``,
 ``reel``, ``correspondence``; ``write`` takes them among its options): ``cost`` (``distance`` or
 ``sg``), ``align`` (``centroid`` or ``none``), ``equal_counts`` (``drawn`` or ``match``), put over the
-scene's ``[correspondence]``, and ``balance`` (``copies`` or ``spread``), put over every shape's.
+scene's ``[correspondence]``, ``max_memory`` (bytes, or a text such as ``512M`` or ``2G``: what the
+exact ``sg`` search's tables may take, about 120 bytes a pair of vertices; a larger search is refused
+before it starts; default 2 GiB), and ``balance`` (``copies`` or ``spread``), put over every shape's.
 They travel as one :class:`MatchSettings`.
 """
 
@@ -164,8 +166,8 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
     Options come by their long names (``RenderOptions.names()``: ``method, compare, format, size, fps,
-    frames, background, balance, paths, onion, strip, cost, align, equal_counts, workers, cluster,
-    max_frames, progress, max_error, loop``) or as one ``options`` object. The format is ``format`` or
+    frames, background, balance, cost, align, equal_counts, max_memory, paths, onion, strip, workers,
+    cluster, max_frames, progress, max_error, loop``) or as one ``options`` object. The format is ``format`` or
     ``path``'s extension (:func:`format_names`); a name without one is a folder of PNG frames. The
     target changes only when the whole output was written and checked."""
     from .pipeline.library import write as written

@@ -16,6 +16,7 @@ __all__ = [
     "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "COSTS", "ALIGNS", "EQUAL_COUNTS",
     "FILL_RULES", "CAPS", "JOINS", "TURNS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint",
     "Shape", "Matching", "Scene", "DrawnContour", "Gradient", "MaskShape", "Mask", "frozen_points",
+    "DEFAULT_MAX_MEMORY",
 ]
 
 Points = NDArray[np.float64]
@@ -35,6 +36,8 @@ CAPS: tuple[str, ...] = ("butt", "round", "square")
 JOINS: tuple[str, ...] = ("miter", "round", "bevel")
 TURNS: tuple[str, ...] = ("cw", "ccw", "shortest")
 """A key's ``turn``: the direction its segment's rigid frame turns (maths §5.13)."""
+DEFAULT_MAX_MEMORY = 2 << 30
+"""Bytes the exact ``sg`` correspondence search's tables may take (``Matching.max_memory``): 2 GiB."""
 UNMATCHED: tuple[str, ...] = ("grow", "fade")
 """What a contour or element without a partner in the next key does: grow from (shrink to) a point, or fade."""
 
@@ -251,6 +254,8 @@ class Matching:
     eb: float = 2.0
     mb: float = 10.0
     pb: float = 1000.0
+    # bytes the sg search's tables may take: a search that would need more is refused before it starts
+    max_memory: int = DEFAULT_MAX_MEMORY
 
 
 @dataclass(frozen=True, slots=True)

@@ -106,3 +106,62 @@ def test_large_outline_is_checked_in_blocks() -> None:
     assert self_crossing(circle) is None
     circle[1500] = [2.0, 0.0]
     assert self_crossing(circle) is not None
+
+
+def _lowest_meeting_pair(points: list[tuple[int, int]]) -> tuple[int, int] | None:
+    """The lowest-numbered pair (i, j) of edges, not neighbours, of the outline (no coincident neighbours)
+    that share a point, by exact pair tests."""
+    n = len(points)
+    segments = [(points[i], points[(i + 1) % n]) for i in range(n)]
+    for i in range(n):
+        for j in range(i + 2, n):
+            if not (i == 0 and j == n - 1) and _exact_meet(*segments[i], *segments[j]):
+                return i, j
+    return None
+
+
+def _on_segment(point: np.ndarray, a: tuple, b: tuple) -> bool:
+    a_, b_ = np.array(a, float), np.array(b, float)
+    ab, ap = b_ - a_, point - a_
+    s = np.clip(ap @ ab / max(ab @ ab, 1e-300), 0.0, 1.0)
+    return bool(np.linalg.norm(a_ + s * ab - point) < 1e-9)
+
+
+@pytest.mark.parametrize("rows, block", [(64, 1 << 18), (2, 16)])
+def test_the_point_given_is_on_the_lowest_pair_of_edges_that_meet(monkeypatch, rows: int, block: int) -> None:
+    import tweenrender.core.crossings as crossings
+
+    monkeypatch.setattr(crossings, "_ROWS", rows)  # blocks of rows, down to two edges at a time
+    monkeypatch.setattr(crossings, "_BLOCK", block)
+    rng = np.random.default_rng(11)
+    checked = 0
+    for _ in range(400):
+        n = int(rng.integers(4, 30))
+        points = [tuple(int(v) for v in p) for p in rng.integers(0, 9, size=(n, 2))]
+        if any(points[k] == points[(k + 1) % n] for k in range(n)):
+            continue
+        if any((lambda u, v: u[0] * v[1] - u[1] * v[0] == 0 and u[0] * v[0] + u[1] * v[1] < 0)(
+                (points[k][0] - points[k - 1][0], points[k][1] - points[k - 1][1]),
+                (points[(k + 1) % n][0] - points[k][0], points[(k + 1) % n][1] - points[k][1])) for k in range(n)):
+            continue  # a fold back: reported at its own neighbouring pair
+        pair = _lowest_meeting_pair(points)
+        where = crossings.self_crossing(np.array(points, dtype=np.float64))
+        assert (where is None) == (pair is None), points
+        if pair is not None:
+            i, j = pair
+            assert _on_segment(where, points[i], points[(i + 1) % n]), (points, pair, where)
+            assert _on_segment(where, points[j], points[(j + 1) % n]), (points, pair, where)
+            checked += 1
+    assert checked > 100
+
+
+def test_a_sweep_of_outlines_is_each_outline_checked() -> None:
+    rng = np.random.default_rng(5)
+    frames = rng.integers(0, 5, size=(30, 7, 2)).astype(np.float64)
+    expected = [self_crossing(frame) for frame in frames]
+    from tweenrender.core.crossings import self_crossings
+
+    for _ in range(2):  # the second time from what was remembered: the same answers
+        found = self_crossings(frames)
+        assert [w is None for w in found] == [w is None for w in expected]
+        assert all(w is None or np.array_equal(w, e) for w, e in zip(found, expected))

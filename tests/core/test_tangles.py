@@ -68,3 +68,28 @@ def test_tangled_times_and_linear_tangles() -> None:
     brute = [float(t) for t, frame in zip(SWEEP, frames) if proper_pairs(frame, frame, True, True, True)]
     assert found == brute and found and found[-1] == 1.0
     assert tangled_times([frames], [True], SWEEP) == brute
+
+
+def test_orientation_signs_are_exact_where_points_coincide_or_products_underflow() -> None:
+    """Coincident points (a balanced key's copies) and differences whose float products underflow to 0,
+    against exact rational arithmetic."""
+    from fractions import Fraction
+
+    from tweenrender.core.tangles import _sign
+
+    rng = np.random.default_rng(3)
+    scale = np.array([1.0, 1e-170, 1e100])  # no product overflows (the loader keeps |x| ≤ 1e9)
+    points = rng.integers(-2, 3, size=(4000, 3, 2)).astype(np.float64) * scale[rng.integers(0, 3, size=(4000, 1, 1))]
+    points[::3, 1] = points[::3, 0]  # b = a
+    points[1::5, 2, 1] = points[1::5, 0, 1]  # c level with a
+    points[2::7] *= 1e-160  # tiny: most products underflow
+    a, b, c = points[:, 0], points[:, 1], points[:, 2]
+    found = _sign(a[:, 0], a[:, 1], b[:, 0], b[:, 1], c[:, 0], c[:, 1])
+
+    def exact(p: np.ndarray) -> int:
+        (ax, ay), (bx, by), (cx, cy) = ((Fraction(float(x)), Fraction(float(y))) for x, y in p)
+        det = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+        return (det > 0) - (det < 0)
+
+    assert found.tolist() == [exact(p) for p in points]
+    assert np.count_nonzero(found == 0) > 500 and np.count_nonzero(found != 0) > 500

@@ -80,7 +80,7 @@ def test_frame_and_outlines(scene: tr.Scene, scene_value: object, time: object, 
 
 
 OPTION_NAMES = ["method", "compare", "format", "size", "fps", "frames", "background", "balance", "cost", "align",
-                "equal_counts", "paths", "onion", "strip", "workers", "cluster", "max_frames", "progress", "nonsense"]
+                "equal_counts", "max_memory", "paths", "onion", "strip", "workers", "cluster", "max_frames", "progress", "nonsense"]
 
 
 @given(data=st.data())

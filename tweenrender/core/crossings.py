@@ -12,6 +12,9 @@ check this against exact arithmetic.
 
 from __future__ import annotations
 
+import hashlib
+from collections import OrderedDict
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -22,6 +25,9 @@ __all__ = ["distinct_outline", "self_crossing", "self_crossings"]
 Array = NDArray[np.float64]
 
 _BLOCK = 1 << 18  # edge pairs tested at once, to bound memory on large outlines
+_REMEMBERED = 256  # outlines' sweeps whose crossings are kept
+_found: OrderedDict[bytes, list[Array | None]] = OrderedDict()
+_ROWS = 64  # edges tested at once against every later one: blocks narrow as the triangle of pairs does
 
 
 def distinct_outline(points: Array) -> Array:
@@ -53,27 +59,77 @@ def self_crossing(points: Array) -> Array | None:
     if folded.any():
         i = int(np.flatnonzero(folded)[0])
         best = (i, (i + 1) % n, b[i])
-    rows = np.arange(n)
-    step = max(1, _BLOCK // n)
-    for start in range(0, n, step):
-        i, j = np.meshgrid(rows[start:start + step], rows, indexing="ij")
-        # each unordered pair once, i < j, neither neighbours (edge 0 and edge n-1 are neighbours)
-        pick = (j > i + 1) & ~((i == 0) & (j == n - 1))
-        i, j = i[pick], j[pick]
-        if len(i) == 0:
-            continue
-        hit, where = _segments_meet(a[i], b[i], a[j], b[j])
-        if hit.any():
-            k = int(np.flatnonzero(hit)[0])
-            if best is None or (int(i[k]), int(j[k])) < best[:2]:
-                best = (int(i[k]), int(j[k]), where[k])
-            break  # pairs are in order of i: later blocks hold larger i
+    first = _first_meeting(a, b)
+    if first is not None and (best is None or first < best[:2]):
+        i, j = first
+        _, where = _segments_meet(a[i:i + 1], b[i:i + 1], a[j:j + 1], b[j:j + 1])
+        best = (i, j, where[0])
     return None if best is None else np.asarray(best[2], dtype=np.float64)
 
 
 def self_crossings(frames: Array) -> list[Array | None]:
-    """:func:`self_crossing` of each outline of ``frames (T, N, 2)``: a list of T points or None."""
-    return [self_crossing(frame) for frame in np.asarray(frames, dtype=np.float64)]
+    """:func:`self_crossing` of each outline of ``frames (T, N, 2)``: a list of T points or None (remembered
+    for the last few asked about: a report's table and its charts measure the same inbetweens)."""
+    frames = np.ascontiguousarray(frames, dtype=np.float64)
+    key = hashlib.blake2b(repr(frames.shape).encode() + frames.tobytes(), digest_size=20).digest()
+    found = _found.get(key)
+    if found is None:
+        found = [self_crossing(frame) for frame in frames]
+        for point in found:
+            if point is not None:
+                point.flags.writeable = False  # shared by every caller
+        _found[key] = found
+        while len(_found) > _REMEMBERED:
+            _found.popitem(last=False)
+    else:
+        _found.move_to_end(key)
+    return list(found)
+
+
+def _first_meeting(a: Array, b: Array) -> tuple[int, int] | None:
+    """The lowest-numbered pair ``(i, j)``, ``i < j``, of edges ``a → b`` (``(N, 2)`` each, an outline's)
+    that are not neighbours and that :func:`_segments_meet` says share a point, or None.
+
+    The same test, term for term (each cross product of the same differences, so the same rounding), made
+    on rows of edges against every later edge at once: first whether the ends of edge i lie on both sides
+    of edge j's line (or on it), by broadcasting; then, for the pairs that do, the other half of the test.
+    """
+    n = len(a)
+    ax, ay, bx, by = a[:, 0], a[:, 1], b[:, 0], b[:, 1]
+    ex, ey = bx - ax, by - ay  # each edge's vector: q2 - q1 (and p2 - p1) of every pair
+    rows = max(1, min(_ROWS, _BLOCK // n))
+    for start in range(0, n - 2, rows):
+        stop = min(start + rows, n - 2)
+        first = start + 2  # the lowest j a row of this block pairs with (j > i + 1)
+        qx, qy, qex, qey = ax[None, first:], ay[None, first:], ex[None, first:], ey[None, first:]
+        d1 = qex * (ay[start:stop, None] - qy) - qey * (ax[start:stop, None] - qx)  # cross(q2 - q1, p1 - q1)
+        d2 = qex * (by[start:stop, None] - qy) - qey * (bx[start:stop, None] - qx)  # cross(q2 - q1, p2 - q1)
+        straddle = np.sign(d1) * np.sign(d2) <= 0.0
+        i = np.arange(start, stop)[:, None]
+        j = np.arange(first, n)[None, :]
+        straddle &= (j > i + 1) & ~((i == 0) & (j == n - 1))
+        r, c = np.nonzero(straddle)  # row-major: in order of (i, j)
+        if len(r) == 0:
+            continue
+        pi, qj = r + start, c + first
+        d3 = _cross(ex[pi], ey[pi], ax[qj] - ax[pi], ay[qj] - ay[pi])  # cross(p2 - p1, q1 - p1)
+        d4 = _cross(ex[pi], ey[pi], bx[qj] - ax[pi], by[qj] - ay[pi])  # cross(p2 - p1, q2 - p1)
+        d1, d2 = d1[r, c], d2[r, c]
+        collinear = (d1 == 0.0) & (d2 == 0.0) & (d3 == 0.0) & (d4 == 0.0)
+        hit = (np.sign(d3) * np.sign(d4) <= 0.0) & ~collinear
+        for k in np.flatnonzero(collinear):  # collinear: do they overlap?
+            ii, jj = int(pi[k]), int(qj[k])
+            hit[k] = bool(_segments_meet(a[ii:ii + 1], b[ii:ii + 1], a[jj:jj + 1], b[jj:jj + 1])[0][0])
+        if hit.any():
+            k = int(np.argmax(hit))
+            return int(pi[k]), int(qj[k])
+    return None
+
+
+def _cross(ux: Array, uy: Array, vx: Array, vy: Array) -> Array:
+    """:func:`~.geometry.cross` of ``u`` and ``v`` given by their coordinates: ``ux*vy - uy*vx``, the same
+    operations."""
+    return ux * vy - uy * vx
 
 
 def _segments_meet(p1: Array, p2: Array, q1: Array, q2: Array) -> tuple[NDArray[np.bool_], Array]:

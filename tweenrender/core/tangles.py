@@ -17,14 +17,16 @@ one comes to lie inside the other or leaves it. A contour lying along another
 without passing through it (collinear edges) only touches it.
 
 Orientation signs are exact: a float determinant within its rounding bound of
-zero is recomputed in exact rational arithmetic (each float an integer over a
-power of two, so integers over a common one), so the answer does not depend on
-floating-point luck. Candidate edge pairs are found by sorting the edges'
+zero is settled by the signs of its factors where one of its products has a zero
+factor (coincident points), else recomputed in exact rational arithmetic (each
+float an integer over a power of two, so integers over a common one), so the
+answer does not depend on floating-point luck. Candidate edge pairs are found by sorting the edges'
 x-ranges (sweep and prune), so a frame costs far less than all pairs.
 """
 
 from __future__ import annotations
 
+import hashlib
 from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Sequence
@@ -42,6 +44,7 @@ SWEEP = np.linspace(0.0, 1.0, 101)
 
 _CACHED = 1024  # shapes whose straight paths' crossings are kept
 _linear_cache: OrderedDict[bytes, list[float]] = OrderedDict()
+_apart_cache: OrderedDict[bytes, Apart] = OrderedDict()  # keys' contours apart in both, by their digest
 
 _BOUND = 4.0 * np.finfo(np.float64).eps  # relative rounding bound of a 2x2 orientation determinant
 
@@ -58,7 +61,7 @@ def _edges(contours: Sequence[Array], closed: Sequence[bool]) -> tuple[Array, Ar
         if m <= 0:
             continue
         a.append(points[:m])
-        b.append(np.roll(points, -1, axis=0)[:m] if shut else points[1:m + 1])
+        b.append(np.concatenate([points[1:], points[:1]]) if m == len(points) else points[1:m + 1])  # each end
         owner.append(np.full(m, c))
         index.append(np.arange(m))
         count.append(np.full(m, m if shut else -1))
@@ -78,10 +81,27 @@ def _sign(ax: Array, ay: Array, bx: Array, by: Array, cx: Array, cy: Array) -> N
     sign = np.sign(det).astype(np.int8)
     unsure = np.flatnonzero(np.abs(det) <= _BOUND * (np.abs(left) + np.abs(right)))
     if len(unsure):
+        unsure = unsure[~_settled_by_a_zero_factor(sign, unsure, ax, ay, bx, by, cx, cy)]
+    if len(unsure):
         columns = [v[unsure].tolist() for v in (ax, ay, bx, by, cx, cy)]
         for k, values in zip(unsure.tolist(), zip(*columns)):
             sign[k] = _exact_sign(values)
     return sign
+
+
+def _settled_by_a_zero_factor(sign: NDArray[np.int8], unsure: Indices, ax: Array, ay: Array, bx: Array, by: Array,
+                              cx: Array, cy: Array) -> NDArray[np.bool_]:
+    """Settle, in ``sign``, the ``unsure`` determinants one of whose two products is exactly zero, and
+    say which (``(U,)``): a difference of two floats is 0 exactly when they are equal and otherwise has
+    the sign of the exact difference (IEEE rounding is monotonic), so each exact product's sign is the
+    product of its factors' signs, and where one product is 0 the determinant's sign is the other's.
+    Points that coincide (a balanced key's copies, a contour grown from one point) are nearly all of
+    these."""
+    left = np.sign(bx[unsure] - ax[unsure]) * np.sign(cy[unsure] - ay[unsure])
+    right = np.sign(by[unsure] - ay[unsure]) * np.sign(cx[unsure] - ax[unsure])
+    settled = (left == 0.0) | (right == 0.0)
+    sign[unsure[settled]] = (left - right)[settled].astype(np.int8)
+    return settled
 
 
 def _exact_sign(values: Sequence[float]) -> int:
@@ -304,9 +324,27 @@ class Apart:
 
 
 def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> Apart:
-    """Which contours of keys ``k0s``, ``k1s`` (``(L_i, 2)`` each, corresponding) are apart in both."""
+    """Which contours of keys ``k0s``, ``k1s`` (``(L_i, 2)`` each, corresponding) are apart in both
+    (remembered for the last few keys asked about: every method of a segment asks about the same)."""
     k0s = [np.asarray(k, dtype=np.float64) for k in k0s]
     k1s = [np.asarray(k, dtype=np.float64) for k in k1s]
+    digest = hashlib.blake2b(repr([bool(c) for c in closed]).encode(), digest_size=20)
+    for k in (*k0s, *k1s):
+        digest.update(repr(k.shape).encode())
+        digest.update(np.ascontiguousarray(k).tobytes())
+    key = digest.digest()
+    found = _apart_cache.get(key)
+    if found is None:
+        found = _apart_in_keys(k0s, k1s, closed)
+        _apart_cache[key] = found
+        while len(_apart_cache) > _CACHED:
+            _apart_cache.popitem(last=False)
+    else:
+        _apart_cache.move_to_end(key)
+    return found
+
+
+def _apart_in_keys(k0s: list[Array], k1s: list[Array], closed: Sequence[bool]) -> Apart:
     shut = [_shut(k, c) for k, c in zip(k0s, closed)]
     meeting = set(proper_crossings(k0s, shut, touching=True)) | set(proper_crossings(k1s, shut, touching=True))
     nested, strokes = [], []

@@ -22,6 +22,7 @@ from typing import Any, Callable, Iterator, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from ..core.correspondence.correspond import SearchTooLarge
 from ..encode.formats import TABLE
 from ..errors import RenderError
 from ..plan.job import RenderJob
@@ -39,9 +40,12 @@ Encode = Callable[[NDArray[np.uint8]], Any]
 
 
 def draw_frame(frames: Frames, index: int) -> NDArray[np.uint8]:
-    """Frame ``index`` of ``frames``, with drawing failures reported as :class:`RenderError`."""
+    """Frame ``index`` of ``frames``, with drawing failures reported as :class:`RenderError` (a search refused
+    for its memory is the input's fault and stays as it is)."""
     try:
         return frames(index)
+    except SearchTooLarge:
+        raise
     except (ValueError, FloatingPointError, RuntimeError, ZeroDivisionError) as error:
         raise RenderError(f"frame {index}: {error}") from error
 

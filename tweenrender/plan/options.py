@@ -9,6 +9,7 @@ the library says ``fps=: …`` and the command line ``--fps: …``.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, fields, replace
 from numbers import Integral, Real
 from typing import Any, Callable, Sequence
@@ -18,7 +19,7 @@ from ..errors import OptionError
 from ..model import ALIGNS, BALANCES, COSTS, EQUAL_COUNTS, Color, Scene
 
 __all__ = ["RenderOptions", "MatchSettings", "check_scene", "own_method_first", "Progress", "MAX_ONION", "MAX_WORKERS", "DEFAULT_MAX_FRAMES", "SHEET_COUNT", "REEL_SIZE", "REEL_FPS", "canvas_limit",
-           "check_method", "check_methods", "check_size", "check_fps", "check_color", "check_choice"]
+           "check_method", "check_methods", "check_size", "check_fps", "check_color", "check_choice", "check_memory"]
 
 Progress = Callable[[int, int], None]
 """Called with ``(done, total)`` frames as a render goes."""
@@ -150,6 +151,28 @@ def _flag(value: object, option: str) -> bool:
     return value
 
 
+_MEMORY_UNITS = {"": 1, "K": 1 << 10, "M": 1 << 20, "G": 1 << 30, "T": 1 << 40}
+_MEMORY = re.compile(r"\s*(\d+(?:\.\d*)?|\.\d+)\s*([KMGT]?)(?:i?B)?\s*", re.IGNORECASE)
+MIN_MEMORY = 1 << 10
+"""The smallest memory limit taken (a KiB): anything less is surely a slip of the unit."""
+
+
+def check_memory(value: object, option: str = "max_memory") -> int:
+    """A memory limit in bytes from a whole number of bytes or a text such as ``512M``, ``2G``, ``1.5GiB``
+    (K, M, G, T: binary multiples; a bare number: bytes)."""
+    if isinstance(value, bool):
+        raise OptionError(f"expected a size such as 512M or 2G, found {value!r}", option)
+    if isinstance(value, Integral):
+        number = int(value)
+    elif isinstance(value, str) and (found := _MEMORY.fullmatch(value)):
+        number = int(float(found.group(1)) * _MEMORY_UNITS[found.group(2).upper()])
+    else:
+        raise OptionError(f"expected a size such as 512M or 2G (K, M, G, T: KiB to TiB), found {value!r}", option)
+    if not MIN_MEMORY <= number <= 1 << 50:
+        raise OptionError(f"expected a size from 1K to 1024T, found {value!r}", option)
+    return number
+
+
 MAX_ERROR_RANGE = (0.001, 100.0)
 """Output pixels the keyframed paths of a vector file may stray from the exact inbetween (``max_error``)."""
 
@@ -164,15 +187,17 @@ def _max_error(value: object) -> float:
 @dataclass(frozen=True, slots=True)
 class MatchSettings:
     """How the keys are put in correspondence and balanced, over the scene's own: ``cost``, ``align`` and
-    ``equal_counts`` over its ``[correspondence]``, ``balance`` over every shape's (None keeps the scene's).
+    ``equal_counts`` over its ``[correspondence]``, ``balance`` over every shape's (None keeps the scene's);
+    ``max_memory`` the bytes (or a text such as ``512M``) the ``sg`` search's tables may take (None: 2 GiB).
 
-    What ``--cost``, ``--align``, ``--equal-counts`` and ``--balance`` give every command; the values are
-    checked when they are put over a scene (:meth:`over`)."""
+    What ``--cost``, ``--align``, ``--equal-counts``, ``--max-memory`` and ``--balance`` give every command;
+    the values are checked when they are put over a scene (:meth:`over`)."""
 
     cost: str | None = None
     align: str | None = None
     equal_counts: str | None = None
     balance: str | None = None
+    max_memory: int | str | None = None
 
     @classmethod
     def names(cls) -> tuple[str, ...]:
@@ -196,6 +221,8 @@ class MatchSettings:
                    for name, value, choices in (("cost", self.cost, COSTS), ("align", self.align, ALIGNS),
                                                 ("equal_counts", self.equal_counts, EQUAL_COUNTS))
                    if value is not None}
+        if self.max_memory is not None:
+            changes["max_memory"] = check_memory(self.max_memory)
         if changes:
             scene = replace(scene, matching=replace(scene.matching, **changes))
         if self.balance is None:
@@ -211,7 +238,8 @@ class RenderOptions:
     ``compare`` is ``None`` (one picture), ``True`` (the scene's compare list) or methods; ``frames`` a
     ``"A:B"`` text or a ``range`` (checked against the scene when the clip is known); ``size`` each
     panel's; ``background`` a colour; ``cost``, ``align``, ``equal_counts`` put over the scene's
-    ``[correspondence]``, ``balance`` over every shape's; ``max_error`` (vector formats only) how far, in
+    ``[correspondence]``, ``balance`` over every shape's; ``max_memory`` what the ``sg`` search's tables
+    may take (bytes, or ``512M``, ``2G``; default 2 GiB); ``max_error`` (vector formats only) how far, in
     output pixels, the keyframed paths may stray from the exact inbetween at a frame (default 0.25);
     ``loop`` makes a file that can say so play over and over (``encode.formats.Format.loop``).
     """
@@ -227,6 +255,7 @@ class RenderOptions:
     cost: str | None = None
     align: str | None = None
     equal_counts: str | None = None
+    max_memory: int | str | None = None
     paths: bool = False
     onion: int = 0
     strip: bool = False
@@ -240,7 +269,7 @@ class RenderOptions:
     @property
     def match(self) -> MatchSettings:
         """The correspondence and balance settings among these options."""
-        return MatchSettings(self.cost, self.align, self.equal_counts, self.balance)
+        return MatchSettings(self.cost, self.align, self.equal_counts, self.balance, self.max_memory)
 
     @classmethod
     def names(cls) -> tuple[str, ...]:
@@ -295,6 +324,7 @@ class RenderOptions:
             align=check_choice(v["align"], ALIGNS, "align") if "align" in v else None,
             equal_counts=check_choice(v["equal_counts"], EQUAL_COUNTS, "equal_counts")
             if "equal_counts" in v else None,
+            max_memory=check_memory(v["max_memory"]) if "max_memory" in v else None,
             paths=_flag(v.get("paths", False), "paths"),
             onion=_count(v.get("onion", 0), 0, MAX_ONION, "onion"),
             strip=_flag(v.get("strip", False), "strip"),

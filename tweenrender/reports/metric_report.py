@@ -8,9 +8,8 @@ from typing import TYPE_CHECKING, Sequence
 import numpy as np
 
 from ..core.measures import SWEEP, curves
-from ..core.timing.timeline import pair_paths
 from ..model import Scene
-from .segments import entries
+from .segments import SegmentPaths, entries
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -30,6 +29,7 @@ def metric_panels(scene: Scene, methods: Sequence[str]) -> list[MPanel]:
     from ..raster.plots.metric_plot import MPanel as _MPanel
 
     panels = []
+    paths = SegmentPaths()  # each contour of a segment is one of the same pairs' paths
     for entry in entries(scene, closed_only=True):
         if len(panels) == PANELS:
             break
@@ -38,7 +38,7 @@ def metric_panels(scene: Scene, methods: Sequence[str]) -> list[MPanel]:
         for method in methods:
             steered = bool(segment.spin or segment.arcs)
             drawn = None if entry.contour is None and not steered else \
-                pair_paths(segment, SWEEP, method)[entry.contour or 0]
+                paths(segment, SWEEP, method)[entry.contour or 0]
             found = curves(pair.k0, pair.k1, method, SWEEP, segment.joints, drawn)
             series[method] = {"perimeter_ratio": found.perimeter_ratio, "area_ratio": found.area_ratio,
                               "edge_error": found.edge_error, "angle_error": found.angle_error}

@@ -5,10 +5,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Iterator
 
-from ..core.timing.timeline import Pair, Segment, tracks_of
+import numpy as np
+from numpy.typing import NDArray
+
+from ..core.timing.timeline import Pair, Segment, pair_paths, tracks_of
 from ..model import Matching, Scene, Shape
 
-__all__ = ["Entry", "entries", "nothing_measured"]
+__all__ = ["Entry", "entries", "nothing_measured", "SegmentPaths"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -61,3 +64,20 @@ def nothing_measured(scene: Scene, closed_only: bool = True) -> str:
                 "or fades at a key, with no partner to put in correspondence")
     return ("no closed contour is in both keys of a segment, so there is nothing to compare: open strokes and "
             "contours that grow, shrink or fade move, but are not measured")
+
+
+class SegmentPaths:
+    """Every pair's inbetweens of a segment under a method at some ``t``, worked out once for a report:
+    :func:`~tweenrender.core.timing.timeline.pair_paths`, remembered by segment, method and ``t`` (each
+    contour of a segment, and its quality, asks for the same). The arrays are shared: read, never written."""
+
+    def __init__(self) -> None:
+        self._found: dict[tuple[int, str, bytes], tuple[Segment, list[NDArray[np.float64]]]] = {}
+
+    def __call__(self, segment: Segment, t: NDArray[np.float64], method: str) -> list[NDArray[np.float64]]:
+        """``pair_paths(segment, t (T,), method)``: one ``(T, L_i, 2)`` array per pair."""
+        t = np.asarray(t, dtype=np.float64)
+        key = (id(segment), method, t.tobytes())
+        if key not in self._found:  # the segment is kept with its paths, so its id is not reused meanwhile
+            self._found[key] = (segment, pair_paths(segment, t, method))
+        return self._found[key][1]

@@ -15,12 +15,12 @@ from ..core.methods.registry import REGISTRY, measured_methods
 from ..core.pops import changes, pops
 from ..core.stray import STRAY_REACH, Area, stray_shares
 from ..core.tangles import contact_times
-from ..core.timing.timeline import (ShapeAt, Track, evaluate_segment, injective_fallback_of, pair_paths,
-                                    segment_choice, tracks_of)
+from ..core.timing.timeline import (ShapeAt, Track, evaluate_segment, injective_fallback_of, segment_choice,
+                                    tracks_of)
 from ..core.view import Viewport
 from ..model import Scene, Shape
 from ..plan.job import scene_view, total_frames
-from .segments import Entry, entries, nothing_measured
+from .segments import Entry, SegmentPaths, entries, nothing_measured
 
 __all__ = ["stats_dict", "stats_text", "crossing_runs", "STATS_METHODS", "POP_CELLS"]
 
@@ -41,6 +41,7 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
     ``stats --json``): for ``methods``, default every method (``jointed`` where a shape has joints)."""
     shapes = []
     quality: dict[tuple[int, int, str], _Quality] = {}
+    paths = SegmentPaths()
     filled_in: list[tuple[dict[str, Any], _Quality]] = []
     every: dict[str, None] = dict.fromkeys(methods or ())
     for entry in entries(scene, closed_only=True):
@@ -48,10 +49,10 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
         names = tuple(methods) if methods is not None else measured_methods(jointed=bool(joints))
         every.update(dict.fromkeys(names))
         choice = segment_choice(entry.segment) or auto_choice(pair.k0, pair.k1, joints)  # what render draws
-        measured = {m: report(pair.k0, pair.k1, m, t, joints, _as_drawn(entry, m)).as_dict()
+        measured = {m: report(pair.k0, pair.k1, m, t, joints, _as_drawn(entry, m, paths)).as_dict()
                     for m in names}
         for method in measured:
-            found = _quality(entry, method, quality)
+            found = _quality(entry, method, quality, paths)
             measured[method].update(crossings=list(found.crossings), stroke_crossings=list(found.strokes))
             if method == "injective":  # where no injective morph exists, say why rigid paths were drawn
                 measured[method]["fallback"] = injective_fallback_of(entry.segment)
@@ -99,14 +100,15 @@ class _Quality:
         return self.stray
 
 
-def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Quality]) -> _Quality:
+def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Quality],
+             paths: SegmentPaths) -> _Quality:
     """The entry's shape's quality in its segment under ``method`` (docs/methods.md): ``crossings`` and
     ``stroke_crossings`` (:func:`~tweenrender.core.tangles.contact_times`, over every contour drawn
     through the segment, growing and shrinking ones too), and the areas ``stray_max`` is measured on."""
     key = (id(entry.shape), entry.index, method)
     if key not in done:
         segment = entry.segment
-        frames = pair_paths(segment, SWEEP, method)
+        frames = paths(segment, SWEEP, method)
         # every contour drawn through the segment: those growing from (shrinking to) a point too, whose
         # key there is that point
         drawn_through = [k for k, p in enumerate(segment.pairs) if not p.fades]
@@ -145,14 +147,12 @@ def _pops(scene: Scene, tracks: Sequence[Track], view: tuple[float, float, float
     return pops(change)
 
 
-def _as_drawn(entry: Entry, method: str) -> Callable[[Any], Any] | None:
-    """The contour's inbetweens as drawn, when its shape has other contours moving with it or its segment is
-    steered (a turn, arcs)."""
+def _as_drawn(entry: Entry, method: str, paths: SegmentPaths) -> Callable[[Any], Any]:
+    """The contour's inbetweens as drawn: the segment's paths, shared with its other contours and its quality
+    (a lone outline's, unsteered, are the method's own paths, the very same call)."""
     segment = entry.segment
-    if entry.contour is None and not (segment.spin or segment.arcs):
-        return None  # the method's own paths, as they are drawn
     index = entry.contour or 0
-    return lambda t: pair_paths(segment, t, method)[index]
+    return lambda t: paths(segment, t, method)[index]
 
 
 def stats_text(stats: dict[str, Any]) -> str:

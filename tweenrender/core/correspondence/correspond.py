@@ -35,11 +35,13 @@ Searches: ``distance`` uses Maes' divide and conquer over the start, exact in
 O(mn log n); ``sg`` a dynamic program over (node, entering step) for a start and
 closing step, inside a branch and bound over spans of starts (``_sg_search``):
 exact, the path of solving every start, in about n² log n time on drawn outlines
-(O(m n²) at worst) and O(mn) memory (docs/correspondence.md).
+(O(m n²) at worst) and O(mn) memory (docs/correspondence.md): ``SG_BYTES_PER_NODE`` a node of the
+m × n grid, refused before anything is allocated when that passes ``Matching.max_memory``.
 """
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass, replace
 from types import ModuleType
 
@@ -53,13 +55,51 @@ from ..geometry import centroid, signed_area
 
 __all__ = [
     "Correspondence", "work_matrix", "correspond", "naive_correspond", "path_work",
-    "is_cyclic_monotone", "correspond_open", "is_open_monotone",
+    "is_cyclic_monotone", "correspond_open", "is_open_monotone", "SG_BYTES_PER_NODE", "sg_memory",
+    "check_sg_memory", "SearchTooLarge", "forget_correspondences",
 ]
 
 Pairs = NDArray[np.intp]
 """A correspondence path: ``(L, 2)`` indices ``(i, j)`` into a and b, in path order."""
 
 _DEFAULT = Matching()
+
+SG_BYTES_PER_NODE = 120
+"""What the ``sg`` search holds for each node (i, j) of the m × n grid: its cost tables (stretch, 3
+float64, and bend, 3 × 3 float64: 96 bytes) and the branch and bound's least energies and steps over
+the doubled grid (2 × (8 + 3) bytes), rounded up for the rows and scratch arrays besides (measured
+with tracemalloc: 119.2–119.7 bytes a node). The every-start and hinted searches hold less (96 + 3)."""
+
+
+def sg_memory(m: int, n: int) -> int:
+    """Bytes the ``sg`` search of keys of ``m`` and ``n`` vertices holds at its peak (an upper bound to
+    within a few rows: what it allocates besides grows as m + n)."""
+    return SG_BYTES_PER_NODE * (m + 1) * n
+
+
+class SearchTooLarge(GeometryError):
+    """A correspondence search refused for the memory it would take: the keys or settings are at fault
+    (exit code 2), not the drawing of a frame that asked for it."""
+
+
+def check_sg_memory(m: int, n: int, matching: Matching) -> None:
+    """Refuse, before anything is allocated, an ``sg`` search whose tables would pass ``matching.max_memory``
+    (:class:`SearchTooLarge`)."""
+    need = sg_memory(m, n)
+    if need > matching.max_memory:
+        raise SearchTooLarge(
+            f"the 'sg' correspondence of {m} × {n} vertices needs about {_bytes(need)} for its tables "
+            f"({SG_BYTES_PER_NODE} bytes a vertex pair), more than the memory limit of "
+            f"{_bytes(matching.max_memory)}; use the 'distance' cost (--cost distance), which needs a few "
+            f"MiB, or a higher limit (--max-memory)")
+
+
+def _bytes(count: int) -> str:
+    """``count`` bytes in binary units: ``2.3 GiB``, ``512 MiB``, ``100 KiB``, ``12 B``."""
+    for unit, size in (("TiB", 1 << 40), ("GiB", 1 << 30), ("MiB", 1 << 20), ("KiB", 1 << 10)):
+        if count >= size:
+            return f"{count / size:.3g} {unit}"
+    return f"{count} B"
 
 
 def _kernels() -> ModuleType:
@@ -194,7 +234,33 @@ def is_open_monotone(pairs: ArrayLike, m: int, n: int, reversed: bool = False) -
 
 def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> Correspondence:
     _check_matching(matching)
-    a, b = _aligned(_as_polygon(a, "a"), _as_polygon(b, "b"), matching.align)
+    a, b = _as_polygon(a, "a"), _as_polygon(b, "b")
+    key = b"|".join((repr((matching, exhaustive, a.shape, b.shape)).encode(), a.tobytes(), b.tobytes()))
+    found = _found.get(key)
+    if found is None:
+        found = _search(a, b, matching, exhaustive)
+        _found[key] = found
+        while len(_found) > _REMEMBERED:
+            _found.popitem(last=False)
+    else:
+        _found.move_to_end(key)
+    return found
+
+
+_REMEMBERED = 256
+"""Correspondences kept, by their keys and matching: a report, its renders, its sheet and its measures all
+match the same keys again (a :class:`Correspondence` is read-only, so it is shared)."""
+_found: OrderedDict[bytes, Correspondence] = OrderedDict()
+
+
+def forget_correspondences() -> None:
+    """Forget every correspondence kept, so the next of each is searched again (to time the searches)."""
+    _found.clear()
+
+
+def _search(a: NDArray[np.float64], b: NDArray[np.float64], matching: Matching, exhaustive: bool) -> Correspondence:
+    """:func:`_correspond` of checked polygons, searched."""
+    a, b = _aligned(a, b, matching.align)
     backwards = _winds_opposite(a, b)
     # b as walked: position k holds vertex walk[k], so a forward step in k is a
     # step of -1 in b when b winds the other way; walk[0] = 0 either way.
@@ -210,6 +276,7 @@ def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> C
         search = kernels.every_start_search if exhaustive else kernels.maes_search
         _, nodes = search(kernels.distance_matrix(a, walked_b))
     else:
+        check_sg_memory(len(a), len(b), matching)
         m = matching
         tables = kernels.sg_tables(a, walked_b, m.ks, m.cs, m.es, m.kb, m.eb, m.mb, m.pb)
         if exhaustive:
@@ -272,3 +339,6 @@ def _check_matching(matching: Matching) -> None:
         raise GeometryError(f"matching cost should be one of {', '.join(COSTS)}, not {matching.cost!r}")
     if matching.align not in ALIGNS:
         raise GeometryError(f"matching align should be one of {', '.join(ALIGNS)}, not {matching.align!r}")
+    limit = matching.max_memory
+    if isinstance(limit, bool) or not isinstance(limit, (int, np.integer)) or limit <= 0:
+        raise GeometryError(f"matching max_memory should be a positive number of bytes, not {limit!r}")

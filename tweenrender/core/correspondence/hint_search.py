@@ -26,7 +26,7 @@ from dataclasses import replace
 
 from ...model import Matching, Points
 from .correspond import (Correspondence, _aligned, _aligned_work, _as_polygon, _check_matching, _kernels,
-                         _winds_opposite)
+                         _winds_opposite, check_sg_memory)
 
 __all__ = ["correspond_hinted", "correspond_hinted_open"]
 
@@ -126,6 +126,7 @@ def _sg_pieces(a: NDArray[np.float64], walked_b: NDArray[np.float64],
     from ._hint_kernel import sg_piece, trace_piece
 
     mt = matching
+    check_sg_memory(len(a), len(walked_b), mt)
     stretch, bend = _kernels().sg_tables(a, walked_b, mt.ks, mt.cs, mt.es, mt.kb, mt.eb, mt.mb, mt.pb)
     grids = [(np.ascontiguousarray(rows, np.int64), np.ascontiguousarray(cols, np.int64)) for rows, cols in pieces]
     tables = []

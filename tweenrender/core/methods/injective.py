@@ -56,6 +56,9 @@ _CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evalu
 _FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
 _RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off by this share of its size
 _cache: OrderedDict[bytes, tuple[Callable[[Array], list[Array]], str | None]] = OrderedDict()
+_EVALUATED = 32  # evaluations kept, by keys and t: a report asks for a method's sweep, and auto for the same
+_EVALUATED_BYTES = 32 << 20  # and at most this many bytes of them (a render's blocks of frames pass through)
+_evaluated: OrderedDict[bytes, list[Array]] = OrderedDict()
 
 
 def mean_value_weights(points: Array, triangles: NDArray[np.intp]) -> tuple[NDArray[np.intp], NDArray[np.intp], Array]:
@@ -264,15 +267,25 @@ def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Seque
     """Injective inbetweens of a shape's corresponding contours (``k0s[i]``, ``k1s[i]`` both
     ``(L_i, 2)``; ``closed[i]``), all in one mesh, at ``t (T,)``: one ``(T, L_i, 2)`` per contour.
 
-    The mesh of a set of keys is cached, so successive blocks of frames of one segment pay it once.
+    The mesh of a set of keys is cached, so successive blocks of frames of one segment pay it once; the
+    inbetweens at a set of ``t`` are remembered too (``auto`` choosing injective paths, and a report's
+    measures, ask for the same ones again).
     """
     paths, _ = _paths_of(k0s, k1s, closed)
     t = as_times(t)
-    found = paths(t)
-    for frames, a, b in zip(found, k0s, k1s):
-        frames[t == 0.0] = a
-        frames[t == 1.0] = b
-    return found
+    key = _key(k0s, k1s, closed) + b"|" + np.ascontiguousarray(t, dtype=np.float64).tobytes()
+    found = _evaluated.get(key)
+    if found is None:
+        found = paths(t)
+        for frames, a, b in zip(found, k0s, k1s):
+            frames[t == 0.0] = a
+            frames[t == 1.0] = b
+        _evaluated[key] = found
+        while len(_evaluated) > _EVALUATED or sum(f.nbytes for v in _evaluated.values() for f in v) > _EVALUATED_BYTES:
+            _evaluated.popitem(last=False)
+    else:
+        _evaluated.move_to_end(key)
+    return [frames.copy() for frames in found]  # the caller's own: they may be written
 
 
 def injective_fallback(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> str | None:
@@ -281,12 +294,20 @@ def injective_fallback(k0s: Sequence[Array], k1s: Sequence[Array], closed: Seque
     return _paths_of(k0s, k1s, closed)[1]
 
 
+def _key(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> bytes:
+    """What a shape's injective paths depend on: its contours' keys and which are closed."""
+    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
+    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
+    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
+    return k0.tobytes() + b"|" + k1.tobytes() + b"|" + repr((cuts, list(closed))).encode()
+
+
 def _paths_of(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
               ) -> tuple[Callable[[Array], list[Array]], str | None]:
     k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
     k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
     cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
-    key = k0.tobytes() + b"|" + k1.tobytes() + b"|" + repr((cuts, list(closed))).encode()
+    key = _key(k0s, k1s, closed)
     found = _cache.get(key)
     if found is None:
         found = _build(k0, k1, cuts, [bool(c) for c in closed])

@@ -27,12 +27,13 @@ x-ranges (sweep and prune), so a frame costs far less than all pairs.
 from __future__ import annotations
 
 import hashlib
-from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
 from numpy.typing import NDArray
+
+from .memo import Remembered
 
 __all__ = ["SWEEP", "parents", "tangles", "tangled_times", "proper_crossings", "crossing_pairs", "linear_tangles",
            "point_states", "Apart", "apart_in_keys", "contact_times"]
@@ -43,8 +44,8 @@ SWEEP = np.linspace(0.0, 1.0, 101)
 """The swept t of a segment at which crossings are looked for (``stats``' ``crossings``, ``auto``)."""
 
 _CACHED = 1024  # shapes whose straight paths' crossings are kept
-_linear_cache: OrderedDict[bytes, list[float]] = OrderedDict()
-_apart_cache: OrderedDict[bytes, Apart] = OrderedDict()  # keys' contours apart in both, by their digest
+_linear_cache: Remembered[list[float]] = Remembered(_CACHED)
+_apart_cache: Remembered[Apart] = Remembered(_CACHED)  # keys' contours apart in both, by their digest
 
 _BOUND = 4.0 * np.finfo(np.float64).eps  # relative rounding bound of a 2x2 orientation determinant
 
@@ -244,16 +245,9 @@ def linear_tangles(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[
     a = [np.asarray(k, dtype=np.float64) for k in k0s]
     b = [np.asarray(k, dtype=np.float64) for k in k1s]
     key = b"|".join(x.tobytes() + b"/" + y.tobytes() for x, y in zip(a, b)) + repr(list(closed)).encode()
-    found = _linear_cache.get(key)
-    if found is None:
-        t = SWEEP[:, None, None]
-        found = tangled_times([(1.0 - t) * x + t * y for x, y in zip(a, b)], closed, SWEEP)
-        _linear_cache[key] = found
-        while len(_linear_cache) > _CACHED:
-            _linear_cache.popitem(last=False)
-    else:
-        _linear_cache.move_to_end(key)
-    return list(found)
+    t = SWEEP[:, None, None]
+    return list(_linear_cache.get(key, lambda: tangled_times([(1.0 - t) * x + t * y for x, y in zip(a, b)], closed,
+                                                             SWEEP)))
 
 
 def point_states(points: Array, polygon: Array) -> NDArray[np.int8]:
@@ -333,15 +327,7 @@ def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[b
         digest.update(repr(k.shape).encode())
         digest.update(np.ascontiguousarray(k).tobytes())
     key = digest.digest()
-    found = _apart_cache.get(key)
-    if found is None:
-        found = _apart_in_keys(k0s, k1s, closed)
-        _apart_cache[key] = found
-        while len(_apart_cache) > _CACHED:
-            _apart_cache.popitem(last=False)
-    else:
-        _apart_cache.move_to_end(key)
-    return found
+    return _apart_cache.get(key, lambda: _apart_in_keys(k0s, k1s, closed))
 
 
 def _apart_in_keys(k0s: list[Array], k1s: list[Array], closed: Sequence[bool]) -> Apart:

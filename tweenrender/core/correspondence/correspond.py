@@ -41,7 +41,6 @@ m × n grid, refused before anything is allocated when that passes ``Matching.ma
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from dataclasses import dataclass, replace
 from types import ModuleType
 
@@ -52,6 +51,7 @@ from ...errors import GeometryError
 from ...model import ALIGNS, COSTS, Matching, Points
 from . import _small_dtw
 from ..geometry import centroid, signed_area
+from ..memo import Remembered
 
 __all__ = [
     "Correspondence", "work_matrix", "correspond", "naive_correspond", "path_work",
@@ -236,21 +236,13 @@ def _correspond(a: Points, b: Points, matching: Matching, exhaustive: bool) -> C
     _check_matching(matching)
     a, b = _as_polygon(a, "a"), _as_polygon(b, "b")
     key = b"|".join((repr((matching, exhaustive, a.shape, b.shape)).encode(), a.tobytes(), b.tobytes()))
-    found = _found.get(key)
-    if found is None:
-        found = _search(a, b, matching, exhaustive)
-        _found[key] = found
-        while len(_found) > _REMEMBERED:
-            _found.popitem(last=False)
-    else:
-        _found.move_to_end(key)
-    return found
+    return _found.get(key, lambda: _search(a, b, matching, exhaustive))
 
 
 _REMEMBERED = 256
 """Correspondences kept, by their keys and matching: a report, its renders, its sheet and its measures all
 match the same keys again (a :class:`Correspondence` is read-only, so it is shared)."""
-_found: OrderedDict[bytes, Correspondence] = OrderedDict()
+_found: Remembered[Correspondence] = Remembered(_REMEMBERED)
 
 
 def forget_correspondences() -> None:

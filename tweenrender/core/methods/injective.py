@@ -36,7 +36,6 @@ all at one point. An open stroke's repeated vertices are spread along its next e
 from __future__ import annotations
 
 import math
-from collections import OrderedDict
 from typing import Callable, Sequence
 
 import numpy as np
@@ -47,6 +46,7 @@ from .bounded_distortion import ShapeKeepingSolve, material_triangles
 from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
 from ..geometry import best_fit_rotation, centroid, rotate
 from .paths import as_times, rigid
+from ..memo import Remembered
 
 __all__ = ["injective", "injective_contours", "injective_fallback", "injective_mesh", "mean_value_weights"]
 
@@ -55,10 +55,10 @@ Array = NDArray[np.float64]
 _CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
 _FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
 _RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off by this share of its size
-_cache: OrderedDict[bytes, tuple[Callable[[Array], list[Array]], str | None]] = OrderedDict()
+_cache: Remembered[tuple[Callable[[Array], list[Array]], str | None]] = Remembered(_CACHE)
 _EVALUATED = 32  # evaluations kept, by keys and t: a report asks for a method's sweep, and auto for the same
 _EVALUATED_BYTES = 32 << 20  # and at most this many bytes of them (a render's blocks of frames pass through)
-_evaluated: OrderedDict[bytes, list[Array]] = OrderedDict()
+_evaluated: Remembered[list[Array]] = Remembered(_EVALUATED, lambda v: sum(f.nbytes for f in v), _EVALUATED_BYTES)
 
 
 def mean_value_weights(points: Array, triangles: NDArray[np.intp]) -> tuple[NDArray[np.intp], NDArray[np.intp], Array]:
@@ -274,18 +274,15 @@ def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Seque
     paths, _ = _paths_of(k0s, k1s, closed)
     t = as_times(t)
     key = _key(k0s, k1s, closed) + b"|" + np.ascontiguousarray(t, dtype=np.float64).tobytes()
-    found = _evaluated.get(key)
-    if found is None:
+
+    def evaluated() -> list[Array]:
         found = paths(t)
         for frames, a, b in zip(found, k0s, k1s):
             frames[t == 0.0] = a
             frames[t == 1.0] = b
-        _evaluated[key] = found
-        while len(_evaluated) > _EVALUATED or sum(f.nbytes for v in _evaluated.values() for f in v) > _EVALUATED_BYTES:
-            _evaluated.popitem(last=False)
-    else:
-        _evaluated.move_to_end(key)
-    return [frames.copy() for frames in found]  # the caller's own: they may be written
+        return found
+
+    return [frames.copy() for frames in _evaluated.get(key, evaluated)]  # the caller's own: they may be written
 
 
 def injective_fallback(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> str | None:
@@ -308,15 +305,7 @@ def _paths_of(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
     k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
     cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
     key = _key(k0s, k1s, closed)
-    found = _cache.get(key)
-    if found is None:
-        found = _build(k0, k1, cuts, [bool(c) for c in closed])
-        _cache[key] = found
-        while len(_cache) > _CACHE:
-            _cache.popitem(last=False)
-    else:
-        _cache.move_to_end(key)
-    return found
+    return _cache.get(key, lambda: _build(k0, k1, cuts, [bool(c) for c in closed]))
 
 
 def injective(k0: Array, k1: Array, t: ArrayLike, joints: Sequence[tuple[int, int]] = ()) -> Array:

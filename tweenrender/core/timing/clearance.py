@@ -18,7 +18,6 @@ placement makes are counted (:data:`BUDGET`), so a drawing of many pieces costs 
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
@@ -27,6 +26,7 @@ from numpy.typing import NDArray
 
 from ..contours import centre_of_area, inside
 from ..geometry import signed_area
+from ..memo import Remembered
 from ..tangles import _relation, proper_crossings
 
 __all__ = ["GRID", "LATEST", "Growth", "place", "deepest_point", "farthest_point", "growth_scale"]
@@ -269,18 +269,9 @@ def _earliest(point: Array, members: list[Array], member_closed: list[bool], aro
     return None
 
 
-_cache: OrderedDict[bytes, list[Growth]] = OrderedDict()
-_CACHED = 256
+_placed: Remembered[list[Growth]] = Remembered(256)
 
 
 def cached(key: bytes, compute: Callable[[], list[Growth]]) -> list[Growth]:
     """``compute()`` for ``key`` (a digest of what it depends on), remembered for the last few asked."""
-    found = _cache.get(key)
-    if found is not None:
-        _cache.move_to_end(key)
-        return found
-    value = compute()
-    _cache[key] = value
-    while len(_cache) > _CACHED:
-        _cache.popitem(last=False)
-    return value
+    return _placed.get(key, compute)

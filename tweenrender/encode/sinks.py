@@ -96,7 +96,9 @@ def ffmpeg_exe() -> str:
                 _FOUND.append(imageio_ffmpeg.get_ffmpeg_exe())
             except RuntimeError:
                 _why_ffmpeg_cannot_start()
-                raise
+                # it starts now: the search failed while file descriptors or memory were short for a moment
+                # (another thread held them), so search again, once
+                _FOUND.append(imageio_ffmpeg.get_ffmpeg_exe())
         return _FOUND[0]
 
 

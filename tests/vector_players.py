@@ -213,7 +213,6 @@ def lottie_web_frames(path: Path, frames: list[int], size: tuple[int, int],
     """lottie-web's pictures of ``frames`` (its SVG renderer in headless Chromium, ``goToAndStop`` at each frame,
     over the opaque ``background``): RGB ``(H, W, 3)`` each."""
     from tests.browser import _Browser, chromium
-    from tests.helpers import read_png
 
     executable = chromium()
     if executable is None:
@@ -239,17 +238,24 @@ def lottie_web_frames(path: Path, frames: list[int], size: tuple[int, int],
             for frame in frames:
                 browser.send("Runtime.evaluate", {"expression": f"window.animation.goToAndStop({frame}, true)",
                                                   "returnByValue": True}, session=session)
-                browser.send("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
-                                                                "requestAnimationFrame(r)))",
-                                                  "awaitPromise": True}, session=session)
-                shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
-                with tempfile.NamedTemporaryFile(suffix=".png") as handle:
-                    handle.write(base64.b64decode(shot["data"]))
-                    handle.flush()
-                    out.append(read_png(Path(handle.name))[..., :3])
+                out.append(_painted_shot(browser, session))
         finally:
             browser.close()
     return out
+
+
+def _painted_shot(browser, session) -> np.ndarray:  # type: ignore[no-untyped-def]
+    """The page once two animation frames have been painted: ``(H, W, 3)`` uint8."""
+    from tests.helpers import read_png
+
+    browser.send("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
+                                                    "requestAnimationFrame(r)))",
+                                      "awaitPromise": True}, session=session)
+    shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
+    with tempfile.NamedTemporaryFile(suffix=".png") as handle:
+        handle.write(base64.b64decode(shot["data"]))
+        handle.flush()
+        return read_png(Path(handle.name))[..., :3]
 
 
 def skottie_frames(path: Path, frames: list[int], size: tuple[int, int]) -> list[np.ndarray]:
@@ -325,7 +331,6 @@ def chromium_svg_frames(files: list[tuple[Path, list[float], tuple[int, int]]]) 
     """Headless Chromium's pictures of each animated SVG ``(path, times, (width, height))``, paused at
     each of its ``times`` seconds: RGB ``(H, W, 3)`` each, one browser for all."""
     from tests.browser import _Browser, chromium
-    from tests.helpers import read_png
 
     executable = chromium()
     if executable is None:
@@ -349,14 +354,7 @@ def chromium_svg_frames(files: list[tuple[Path, list[float], tuple[int, int]]]) 
                 for when in times:
                     browser.send("Runtime.evaluate", {"expression": _PAUSE.format(time=repr(float(when))),
                                                       "returnByValue": True}, session=session)
-                    browser.send("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
-                                                                    "requestAnimationFrame(r)))",
-                                                      "awaitPromise": True}, session=session)
-                    shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
-                    with tempfile.NamedTemporaryFile(suffix=".png") as handle:
-                        handle.write(base64.b64decode(shot["data"]))
-                        handle.flush()
-                        shots.append(read_png(Path(handle.name))[..., :3])
+                    shots.append(_painted_shot(browser, session))
                 out.append(shots)
         finally:
             browser.close()

@@ -9,7 +9,8 @@ the mask itself; several masks multiply; weighted alternatives (a mask between k
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 
 import numpy as np
 import skia
@@ -30,21 +31,23 @@ def draw_masked(raster: Raster, viewport: Viewport, blend: MaskBlend, draw: Call
     """Call ``draw`` (which draws an element on ``raster``) with what it draws masked by ``blend``; ``bounds``
     (pixels), when given, holds all that ``draw`` draws, and the layers are kept to it."""
     canvas = raster.canvas
-    canvas.saveLayer(bounds, None)
-    try:
+    with _layer(canvas, bounds, None):
         draw()
-        canvas.saveLayer(bounds, skia.Paint(BlendMode=skia.BlendMode.kDstIn))
-        try:
+        with _layer(canvas, bounds, skia.Paint(BlendMode=skia.BlendMode.kDstIn)):
             for weight, masks, move in blend:
                 if weight <= 0:
                     continue
-                canvas.saveLayer(bounds, skia.Paint(Alphaf=min(1.0, float(weight)), BlendMode=skia.BlendMode.kPlus))
-                try:
+                with _layer(canvas, bounds, skia.Paint(Alphaf=min(1.0, float(weight)), BlendMode=skia.BlendMode.kPlus)):
                     _coverage(raster, viewport, masks, move, bounds)
-                finally:
-                    canvas.restore()
-        finally:
-            canvas.restore()
+
+
+@contextmanager
+def _layer(canvas: skia.Canvas, bounds: skia.Rect | None, paint: skia.Paint | None) -> Iterator[None]:
+    """A layer of ``canvas`` (kept to ``bounds``) drawn into, then blended down by ``paint`` — also when
+    drawing it fails."""
+    canvas.saveLayer(bounds, paint)
+    try:
+        yield
     finally:
         canvas.restore()
 
@@ -58,11 +61,8 @@ def _coverage(raster: Raster, viewport: Viewport, masks: Sequence[Mask], move: N
         return
     _one(raster, viewport, masks[0], move)
     for mask in masks[1:]:
-        canvas.saveLayer(bounds, skia.Paint(BlendMode=skia.BlendMode.kDstIn))
-        try:
+        with _layer(canvas, bounds, skia.Paint(BlendMode=skia.BlendMode.kDstIn)):
             _one(raster, viewport, mask, move)
-        finally:
-            canvas.restore()
 
 
 def _one(raster: Raster, viewport: Viewport, mask: Mask, move: NDArray[np.float64]) -> None:
@@ -77,18 +77,12 @@ def _one(raster: Raster, viewport: Viewport, mask: Mask, move: NDArray[np.float6
                                           0.0, 0.0, 1.0))
         canvas.clipPath(contours_path([viewport.to_pixels(c.points) for c in mask.region], [True] * len(mask.region)),
                         doAntiAlias=True)
-        canvas.saveLayer(None, None if mask.alpha else skia.Paint(ColorFilter=_luminance(mask.linear)))
-        try:
+        with _layer(canvas, None, None if mask.alpha else skia.Paint(ColorFilter=_luminance(mask.linear))):
             for shape in mask.shapes:
                 _shape(raster, viewport, shape)
             if mask.masks:
-                canvas.saveLayer(None, skia.Paint(BlendMode=skia.BlendMode.kDstIn))
-                try:
+                with _layer(canvas, None, skia.Paint(BlendMode=skia.BlendMode.kDstIn)):
                     _coverage(raster, viewport, mask.masks, np.eye(3))
-                finally:
-                    canvas.restore()
-        finally:
-            canvas.restore()
     finally:
         canvas.restore()
 

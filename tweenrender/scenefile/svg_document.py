@@ -237,14 +237,6 @@ def _resolve_fonts(document: Document) -> None:
 # -- CSS ------------------------------------------------------------------------------------------
 
 
-def _iterate(node: Node) -> Iterator[Node]:
-    stack = [node]
-    while stack:
-        current = stack.pop()
-        yield current
-        stack.extend(reversed(current.children))
-
-
 def own_style(node: Node, document: Document) -> dict[str, str]:
     """The node's own properties (``transform`` among them): presentation attributes, then the style
     sheets' rules that match it, then ``style``, then the ``!important`` ones (:func:`.svg_css.cascade`)."""

@@ -150,12 +150,14 @@ def edges_meet(p: np.ndarray, q: np.ndarray) -> bool:
 def test_a_hole_its_partners_shrinking_hole_would_pass_over_grows_once_it_is_clear(tmp_path: Path) -> None:
     """A second hole whose nearest point on the first key's drawing lies on a hole that shrinks over it:
     grown from there over the whole segment the shrinking hole's edge would cut it. It grows instead,
-    its area still linear in t, from a time when it can do so without meeting any other contour."""
+    its area still linear in t, from a time when it can do so without meeting any other contour. (The
+    element is stroked: a filled one's hole is joined to its outline instead, the next test.)"""
     outer = [[-2.0, -2.0], [14.0, -2.0], [14.0, 8.0], [-2.0, 8.0]]
     hole = [[0.0, 0.0], [0.0, 4.0], [7.5, 4.0], [7.5, 0.0]]  # clockwise
     small = [[0.0, 0.0], [0.0, 4.0], [4.0, 4.0], [4.0, 0.0]]
     ell_hole = np.array([list(p) for p in ELL[::-1]])
-    scene = shape_scene(tmp_path, [outer, hole], [outer, small, ell_hole.tolist()])
+    scene = shape_scene(tmp_path, [outer, hole], [outer, small, ell_hole.tolist()],
+                        extra='stroke = "#000000"\nstroke_width = 0.1\n')
     key = area(ell_hole)
     times = np.linspace(0.0, 1.0, 201)
     moving = [(1 - t) * np.array(hole) + t * np.array(small) for t in times]  # the straight paths of linear
@@ -318,3 +320,31 @@ def test_a_stroke_whose_ends_meet_morphs_into_a_closed_outline(tmp_path: Path) -
         shown = [c for c in at.contours if np.ptp(c, axis=0).max() > 0]
         assert len(shown) == 1, t
         assert 0.9 * min(areas) <= area(shown[0]) <= 1.1 * max(areas), t
+
+
+def test_a_filled_elements_hole_without_room_to_grow_opens_from_its_outline(tmp_path: Path) -> None:
+    """The same keys filled and not stroked: the hole that had no room until late is joined to the outer
+    by a slit (maths §5.17) and opens with it over the whole segment. Checked with shapely: no in-between's
+    contour crosses itself or the other, and the drawn area (shoelace, here) changes evenly."""
+    import shapely
+
+    outer = [[-2.0, -2.0], [14.0, -2.0], [14.0, 8.0], [-2.0, 8.0]]
+    hole = [[0.0, 0.0], [0.0, 4.0], [7.5, 4.0], [7.5, 0.0]]
+    small = [[0.0, 0.0], [0.0, 4.0], [4.0, 4.0], [4.0, 0.0]]
+    ell_hole = [list(p) for p in ELL[::-1]]
+    scene = shape_scene(tmp_path, [outer, hole], [outer, small, ell_hole])
+    areas = []
+    for t in np.linspace(0.0, 1.0, 25):
+        (at,) = drawn(scene, float(t))
+        if 0.0 < t < 1.0:
+            assert len(at.contours) == 2  # the outer, with the new hole joined to it; the moving hole
+            # the joined contour may touch itself along the slit, never cross: what it covers (shapely's
+            # repair) is what its shoelace says; and it never meets the moving hole
+            polygons = [shapely.Polygon(c) for c in at.contours]
+            for c, polygon in zip(at.contours, polygons):
+                assert shapely.make_valid(polygon).area == pytest.approx(area(np.asarray(c)), rel=1e-9), t
+            assert not polygons[0].boundary.intersects(polygons[1].boundary), t
+        areas.append(sum(area(np.asarray(c)) * (1 if k == 0 else -1) for k, c in enumerate(at.contours[:2])))
+    steps = np.abs(np.diff(areas))
+    assert steps.max() <= 3.0 * np.median(steps)
+    assert areas[-1] == pytest.approx(16 * 10 - 16 - area(np.array(ELL)))

@@ -94,6 +94,10 @@ def ink_steps(first: str, second: str) -> np.ndarray:
     ("mdi/alpha-b.svg", "lucide/smile.svg"),  # the eyes appear, b's holes go: last step 4.0 ×
     ("octicons/star-24.svg", "feather/star.svg"),  # the star's hole goes: first step 4.7 ×
     ("octicons/sun-24.svg", "lucide/apple.svg"),  # the rays go: first step 3.9 ×
+    # a hole with no room to grow until the face's outline is round grew in its last fifth; now
+    # joined by a slit to the outline, it opens with it
+    ("simple-icons/github.svg", "bootstrap/emoji-smile.svg"),
+    ("simple-icons/github.svg", "feather/heart.svg"),
 ])
 def test_things_without_a_partner_come_and_go_in_even_steps(first: str, second: str) -> None:
     """Both the drawn area (formulas above: a growing shape and a shrinking one cancel in it) and the

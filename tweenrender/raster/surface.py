@@ -13,6 +13,7 @@ from ..model import Color
 from .clip import clip_to_box
 from .fonts import drawable, font
 from .round_stroke import MIN_WIDTH, draws_on, stroke_contours
+from .slits import unslit
 
 __all__ = ["Raster", "paint_color", "polygon_path", "contours_path", "clipped_contours", "StrokeStyle",
            "fill_and_stroke", "hides_fill_edge"]
@@ -242,10 +243,15 @@ class Raster:
         """Fill and/or stroke ``contours`` (each ``(N_i, 2)`` pixels, finite) as one path under ``fill_rule``;
         as :meth:`draw_path`, with the stroke drawn by the compiled kernel where :attr:`round_strokes` allows
         and it draws what skia would (a round join, round caps or no open end, at least a pixel wide, no
-        layer between; see :func:`.round_stroke.draws_on`)."""
-        contours, closed = clipped_contours(contours, closed)
+        layer between; see :func:`.round_stroke.draws_on`). A fill alone is drawn without slits
+        (:func:`.slits.unslit`)."""
         fills = fill is not None and fill[3] > 0
         strokes = stroke is not None and stroke[3] > 0 and stroke_width > 0
+        if fills and not strokes:
+            loops = [unslit(points) if shut else [points] for points, shut in zip(contours, closed)]
+            closed = [shut for parts, shut in zip(loops, closed) for _ in parts]
+            contours = [part for parts in loops for part in parts]
+        contours, closed = clipped_contours(contours, closed)
         placed = None
         if (self.round_strokes and strokes and opacity > 0 and not (opacity < 1.0 and fills)
                 and style.join == "round" and (style.cap == "round" or all(closed))):

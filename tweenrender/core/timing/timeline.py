@@ -29,10 +29,12 @@ from numpy.typing import NDArray
 
 from ...errors import GeometryError
 from ...model import Contour, Key, Matching, Paint, Points, Scene, Shape
-from ..contours import anchor, keep_nesting, pair_contours
+from ..contours import anchor, keep_nesting, pair_contours, roles
+from ..tangles import contact_times
 from ..correspondence.correspond import Correspondence, correspond, correspond_open
 from ..balance import spread
 from .appear import scaled, width_share
+from .bridges import join_alone
 from .clearance import GRID, Growth, cached, growth_scale, place
 from .easing import LINEAR, Easing, parse_easing
 from ..geometry import best_fit_rotation, signed_area
@@ -550,11 +552,12 @@ def tracks_of(scene: Scene, matching: Matching | None = None) -> tuple[Track, ..
             unmade = replace(shape, keys=tuple(replace(key, contours=()) if key.breakdown is not None else key
                                                for key in shape.keys))
             shape = make_breakdowns(unmade, matching, scene.method_of(shape), **rules)
-        tracks.append(build_track(shape, matching, **rules))
+        tracks.append(build_track(shape, matching, method=scene.method_of(shape), **rules))
     return tuple(tracks)
 
 
-def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", balance: str = "copies") -> Track:
+def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", balance: str = "copies",
+                method: str | None = None) -> Track:
     """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through.
 
     ``unmatched`` is the rule for contours without a partner (``shape.unmatched`` overrides it);
@@ -563,6 +566,8 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
     :func:`make_breakdowns`) split the segment of the keys around them into halves that share its
     pairs, correspondence and hints (maths §5.15); the halves share its total turn as the breakdowns
     share its way; the first key's arcs are in the breakdowns (made with them), not bent in again.
+    Given the ``method`` it is drawn with, a contour without a partner that has no room to grow over
+    the whole segment (:func:`growths_of`) is joined to a neighbour instead (:mod:`.bridges`).
     """
     keys = shape.keys
     if shape.equal_counts is not None and shape.equal_counts != matching.equal_counts:
@@ -576,6 +581,20 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
         first, last = keys[k], keys[end]
         links = tuple(segment_links(first.hints, last.hints))
         pairs = _pairs(first, last, shape.fill_rule, matching, rule, balance, links, (shape.cap, shape.join))
+        crowded = None
+        if method is not None and not joints and not easing_of(first).overshoots:  # a slit would turn inside out
+            crowded = _crowded(pairs, first, last, method, shape.stagger)
+        if crowded:
+            # joined where that tangles no more than growing late and the area changes no less evenly:
+            # all of them, or only the pieces, or only the holes
+            best = _join_measures(pairs, first, last, method, shape.stagger)
+            for part in _join_choices(crowded, first, last):
+                joined = _pairs(first, last, shape.fill_rule, matching, rule, balance, links,
+                                (shape.cap, shape.join), part)
+                found = _join_measures(joined, first, last, method, shape.stagger)
+                if found[0] <= best[0] and found[1] <= max(best[1], EVEN):
+                    pairs, best = joined, found
+                    break
         anchors = _anchors(pairs, links)
         balanced_joints: tuple[tuple[int, int], ...] = ()
         if joints and len(pairs) == 1:
@@ -615,6 +634,69 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
                                     anchors=anchors, arcs=() if q == k < end - 1 else before.arcs))
         k = end
     return Track(shape.name, tuple(segments), _still(keys[0]))
+
+
+EVEN = 3.0
+"""A segment's area changes evenly where no step is over this many times the median (as pops are told)."""
+JOIN_CHECKS = np.linspace(0.0, 1.0, 25)
+"""The parameters at which a segment's in-betweens with contours joined (:mod:`.bridges`) are measured
+against those without."""
+
+
+def _probe(pairs: tuple[Pair, ...], first: Key, last: Key, stagger: float) -> Segment:
+    """A segment of ``pairs`` from ``first`` to ``last`` for looking at how its contours move."""
+    return Segment(first.time, last.time, first.ease, pairs, (), (first.paint, last.paint), (True, True),
+                   stagger=stagger)
+
+
+def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float
+                   ) -> tuple[int, float]:
+    """How the in-betweens of ``pairs`` under ``method`` fare at :data:`JOIN_CHECKS`: at how many of the
+    inner ones their moving contours tangle (:func:`.tangles.contact_times`, crossings and stroke
+    crossings; the growing ones keep clear of them, :mod:`.clearance`), and the largest change of their
+    closed contours' signed area from one check to the next over the median change (the pops rule)."""
+    frames = method_paths(_probe(pairs, first, last, stagger), JOIN_CHECKS, method)
+    moving = [i for i, p in enumerate(pairs) if p.moving]
+    inner = JOIN_CHECKS[1:-1]
+    crossed, stroked = contact_times([frames[i][1:-1] for i in moving], [pairs[i].closed for i in moving], inner,
+                                     [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving])
+    area = sum((_signed_areas(frames[i]) for i, p in enumerate(pairs) if p.closed), np.zeros(len(JOIN_CHECKS)))
+    steps = np.abs(np.diff(area))
+    middle = float(np.median(steps))
+    uneven = float(steps.max()) / middle if middle > 0 else (0.0 if steps.max() == 0 else np.inf)
+    return len(set(crossed) | set(stroked)), uneven
+
+
+def _signed_areas(frames: Array) -> Array:
+    """Shoelace areas of ``frames (T, L, 2)``: ``(T,)``."""
+    x, y = frames[..., 0], frames[..., 1]
+    return 0.5 * np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1)
+
+
+def _join_choices(crowded: frozenset[tuple[int, int]], first: Key, last: Key) -> list[frozenset[tuple[int, int]]]:
+    """The sets of ``crowded`` contours to try joining, best first: all, the pieces only, the holes only."""
+    role = {(0, i): r for i, r in enumerate(roles([c.points for c in first.contours], [c.closed for c in first.contours]))}
+    role.update({(1, j): r for j, r in enumerate(roles([c.points for c in last.contours],
+                                                       [c.closed for c in last.contours]))})
+    out = [crowded]
+    for kind in ("outer", "hole"):
+        part = frozenset(c for c in crowded if role.get(c) == kind)
+        if part and part not in out:
+            out.append(part)
+    return out
+
+
+def _crowded(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float
+             ) -> frozenset[tuple[int, int]]:
+    """The contours without a partner that :func:`growths_of` finds no room to grow (shrink) over the
+    whole segment from ``first`` to ``last`` under ``method``, as (key 0 or 1, index)."""
+    if all(p.moving or p.fades for p in pairs):
+        return frozenset()
+    out = set()
+    for pair, growth in zip(pairs, growths_of(_probe(pairs, first, last, stagger), method)):
+        if growth is not None and (growth.start > 0.0 or growth.stop < 1.0):
+            out.add((1, pair.source[1]) if growth.grows else (0, pair.source[0]))
+    return frozenset(out)  # type: ignore[arg-type]
 
 
 def _windings_at(key: Key, own: tuple[bool, ...], run: tuple[tuple[bool, ...], tuple[bool, ...]]
@@ -676,7 +758,7 @@ def make_breakdowns(shape: Shape, matching: Matching, method: str, *, unmatched:
             continue
         end = next(e for e in range(k + 1, len(keys)) if keys[e].breakdown is None)
         partial = replace(shape, keys=tuple(keys[:k]) + tuple(keys[end:]))
-        segment = build_track(partial, matching, unmatched=unmatched, balance=balance).segments[k - 1]
+        segment = build_track(partial, matching, unmatched=unmatched, balance=balance, method=method).segments[k - 1]
         f = np.array([float(key.breakdown)])
         frames = pair_paths(segment, f, method)
         paint = blend_paints(*segment.paints, np.clip(f, 0.0, 1.0))[0]
@@ -688,10 +770,11 @@ def make_breakdowns(shape: Shape, matching: Matching, method: str, *, unmatched:
 
 
 def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str,
-           balance: str = "copies", links: tuple[Link, ...] = (), caps: tuple[str, str] = ("round", "round")
-           ) -> tuple[Pair, ...]:
+           balance: str = "copies", links: tuple[Link, ...] = (), caps: tuple[str, str] = ("round", "round"),
+           join: frozenset[tuple[int, int]] = frozenset()) -> tuple[Pair, ...]:
     """The contour pairs of the segment from ``before`` to ``after`` (``caps``: the shape's cap and join,
-    where its keys do not set their own)."""
+    where its keys do not set their own; ``join``: the contours without a partner, as (key 0 or 1,
+    index), to join to a neighbour where they can be, :mod:`.bridges`)."""
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
         # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order;
@@ -713,6 +796,9 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
             partners, a, b = closing, shut_a, shut_b
     partners = keep_nesting(partners, [c.points for c in a], [c.closed for c in a], [c.points for c in b],
                             [c.closed for c in b], forced)
+    if join and unmatched != "fade" and not links and not _stroked(before) and not _stroked(after):
+        # a piece or hole without room to grow joins a neighbour by a slit and morphs with it (§5.17)
+        a, b, partners = _joined(a, b, partners, before.fill_rule or fill_rule, after.fill_rule or fill_rule, join)
     pairs = []
     for i, j in partners:
         if i is not None and j is not None:
@@ -732,6 +818,30 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
     return tuple(pairs)
 
 
+def _stroked(key: Key) -> bool:
+    """Whether ``key`` draws a stroke (a slit in its outline would show)."""
+    paint = key.paint
+    return paint.stroke is not None and paint.stroke[3] > 0 and paint.stroke_width > 0
+
+
+def _joined(a: Sequence[Contour], b: Sequence[Contour], partners: Sequence[tuple[int | None, int | None]],
+            rule_a: str, rule_b: str, join: frozenset[tuple[int, int]]
+            ) -> tuple[list[Contour], list[Contour], list[tuple[int | None, int | None]]]:
+    """The two keys' contours with those of ``join`` (key 0 or 1, index) joined into neighbours
+    (:func:`.bridges.join_alone`), and the partners left."""
+    out = []
+    gone: list[set[int]] = []
+    for side, contours, rule in ((0, a, rule_a), (1, b, rule_b)):
+        has = {p[side] for p in partners if None not in p}
+        points, joined = join_alone([c.points for c in contours], [c.closed for c in contours],
+                                    [k in has for k in range(len(contours))],
+                                    [k for s, k in join if s == side], rule == "evenodd")
+        out.append([Contour(_frozen(p), c.closed) if p is not c.points else c for p, c in zip(points, contours)])
+        gone.append({k for k, j in enumerate(joined) if j})
+    kept = [(i, j) for i, j in partners if not (i in gone[0] and j is None) and not (j in gone[1] and i is None)]
+    return out[0], out[1], kept
+
+
 SHUT_GAP = 1e-3
 """An open contour whose ends are closer than this share of its box's diagonal ..."""
 
@@ -739,9 +849,7 @@ SHUT_GAP = 1e-3
 def _shut_strokes(key: Key, caps: tuple[str, str]) -> tuple[Contour, ...]:
     """``key``'s contours with each open one whose ends meet (within :data:`SHUT_GAP`) closed — where
     that draws the same: round caps and joins, or no stroke (a fill closes it anyway)."""
-    paint = key.paint
-    stroked = paint.stroke is not None and paint.stroke[3] > 0 and paint.stroke_width > 0
-    if stroked and ((key.cap or caps[0]) != "round" or (key.join or caps[1]) != "round"):
+    if _stroked(key) and ((key.cap or caps[0]) != "round" or (key.join or caps[1]) != "round"):
         return key.contours
     out = []
     for contour in key.contours:

@@ -638,7 +638,7 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
 
 EVEN = 3.0
 """A segment's area changes evenly where no step is over this many times the median (as pops are told)."""
-JOIN_CHECKS = np.linspace(0.0, 1.0, 25)
+JOIN_CHECKS = np.linspace(0.0, 1.0, 13)
 """The parameters at which a segment's in-betweens with contours joined (:mod:`.bridges`) are measured
 against those without."""
 

@@ -14,7 +14,8 @@ from numpy.typing import NDArray
 
 __all__ = [
     "Points", "Color", "BALANCES", "DEFAULT_BALANCE", "COSTS", "ALIGNS", "EQUAL_COUNTS",
-    "FILL_RULES", "CAPS", "JOINS", "TURNS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Paint", "Hint", "Key", "Joint",
+    "FILL_RULES", "CAPS", "JOINS", "TURNS", "UNMATCHED", "DEFAULT_FILL", "Contour", "Dash", "Paint", "Hint", "Key",
+    "Joint",
     "Shape", "Matching", "Scene", "DrawnContour", "Gradient", "MaskShape", "Mask", "frozen_points",
     "DEFAULT_MAX_MEMORY",
 ]
@@ -81,12 +82,24 @@ class Gradient:
 
 
 @dataclass(frozen=True, slots=True)
+class Dash:
+    """A stroke's dash pattern, as SVG's ``stroke-dasharray`` and ``stroke-dashoffset`` resolve it: ``lengths``
+    dash, gap, dash, gap … (an even count, each ≥ 0, summing to more than 0), and ``offset``, how far into the
+    pattern each subpath starts; both in the stroke width's units. The pattern is laid along each contour
+    by arc length, starting afresh on each one."""
+
+    lengths: tuple[float, ...]
+    offset: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
 class Paint:
     """How a key is drawn: fill and stroke colours (``None``: not drawn), stroke width, opacity.
 
     ``stroke_width`` is in pixels, or in world units for shapes whose ``stroke_scales``
     (drawings: widths scale with the view, as in the SVG). ``opacity`` multiplies both.
     ``gradient``, when set, fills instead of ``fill`` (which then holds its stops' mean colour).
+    ``dash``, when set, dashes the stroke (``None``: a solid stroke).
     """
 
     fill: Color | None = DEFAULT_FILL
@@ -94,6 +107,7 @@ class Paint:
     stroke_width: float = 2.0
     opacity: float = 1.0
     gradient: Gradient | None = None
+    dash: Dash | None = None
 
     @property
     def visible(self) -> bool:

@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..model import Color, Paint
+from .dashes import blend_dashes
 
 __all__ = ["srgb_to_oklab", "oklab_to_srgb", "blend_colors", "blend_color_rows", "blend_paints"]
 
@@ -98,7 +99,8 @@ def blend_color_rows(c0: NDArray[np.int64], c1: NDArray[np.int64], t: float) -> 
 def blend_paints(p0: Paint, p1: Paint, t: ArrayLike) -> list[Paint]:
     """The paint at each of ``t (T,)`` (already eased) between keys painted ``p0`` and ``p1``.
 
-    A stroke that only one key has keeps that key's width while it fades.
+    A stroke that only one key has keeps that key's width while it fades; dash patterns blend as
+    :func:`.dashes.blend_dashes` says.
     """
     t = np.atleast_1d(np.asarray(t, dtype=np.float64))
     if p0 == p1:
@@ -109,5 +111,7 @@ def blend_paints(p0: Paint, p1: Paint, t: ArrayLike) -> list[Paint]:
     w1 = p1.stroke_width if p1.stroke is not None else p0.stroke_width
     widths = (1.0 - t) * w0 + t * w1
     opacity = (1.0 - t) * p0.opacity + t * p1.opacity
-    blended = [Paint(f, s, float(w), float(o)) for f, s, w, o in zip(fills, strokes, widths, opacity)]
+    dashes = blend_dashes(p0.dash, p1.dash, t)
+    blended = [Paint(f, s, float(w), float(o), dash=d)
+               for f, s, w, o, d in zip(fills, strokes, widths, opacity, dashes)]
     return [p0 if x == 0.0 else p1 if x == 1.0 else b for x, b in zip(t.tolist(), blended)]

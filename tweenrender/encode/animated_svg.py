@@ -127,6 +127,13 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
         attributes += [f'stroke-width="{numbers[0]}"', f'stroke-linecap="{run.cap}"',
                        f'stroke-linejoin="{run.join}"', f'stroke-miterlimit="{number(run.miter_limit, 4)}"']
         inner.append(animate("stroke-width", run.paint_frames, numbers, total, timing))
+        if run.dash is not None:
+            rows = run.dash[members[0]]
+            patterns = [" ".join(number(float(v), 4) for v in row[:-1]) for row in rows]
+            offsets = [number(float(row[-1]), 4) for row in rows]
+            attributes += [f'stroke-dasharray="{patterns[0]}"', f'stroke-dashoffset="{offsets[0]}"']
+            inner += [animate("stroke-dasharray", run.paint_frames, patterns, total, timing),
+                      animate("stroke-dashoffset", run.paint_frames, offsets, total, timing)]
     inner = [line for line in inner if line]
     if not inner:
         return ["<path " + " ".join(attributes) + "/>"]

@@ -79,12 +79,14 @@ def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
     stretched = run.gradient_paths is not None
     shapes: list[dict[str, Any]] = []
     if len(groups) == 1 and not stretched:  # one group: the paths, the stroke above the fill
-        items = [*paths, _stroke(run, groups[0][1]), *_fill(run), {"ty": "tr", **transform(static(100))}]
+        items = [*paths, _stroke(run, groups[0][1], groups[0][0]), *_fill(run),
+                 {"ty": "tr", **transform(static(100))}]
         shapes.append({"ty": "gr", "nm": run.element, "it": items})
     else:  # strokes apart, above the fill: contours growing from a point with their share of the width, or
         # a fill in the frame of its elliptical gradient
         for members, widths in groups:
-            items = [*(paths[i] for i in members), _stroke(run, widths), {"ty": "tr", **transform(static(100))}]
+            items = [*(paths[i] for i in members), _stroke(run, widths, members),
+                     {"ty": "tr", **transform(static(100))}]
             shapes.append({"ty": "gr", "nm": f"{run.element} stroke", "it": items})
         if gradient is not None and stretched:
             shapes.append(stretched_fill(run, gradient, _FILL_RULES[run.fill_rule]))
@@ -114,11 +116,24 @@ def _shape_layer(name: str, opacity: dict[str, Any], shapes: list[dict[str, Any]
             "op": stop, "st": 0, "bm": 0, "shapes": shapes}
 
 
-def _stroke(run: VectorRun, widths: Array) -> dict[str, Any]:
+def _stroke(run: VectorRun, widths: Array, members: list[int]) -> dict[str, Any]:
     colour, alpha = _colour_prop(run.paint_frames, run.stroke)  # type: ignore[arg-type]
     width = scalar(animated(run.paint_frames, [[round(float(w), 4)] for w in widths]))
-    return {"ty": "st", "nm": "stroke", "c": colour, "o": alpha, "w": width, "lc": _CAPS[run.cap],
+    item = {"ty": "st", "nm": "stroke", "c": colour, "o": alpha, "w": width, "lc": _CAPS[run.cap],
             "lj": _JOINS[run.join], "ml": run.miter_limit}
+    if run.dash is not None:
+        item["d"] = _dashes(run.paint_frames, run.dash[members[0]])
+    return item
+
+
+def _dashes(frames: tuple[int, ...], dash: Array) -> list[dict[str, Any]]:
+    """A stroke's ``d``: dash and gap lengths ``dash[:, :-1]`` then the offset ``dash[:, -1]`` (``(P, C + 1)``)."""
+    out = []
+    for j in range(dash.shape[1]):
+        kind, name = ("o", "offset") if j == dash.shape[1] - 1 else ("d", f"dash {j // 2}") if j % 2 == 0 \
+            else ("g", f"gap {j // 2}")
+        out.append({"n": kind, "nm": name, "v": scalar(animated(frames, [[round(float(v), 4)] for v in dash[:, j]]))})
+    return out
 
 
 def _fill(run: VectorRun) -> list[dict[str, Any]]:

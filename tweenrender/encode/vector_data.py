@@ -80,7 +80,9 @@ class VectorRun:
     radial gradient, the contours in the gradient's own frame (a Lottie group's transform places that
     frame), as ``(frames (K',), (one array per contour, as ``paths``), eases (K' - 1,))``. ``contour_keys``:
     each contour keyed on its own, for files that animate contours apart (Lottie), as ``(frames, path,
-    eases)`` per contour (``None``: the run's keyframes).
+    eases)`` per contour (``None``: the run's keyframes). ``dash``: per contour, ``(P, C + 1)``, the stroke's
+    dash lengths (dash, gap, …; the same even count C at every paint keyframe) then its offset, in pixels, for
+    the contour drawn from its vertex 0 (``None``: solid).
     """
 
     element: str
@@ -106,6 +108,7 @@ class VectorRun:
     gradient_paths: tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None = None
     exact_lengths: tuple[int, ...] = ()
     contour_keys: tuple[tuple[tuple[int, ...], Array, tuple[Handles, ...]], ...] | None = None
+    dash: tuple[Array, ...] | None = None
 
     def keys_of(self, index: int) -> tuple[tuple[int, ...], Array, tuple[Handles, ...]]:
         """Contour ``index``'s own keyframes where it has them (:attr:`contour_keys`), else the run's:
@@ -121,14 +124,16 @@ class VectorRun:
 
     def stroke_groups(self) -> list[tuple[list[int], Array]]:
         """The contours stroked alike and their width at each paint keyframe: ``[(contour indices, (P,))]``
-        (one group of all unless some contour grows from a point with its share of the width)."""
-        if self.contour_widths is None:
+        (one group of all unless some contour grows from a point with its share of the width, or contours'
+        dash patterns differ)."""
+        if self.contour_widths is None and self.dash is None:
             return [(list(range(len(self.paths))), self.width)]
         groups: list[tuple[list[int], Array]] = []
         for index in range(len(self.paths)):
-            column = self.contour_widths[:, index]
+            column = self.width if self.contour_widths is None else self.contour_widths[:, index]
             for members, widths in groups:
-                if np.array_equal(widths, column):
+                if np.array_equal(widths, column) and (self.dash is None or
+                                                        np.array_equal(self.dash[members[0]], self.dash[index])):
                     members.append(index)
                     break
             else:

@@ -18,7 +18,7 @@ from numpy.typing import NDArray
 
 from ..core.view import Viewport
 from ..model import Mask, MaskShape
-from .surface import Raster, StrokeStyle, contours_path
+from .surface import Raster, StrokeStyle, contours_path, dashed
 
 __all__ = ["draw_masked"]
 
@@ -109,7 +109,8 @@ def _shape(raster: Raster, viewport: Viewport, shape: MaskShape) -> None:
         try:
             raster.draw_contours([p for p, _ in kept], [c for _, c in kept], shape.fill_rule, paint.fill,
                                  paint.stroke, paint.stroke_width * viewport.scale,
-                                 StrokeStyle(shape.cap, shape.join, shape.miter_limit), paint.opacity)
+                                 dashed(StrokeStyle(shape.cap, shape.join, shape.miter_limit), paint.dash,
+                                        viewport.scale), paint.opacity)
         finally:
             raster.fill_shader = None
 

@@ -9,10 +9,11 @@ import numpy as np
 import skia
 from numpy.typing import NDArray
 
+from ..core.dashes import starting_at, without_repeats
 from ..core.timing.timeline import ShapeAt
 from ..model import Color, Scene, Shape
 from .round_stroke import worth_compiling
-from .surface import Raster, StrokeStyle, contours_path
+from .surface import Raster, StrokeStyle, contours_path, dashed
 from ..core.view import Box, Viewport
 
 __all__ = ["Composer", "Layer", "draw_shape", "drawn_style", "label_size", "label_band"]
@@ -112,7 +113,11 @@ def draw_shape(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
     if not at.visible:
         return
     pixels = [viewport.to_pixels(c) for c in at.contours]
-    if at.reversed:
+    if at.dash_starts and at.paint.dash is not None:  # each closed contour from where its dashes start
+        flips = at.reversed or (False,) * len(pixels)
+        pixels = [without_repeats(starting_at(p, share, flip) if shut else (p[::-1] if share == 1.0 else p), shut)
+                  for p, shut, share, flip in zip(pixels, at.closed, at.dash_starts, flips)]
+    elif at.reversed:
         pixels = [p[::-1] if flip else p for p, flip in zip(pixels, at.reversed)]
     good = [len(p) >= 2 and bool(np.all(np.isfinite(p))) for p in pixels]
     kept = [(p, shut) for p, shut, ok in zip(pixels, at.closed, good) if ok]
@@ -166,6 +171,8 @@ def _draw_kept(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt, al
     paint = at.paint
     rule, style = drawn_style(shape, at)
     width = paint.stroke_width * (viewport.scale if shape.stroke_scales else 1.0)
+    if paint.dash is not None:
+        style = dashed(style, paint.dash, viewport.scale if shape.stroke_scales else 1.0)
     good = [len(p) >= 2 and bool(np.all(np.isfinite(p))) for p in pixels]
     if at.fade is None:
         shares = [w for w, ok in zip(at.widths, good) if ok] if at.widths else []

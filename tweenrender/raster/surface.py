@@ -2,20 +2,21 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, replace
 from typing import Sequence
 
 import numpy as np
 import skia
 from numpy.typing import NDArray
 
-from ..model import Color
+from ..model import Color, Dash
 from .clip import clip_to_box
 from .fonts import drawable, font
 from .round_stroke import MIN_WIDTH, draws_on, stroke_contours
 from .slits import unslit
 
-__all__ = ["Raster", "paint_color", "polygon_path", "contours_path", "clipped_contours", "StrokeStyle",
+__all__ = ["Raster", "paint_color", "polygon_path", "contours_path", "clipped_contours", "StrokeStyle", "dashed",
            "fill_and_stroke", "hides_fill_edge"]
 
 # skia's serialised path (version 5): int32 header (version | fill type << 8),
@@ -97,16 +98,38 @@ def _path_of(contours: list[NDArray[np.float64]], closed: list[bool], fill_rule:
 
 @dataclass(frozen=True, slots=True)
 class StrokeStyle:
-    """How a shape's outline is stroked: caps, joins and miter limit (SVG's names)."""
+    """How a shape's outline is stroked: caps, joins and miter limit (SVG's names), and its dash pattern
+    in pixels (``dash``: dash, gap, … an even count summing to more than 0; ``()``: solid), which starts
+    ``dash_offset`` pixels into the pattern on each contour."""
 
     cap: str = "round"
     join: str = "round"
     miter_limit: float = 4.0
+    dash: tuple[float, ...] = ()
+    dash_offset: float = 0.0
 
 
 _CAPS = {"butt": skia.Paint.kButt_Cap, "round": skia.Paint.kRound_Cap, "square": skia.Paint.kSquare_Cap}
 _JOINS = {"miter": skia.Paint.kMiter_Join, "round": skia.Paint.kRound_Join, "bevel": skia.Paint.kBevel_Join}
 _ROUND = StrokeStyle()
+
+
+def dashed(style: StrokeStyle, dash: Dash | None, scale: float) -> StrokeStyle:
+    """``style`` with the dash pattern ``dash`` (scene units, ``None``: solid) at ``scale`` pixels per unit;
+    solid when the scaled pattern is not one skia can lay (not finite, or its period under 1e-6 px)."""
+    if dash is None:
+        return replace(style, dash=(), dash_offset=0.0)
+    lengths = tuple(float(v) * scale for v in dash.lengths)
+    period = sum(lengths)
+    if not (math.isfinite(period) and period > 1e-6 and all(v >= 0 for v in lengths)):
+        return replace(style, dash=(), dash_offset=0.0)
+    return replace(style, dash=lengths, dash_offset=float(dash.offset) * scale)
+
+
+def _dash_effect(dash: tuple[float, ...], offset: float) -> skia.PathEffect:
+    """skia's dashing of ``dash`` (pixels) starting ``offset`` pixels into it (any sign: taken modulo the period)."""
+    period = float(sum(dash))
+    return skia.DashPathEffect.Make(list(dash), offset % period if math.isfinite(offset) else 0.0)
 
 
 def hides_fill_edge(stroke: skia.Paint, fill: skia.Paint, matrix: skia.Matrix | None = None) -> bool:
@@ -235,6 +258,9 @@ class Raster:
                 stroke_paint.setStrokeJoin(_JOINS[style.join])
                 stroke_paint.setStrokeMiter(style.miter_limit)
                 self._restyled = True
+                if style.dash:  # a copy: skia's paint takes no path effect back off
+                    stroke_paint = skia.Paint(stroke_paint)
+                    stroke_paint.setPathEffect(_dash_effect(style.dash, style.dash_offset))
         return fill_paint, stroke_paint
 
     def draw_contours(self, contours: Sequence[NDArray[np.float64]], closed: Sequence[bool], fill_rule: str,
@@ -254,7 +280,7 @@ class Raster:
         contours, closed = clipped_contours(contours, closed)
         placed = None
         if (self.round_strokes and strokes and opacity > 0 and not (opacity < 1.0 and fills)
-                and style.join == "round" and (style.cap == "round" or all(closed))):
+                and style.join == "round" and (style.cap == "round" or all(closed)) and not style.dash):
             placed = draws_on(self.canvas, self._address)
         if placed is None or placed[0] * stroke_width < MIN_WIDTH:
             self.draw_path(_path_of(contours, closed, fill_rule), fill, stroke, stroke_width, style, opacity)

@@ -40,7 +40,10 @@ def fill_only(paint: Paint) -> bool:
 
 def outlined(element: Element) -> Element:
     """``element`` (stroked, not filled) as the filled outline of its stroke; itself where the outline is
-    empty (a stroke of zero length with flat caps draws nothing)."""
+    empty (a stroke of zero length with flat caps draws nothing) or the stroke is dashed (its dashes are laid
+    along the outline as it moves)."""
+    if element.paint.dash is not None:
+        return element
     from shapely import LineString, LinearRing, Point, orient_polygons, unary_union
 
     half = 0.5 * element.paint.stroke_width

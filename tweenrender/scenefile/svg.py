@@ -17,8 +17,9 @@ opacity) are left out. Linear and radial gradient fills are kept
 (:mod:`.svg_gradients`), clip paths as clip regions (``Element.clips``), and masks (``Element.masks``,
 :mod:`.svg_mask`). SVG's
 error rules apply (:mod:`.svg_pathdata`): bad data is drawn up to its first error, an
-element of negative size or a ``<use>`` loop is left out. Not drawn: filters, markers; gradient strokes and patterns are painted with
-the average colour of their stops.
+element of negative size or a ``<use>`` loop is left out. Dashes are read into the stroke's paint
+(:mod:`.svg_dashes`); markers become elements of their own after their element (:mod:`.svg_markers`). Not
+drawn: filters; gradient strokes and patterns are painted with the average colour of their stops.
 """
 
 from __future__ import annotations
@@ -32,10 +33,12 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SceneError, did_you_mean
-from ..model import Color, Contour, Mask, MaskShape, Paint, frozen_points
+from ..model import Color, Contour, Dash, Mask, MaskShape, Paint, frozen_points
 from .svg_document import SHAPES, Document, Drawn, Node, compose, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
 from .svg_color import parse_color
+from .svg_dashes import read_dash
+from .svg_marker_style import MARKER_PROPERTIES
 from .svg_gradients import stop_color
 from .svg_pathdata import path_prefix, points_prefix, smooth_controls
 from .svg_viewport import aspect_matrix
@@ -269,6 +272,8 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
             element = _element(d, to_world, scale, tol, budget)
             if element is not None:
                 elements.append(element)
+            if any(d.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
+                elements += _marker_elements(d, to_world, scale, tol, budget)
         return Drawing(Path(svg_path), world_box, tuple(elements), to_world)
     except Refusal as refusal:
         raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
@@ -316,6 +321,33 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
                    tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
                    miter, tuple(c for c in clips if c is not None), masks)
+
+
+def _marker_elements(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, budget: Budget,
+                     chain: tuple[int, ...] = ()) -> list[Element]:
+    """The shapes of ``d``'s markers as elements of their own, in paint order (:mod:`.svg_markers`); a marker
+    met again inside its own content (``chain``: the markers being drawn) is left out."""
+    from dataclasses import replace
+
+    from .svg_markers import marker_content, placements
+
+    shape = _geometry(d.node, d.document, True, d.viewport)
+    segments = list(shape.segments(transformed=False)) if shape is not None else []
+    stroke_width = _stroke_width(d.style.get("stroke-width", "1"), d)
+    base = d.node.attrs.get("id") or f"{d.node.tag}@{d.node.line}"
+    out: list[Element] = []
+    for placed in placements(d, segments, stroke_width, length):
+        if id(placed.marker) in chain:
+            continue
+        for k, inner in enumerate(marker_content(d, placed, budget.memo)):
+            if not inner.visible:
+                continue
+            element = _element(inner, to_world, scale, tol, budget)
+            if element is not None:
+                out.append(replace(element, id=f"{base}:marker-{placed.kind}{placed.index}.{k}"))
+            if any(inner.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
+                out += _marker_elements(inner, to_world, scale, tol, budget, chain + (id(placed.marker),))
+    return out
 
 
 def _masks(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, budget: Budget,
@@ -425,7 +457,11 @@ def _paint(d: Drawn, scale: float) -> tuple[Paint, str, str, str, float]:
     join = style.get("stroke-linejoin", "miter").strip()
     join = "miter" if join in ("miter-clip", "arcs") else join
     miter = max(1.0, _number(style.get("stroke-miterlimit"), 4.0))
-    return (Paint(fill, stroke, width, d.opacity), fill_rule, cap if cap in ("butt", "round", "square") else "butt",
+    dash = read_dash(style, d.node.font, _viewport_diagonal(d), math.sqrt(abs(_determinant(d.ctm))) * scale)
+    if dash is not None and "pathLength" in d.node.attrs:
+        dash = _along_path_length(dash, d)
+    return (Paint(fill, stroke, width, d.opacity, dash=dash), fill_rule,
+            cap if cap in ("butt", "round", "square") else "butt",
             join if join in ("miter", "round", "bevel") else "miter", miter)
 
 
@@ -447,6 +483,25 @@ def _stroke_width(text: str, d: Drawn) -> float:
     except (ValueError, TypeError):
         return 1.0
     return value if math.isfinite(value) and value >= 0 else 1.0
+
+
+def _along_path_length(dash: Dash, d: Drawn) -> Dash:
+    """``dash`` in the units of the element's ``pathLength`` (:func:`.svg_dashes.along_path_length`)."""
+    from .svg_dashes import along_path_length
+
+    shape = _geometry(d.node, d.document, True, d.viewport)
+    try:
+        length = float(shape.length()) if shape is not None else 0.0
+    except Exception:  # a third-party measure on arbitrary input: no length, no scaling
+        length = 0.0
+    return along_path_length(dash, d.node.attrs.get("pathLength"), length)
+
+
+def _viewport_diagonal(d: Drawn) -> float:
+    """The normalised diagonal of the viewport ``d`` is in: what its percentages of lengths are of."""
+    if d.viewport is not None:
+        return math.hypot(*d.viewport) / math.sqrt(2)
+    return _diagonal(d.document)
 
 
 def _diagonal(document: Document) -> float:

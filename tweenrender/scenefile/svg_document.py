@@ -29,6 +29,7 @@ from .svg_conditions import conditions_hold, switch_choice
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_flatten import Refusal
 from .svg_lengths import DEFAULT_FONT_SIZE, font_relative, font_size
+from .svg_marker_style import marker_longhands
 from .svg_viewport import nested_viewport, root_size
 
 __all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "MAX_RULE_MATCHES", "SHAPES", "Node", "Document",
@@ -56,11 +57,12 @@ _NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linear
               "filter", "title", "desc", "metadata", "style", "script")
 _UNSUPPORTED = ("text", "image", "foreignObject")
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
-              "stroke-linejoin", "stroke-miterlimit", "visibility", "color")
+              "stroke-linejoin", "stroke-miterlimit", "visibility", "color", "stroke-dasharray", "stroke-dashoffset",
+              "marker-start", "marker-mid", "marker-end")
 _PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask", "mask-type",
                              "color-interpolation")
 # the properties an element's own style is read for: those above, and what a sheet may set that no child inherits
-_OWN = frozenset(_PROPERTIES + ("transform", "overflow", "font-size"))
+_OWN = frozenset(_PROPERTIES + ("transform", "overflow", "font-size", "marker"))
 _ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
 _UNSAFE = ("expected plain SVG, found a DOCTYPE with entity declarations (refused: entities can "
            "expand without bound or read other files); save the drawing as plain SVG")
@@ -313,6 +315,8 @@ class _Walk:
                 or not conditions_hold(node):
             return
         own = own_style(node, self.document)
+        if "marker" in own:  # the shorthand: of style sheets only
+            own = marker_longhands(own, node, self.document.sheet.get(id(node), ()))
         style = {k: parent[k] for k in _INHERITED if k in parent}
         style.update((k, v) for k, v in own.items() if v != "inherit")
         if own.get("display", "").strip() == "none":

@@ -20,6 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .curves import fit_curves, free_points, with_fixed_points
+from .dash_keys import contour_dashes, dash_rows
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
 from ..encode.formats import is_vector, listing, names, writer
@@ -295,6 +296,10 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
     if stroke is not None and np.any(shares != 1.0):
         contour_widths = width[:, None] * shares  # (F, C)
         channels = np.concatenate([channels, contour_widths[:, :, None] / max_error], axis=1)
+    dash = dash_rows(paints, scale, shape.name) if stroke is not None else None
+    dashes = None if dash is None else _contour_dashes(dash, samples, shapes, keep, flips, closed)
+    if dashes is not None:
+        channels = np.concatenate([channels, *(d[:, :, None] / max_error for d in dashes)], axis=1)
     channels = np.pad(channels, ((0, 0), (0, 0), (0, 1)))  # (F, C, 2), beside the gradient's points
     if gradient is not None:
         channels = np.concatenate([channels, gradient.channels()], axis=1)
@@ -308,8 +313,17 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                     None if gradient is None else gradient.keys(pick),
                     clip_path_keys(shapes, first, viewport, max_error),
                     exact_lengths=tuple(s.shape[1] for s in samples),
-                    contour_keys=contour_keys)
+                    contour_keys=contour_keys,
+                    dash=None if dashes is None else tuple(d[pick] for d in dashes))
     return replace(run, gradient_paths=gradient_frame_paths(run, max_error))
+
+
+def _contour_dashes(dash: Array, samples: list[Array], shapes: list[ShapeAt], keep: list[int],
+                    flips: tuple[bool, ...], closed: tuple[bool, ...]) -> tuple[Array, ...]:
+    """Each kept contour's dash rows ``(F, C + 1)`` (:func:`.dash_keys.contour_dashes`)."""
+    starts = np.array([[at.dash_starts[i] if at.dash_starts else 0.0 for i in keep] for at in shapes])
+    return contour_dashes(dash, samples, starts.reshape(len(shapes), len(keep)), tuple(flips[i] for i in keep),
+                          closed)
 
 
 def _key_tolerance(max_error: float, fitted: float) -> float:

@@ -47,6 +47,7 @@ from ..correspondence.hints import Link, forced_contour_pairs, segment_links, ve
 if TYPE_CHECKING:
     from ..methods.qcurves import AutoChoice
 from ..methods.registry import interpolate, per_outline
+from ..dashes import start_share
 from ..paint import blend_paints
 from .steering import arc_corrections, bend, extra_turn, spin, unturned, whole_turns_to
 
@@ -195,6 +196,10 @@ class ShapeAt:
     widths: tuple[float, ...] = ()  # per contour, the share of the stroke width it is drawn with (empty: all)
     clips: tuple[tuple[Points, ...], ...] = ()  # clip regions (closed contours, nonzero), intersected
     masks: MaskBlend = ()  # the masks, each key's carried with the element (:mod:`..mask_motion`)
+    # per contour, where a dashed stroke's pattern starts: a share of a closed contour's perimeter from its
+    # vertex 0, before ``reversed`` (:func:`..dashes.start_share`); of an open one, 0 (its vertex 0) or 1
+    # (its last vertex, drawn from there); empty: at vertex 0
+    dash_starts: tuple[float, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -496,9 +501,31 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
             for i in growing:
                 share[i] = float(growth_scale(growths[i], np.array([x]))[0])  # type: ignore[arg-type]
             widths = tuple(share)
+        starts = _dash_starts(segment, contours, x) if paint.dash is not None else ()
         out.append(ShapeAt(contours, closed, paint, visible and paint.visible, x if fading else None, sides,
-                           flips, drawn_as, widths, clips, masks))
+                           flips, drawn_as, widths, clips, masks, starts))
     return out
+
+
+def _dash_starts(segment: Segment, contours: tuple[Points, ...], t: float) -> tuple[float, ...]:
+    """Per contour, where its dash pattern starts at ``t`` (:func:`..dashes.start_share`): each closed contour
+    in both keys from its keys' first vertices; an open one from the end that is its key's first vertex (the
+    first key's until halfway, then the second's); others at vertex 0."""
+    if segment.ends is None:
+        return ()
+    out = []
+    for pair, now in zip(segment.pairs, contours):
+        i, j = pair.source
+        if i is None or j is None or len(now) != len(pair.k0):
+            out.append(0.0)
+            continue
+        first0, first1 = segment.ends[0].contours[i].points[0], segment.ends[1].contours[j].points[0]
+        if pair.closed:
+            out.append(start_share(pair.k0, pair.k1, first0, first1, now, t))
+        else:
+            k, first = (pair.k0, first0) if t < 0.5 else (pair.k1, first1)
+            out.append(1.0 if np.hypot(*(k[-1] - first)) < np.hypot(*(k[0] - first)) else 0.0)
+    return tuple(out)
 
 
 def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequence[Contour]

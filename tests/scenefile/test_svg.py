@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 from tweenrender.errors import SceneError
 from tweenrender.scenefile import svg, svg_document
-from tweenrender.scenefile.svg import DEFAULT_TOLERANCE, SvgError, load_svg_points
+from tweenrender.scenefile.svg import DEFAULT_TOLERANCE, SvgError, load_svg_points, read_drawing
 
 SCENES = Path(__file__).resolve().parents[2] / "scenes" / "svg"
 
@@ -379,6 +379,31 @@ def test_entity_declarations_are_refused(tmp_path: Path, encoding: str) -> None:
     path.write_bytes(LAUGHS.replace("1.0\"?>", f"1.0\" encoding=\"{encoding}\"?>").encode(encoding))
     with pytest.raises(SvgError, match="#p: .*entity"):
         load_svg_points(path, "p")
+
+
+@pytest.mark.parametrize(("declaration", "refused"), [
+    ('<!ENTITY e SYSTEM "/etc/hostname">', "SYSTEM"),
+    ('<!ENTITY % p "x">', "p"),
+    ('<!ENTITY big "' + "x" * 5000 + '">', "more than"),
+])
+def test_unsafe_entities_are_refused(tmp_path: Path, declaration: str, refused: str) -> None:
+    path = tmp_path / "unsafe.svg"
+    path.write_text(f'<!DOCTYPE svg [ {declaration} ]>\n<svg xmlns="http://www.w3.org/2000/svg">'
+                    + '<polygon id="p" points="0,0 1,0 1,1" fill="&big;"/>' * (1000 if "big" in declaration else 1)
+                    + "</svg>")
+    with pytest.raises(SvgError, match=f"expected plain SVG or internal entities.*{refused}"):
+        read_drawing(path)
+
+
+def test_plain_internal_entities_are_expanded_as_illustrator_writes_them(tmp_path: Path) -> None:
+    """Illustrator's namespaces and styles as entities: the triangle is drawn in the entity's colour."""
+    path = tmp_path / "illustrator.svg"
+    path.write_text('<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" '
+                    '"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd" [\n'
+                    '  <!ENTITY ns_svg "http://www.w3.org/2000/svg">\n  <!ENTITY st0 "fill:#FF0000;stroke:none;">\n]>\n'
+                    '<svg xmlns="&ns_svg;" viewBox="0 0 10 10"><polygon style="&st0;" points="0,0 10,0 10,10"/></svg>')
+    (element,) = read_drawing(path).elements
+    assert element.paint.fill == (255, 0, 0, 255) and element.paint.stroke is None
 
 
 def test_internal_dtd_subset_is_refused_but_a_plain_doctype_is_not(tmp_path: Path) -> None:

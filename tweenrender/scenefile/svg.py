@@ -40,6 +40,7 @@ from .svg_color import parse_color
 from .svg_dashes import read_dash
 from .svg_marker_style import MARKER_PROPERTIES
 from .svg_gradients import stop_color
+from .svg_paint_order import in_paint_order
 from .svg_pathdata import path_prefix, points_prefix, smooth_controls
 from .svg_viewport import aspect_matrix
 
@@ -271,7 +272,7 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
         for d in drawn:
             element = _element(d, to_world, scale, tol, budget)
             if element is not None:
-                elements.append(element)
+                elements += in_paint_order(element, d.style.get("paint-order", ""))
             if any(d.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
                 elements += _marker_elements(d, to_world, scale, tol, budget)
         return Drawing(Path(svg_path), world_box, tuple(elements), to_world)
@@ -391,7 +392,10 @@ def _clip_regions(ident: str, space: NDArray[np.float64], d: Drawn, to_world: ND
 def _clip_region(clip: Node, ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64],
                  tol: float, budget: Budget) -> tuple[Contour, ...]:
     """The region of one ``<clipPath>`` in world units (its shapes' closed contours, nonzero)."""
-    from .svg_document import _Walk
+    from .svg_clip_rule import inherited_clip_rule, union_by_rule
+    from .svg_document import _Walk, own_style
+    from .svg_transform_origin import about_origin, parse_origin
+    from .svg_viewport import root_size
 
     units = clip.attrs.get("clipPathUnits", "userSpaceOnUse").strip()
     if units == "objectBoundingBox":
@@ -402,16 +406,24 @@ def _clip_region(clip: Node, ident: str, space: NDArray[np.float64], d: Drawn, t
         (x0, y0), (x1, y1) = every.min(axis=0), every.max(axis=0)
         space = space @ np.array([[x1 - x0, 0.0, x0], [0.0, y1 - y0, y0], [0.0, 0.0, 1.0]])
     if "transform" in clip.attrs:
-        space = compose(space, matrix(clip.attrs["transform"], clip.line), clip,
-                        f"transform {clip.attrs['transform'].strip()[:80]!r}")
-    out: list[Contour] = []
+        box = (1.0, 1.0) if units == "objectBoundingBox" else d.viewport or root_size(d.document.root)
+        step = about_origin(matrix(clip.attrs["transform"], clip.line), parse_origin(
+            clip.attrs.get("transform-origin", ""), box, clip.font, clip.view))
+        space = compose(space, step, clip, f"transform {clip.attrs['transform'].strip()[:80]!r}")
     walker = _Walk(d.document, False)
-    for child in clip.children:
-        for shape in walker.visit(child, {}, space, 1.0, True):
-            if shape.visible:
-                out += [Contour(frozen_points(p), True) for p, closed in
-                        _contours(shape, to_world @ shape.ctm, tol, budget, True) if len(p) >= 3]
-    return tuple(out)
+
+    def own_rule(node: Node) -> str | None:  # the cascade only where a clip-rule may be written
+        if "clip-rule" in node.attrs or "clip-rule" in node.attrs.get("style", "") or \
+                any("clip-rule" in layer for layer in d.document.sheet.get(id(node), ())):
+            return own_style(node, d.document).get("clip-rule")
+        return None
+
+    rule = inherited_clip_rule(clip, d.document, own_rule)
+    children = [(shape.style.get("clip-rule", "nonzero").strip(), [p for p, _ in _contours(
+                 shape, to_world @ shape.ctm, tol, budget, True) if len(p) >= 3])
+                for child in clip.children for shape in walker.visit(child, {"clip-rule": rule}, space, 1.0, True)
+                if shape.visible]
+    return tuple(Contour(frozen_points(p), True) for p in union_by_rule(children))
 
 
 # -- paint ---------------------------------------------------------------------------------------------
@@ -456,7 +468,7 @@ def _paint(d: Drawn, scale: float) -> tuple[Paint, str, str, str, float]:
     cap = style.get("stroke-linecap", "butt").strip()
     join = style.get("stroke-linejoin", "miter").strip()
     join = "miter" if join in ("miter-clip", "arcs") else join
-    miter = max(1.0, _number(style.get("stroke-miterlimit"), 4.0))
+    miter = _miter_limit(style.get("stroke-miterlimit"))
     dash = read_dash(style, d.node.font, _viewport_diagonal(d), math.sqrt(abs(_determinant(d.ctm))) * scale)
     if dash is not None and "pathLength" in d.node.attrs:
         dash = _along_path_length(dash, d)
@@ -473,6 +485,15 @@ def _number(text: str | None, default: float) -> float:
     except ValueError:
         return default
     return min(max(value, 0.0), 1.0) if math.isfinite(value) else default
+
+
+def _miter_limit(text: str | None) -> float:
+    """``stroke-miterlimit``: a number ≥ 1; any other value is in error and the initial 4 applies."""
+    try:
+        value = float((text or "4").strip())
+    except ValueError:
+        return 4.0
+    return value if math.isfinite(value) and value >= 1.0 else 4.0
 
 
 def _stroke_width(text: str, d: Drawn) -> float:

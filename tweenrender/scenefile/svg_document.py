@@ -1,13 +1,14 @@
 """An SVG file read safely into a tree, and walked into the elements it draws.
 
-The XML is read with expat (no entities, no DTD subsets, bounded size, element
-count and depth). Walking the tree resolves what an SVG renderer would: CSS
-(presentation attributes, ``<style>`` sheets matched by :mod:`.svg_css`, inline
-``style``, ``!important``), inheritance, ``currentColor``, transforms, ``display``,
+The XML is read with expat (bounded size, element count and depth; a DTD subset may
+declare only plain internal entities, :mod:`.svg_entities`). Walking the tree resolves
+what an SVG renderer would: CSS (presentation attributes, ``<style>`` sheets matched by
+:mod:`.svg_css`, inline ``style``, ``!important``), inheritance, ``currentColor``,
+transforms (about their ``transform-origin``, :mod:`.svg_transform_origin`), ``display``,
 ``visibility`` and group ``opacity``, nested viewports (:mod:`.svg_viewport`), lengths
-relative to the font (:mod:`.svg_lengths`), ``<switch>`` and conditional attributes
-(:mod:`.svg_conditions`), and ``<use>`` — whose expansion is
-counted as it goes, so a file of nested ``<use>`` s cannot grow without bound.
+relative to the font and the viewport (:mod:`.svg_lengths`), ``<switch>`` and conditional
+attributes (:mod:`.svg_conditions`), and ``<use>`` — whose expansion is counted as it
+goes, so a file of nested ``<use>`` s cannot grow without bound.
 """
 
 from __future__ import annotations
@@ -27,10 +28,12 @@ from svgelements import Matrix
 
 from .svg_conditions import conditions_hold, switch_choice
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
+from .svg_entities import UNSAFE, check_entities, safe_declaration
 from .svg_flatten import Refusal
-from .svg_lengths import DEFAULT_FONT_SIZE, font_relative, font_size
+from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_relative, font_size
 from .svg_marker_style import marker_longhands
-from .svg_viewport import nested_viewport, root_size
+from .svg_transform_origin import about_origin, parse_origin
+from .svg_viewport import nested_viewport, outermost_size, root_size
 
 __all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "MAX_RULE_MATCHES", "SHAPES", "Node", "Document",
            "Drawn", "Masking", "read", "parse"]
@@ -58,14 +61,12 @@ _NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linear
 _UNSUPPORTED = ("text", "image", "foreignObject")
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
               "stroke-linejoin", "stroke-miterlimit", "visibility", "color", "stroke-dasharray", "stroke-dashoffset",
-              "marker-start", "marker-mid", "marker-end")
+              "marker-start", "marker-mid", "marker-end", "clip-rule", "paint-order")
 _PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask", "mask-type",
                              "color-interpolation")
 # the properties an element's own style is read for: those above, and what a sheet may set that no child inherits
-_OWN = frozenset(_PROPERTIES + ("transform", "overflow", "font-size", "marker"))
-_ENTITY = re.compile(rb"<!ENTITY", re.IGNORECASE)
-_UNSAFE = ("expected plain SVG, found a DOCTYPE with entity declarations (refused: entities can "
-           "expand without bound or read other files); save the drawing as plain SVG")
+_OWN = frozenset(_PROPERTIES + ("transform", "overflow", "font-size", "marker", "transform-origin"))
+_UNSAFE = UNSAFE.format(what="a DOCTYPE declaring elements, attributes or notations")
 
 
 @dataclass(slots=True)
@@ -79,6 +80,7 @@ class Node:
     text: str = ""
     svg: bool = True  # in the SVG namespace (or none)
     font: tuple[float, float] = (DEFAULT_FONT_SIZE, DEFAULT_FONT_SIZE)  # its font-size and the root's (user units)
+    view: tuple[float, float] = DEFAULT_VIEW  # the outermost viewport's size, what vw and vh are of (CSS px)
 
 
 @dataclass(slots=True)
@@ -114,7 +116,7 @@ class Drawn:
 
 
 def read(path: Path) -> bytes:
-    """The file's bytes, refused when not a regular file, too large, or declaring entities.
+    """The file's bytes, refused when not a regular file or too large.
 
     A pipe would block ``open`` until a writer comes and a device may never end: the kind is checked
     before opening, and again on the open descriptor (opened without blocking) in case the name was
@@ -140,10 +142,6 @@ def read(path: Path) -> bytes:
         raise Refusal(f"expected a readable SVG file, found: {error.strerror or error}") from None
     if len(data) > MAX_FILE_BYTES:
         raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found more")
-    # NULs are dropped so that UTF-16/32 text is caught too; the XML pass refuses the
-    # same declarations in any encoding expat reads.
-    if _ENTITY.search(data.replace(b"\x00", b"")):
-        raise Refusal(_UNSAFE)
     return data
 
 
@@ -159,6 +157,7 @@ def _not_a_file(mode: int) -> str | None:
 
 def parse(data: bytes) -> Document:
     """The XML tree of ``data``, with its ids and style rules."""
+    check_entities(data)  # only safe entities are declared; the XML pass refuses any other declaration
     parser = expat.ParserCreate(namespace_separator=" ")
     stack: list[Node] = []
     roots: list[Node] = []
@@ -166,12 +165,13 @@ def parse(data: bytes) -> Document:
     count = [0]
     texts: dict[int, tuple[Node, list[str]]] = {}
 
-    def doctype(name: str, system_id: str | None, public_id: str | None, internal: int) -> None:
-        if internal:
-            raise Refusal(_UNSAFE)
-
-    def entity(*_: object) -> None:
+    def declaration(*_: object) -> None:  # an internal DTD subset holds entity declarations only
         raise Refusal(_UNSAFE)
+
+    def entity(name: str, is_parameter: int, value: str | None, base: str | None, system_id: str | None,
+               public_id: str | None, notation: str | None) -> None:
+        if not safe_declaration(bool(is_parameter), value, system_id, public_id, notation):
+            raise Refusal(UNSAFE.format(what=f"entity {name} that is not internal text"))
 
     def start(name: str, attributes: dict[str, str]) -> None:
         namespace, _, tag = name.rpartition(" ")
@@ -198,7 +198,8 @@ def parse(data: bytes) -> Document:
         if stack and stack[-1].tag == "style":  # pieces joined once at the end: no quadratic copying
             texts.setdefault(id(stack[-1]), (stack[-1], []))[1].append(data)
 
-    parser.StartDoctypeDeclHandler = doctype
+    parser.ElementDeclHandler = parser.AttlistDeclHandler = parser.NotationDeclHandler = declaration
+    parser.UnparsedEntityDeclHandler = declaration
     parser.EntityDeclHandler = entity
     parser.StartElementHandler = start
     parser.EndElementHandler = end
@@ -218,21 +219,24 @@ def parse(data: bytes) -> Document:
 
 
 def _resolve_fonts(document: Document) -> None:
-    """Every element's ``font`` (its ``font-size`` and the root's), inherited down the tree; the cascade is
-    looked at only where a ``font-size`` may be set (an attribute, a ``style``, a matching rule)."""
+    """Every element's ``font`` (its ``font-size`` and the root's), inherited down the tree, and ``view`` (the
+    outermost viewport's size); the cascade is looked at only where a ``font-size`` may be set (an attribute,
+    a ``style``, a matching rule)."""
     root = document.root
     stack = [(root, DEFAULT_FONT_SIZE)]
     root_size = DEFAULT_FONT_SIZE
+    view = outermost_size(root)
     while stack:
         node, parent = stack.pop()
         size = parent
         if "font-size" in node.attrs or "font-size" in node.attrs.get("style", "") or \
                 any("font-size" in layer for layer in document.sheet.get(id(node), ())):
-            size = font_size(own_style(node, document).get("font-size"), parent, root_size)
+            size = font_size(own_style(node, document).get("font-size"), parent, root_size, view)
         if node is root:
             root_size = size
         if size != DEFAULT_FONT_SIZE or root_size != DEFAULT_FONT_SIZE:
             node.font = (size, root_size)
+        node.view = view
         stack.extend((child, size) for child in node.children)
 
 
@@ -283,7 +287,7 @@ def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -
     text = node.attrs.get(name)
     if text is None or not text.strip():
         return default
-    relative_to_font = font_relative(text, *node.font)
+    relative_to_font = font_relative(text, *node.font, node.view)
     if relative_to_font is not None:
         return relative_to_font
     try:
@@ -329,7 +333,11 @@ class _Walk:
             alpha = 1.0
         opacity *= min(max(alpha, 0.0), 1.0)
         if node is not self.document.root and "transform" in own and node.tag != "symbol":  # SVG 1.1: none on symbols
-            ctm = compose(ctm, matrix(own["transform"], node.line), node, f"transform {own['transform'][:80]!r}")
+            step = matrix(own["transform"], node.line)
+            if "transform-origin" in own:
+                step = about_origin(step, parse_origin(own["transform-origin"], self.viewport or root_size(
+                    self.document.root), node.font, node.view))
+            ctm = compose(ctm, step, node, f"transform {own['transform'][:80]!r}")
         masked = own.get("mask", "none").strip()
         if masked.startswith("url(") and shown:
             target = masked[4:].partition(")")[0].strip().strip("'\"")

@@ -17,6 +17,7 @@ from .svg_color import parse_color
 from .scene_limits import LIMITS
 from .svg_document import Document, Node, matrix, own_style
 from .svg_flatten import Refusal
+from .svg_transform_origin import about_origin, parse_origin
 
 __all__ = ["read_gradient", "gradient_ref", "stop_color"]
 
@@ -162,7 +163,8 @@ def read_gradient(ident: str, document: Document, user_box: tuple[float, float, 
         values.append(_number(text or "0", relative[name]))
     if not all(math.isfinite(v) for v in values):
         return None
-    own = matrix(attribute("gradientTransform", "") or "")
+    own = about_origin(matrix(attribute("gradientTransform", "") or ""), parse_origin(
+        chain[0].attrs.get("transform-origin", ""), (across, down), chain[0].font, chain[0].view))
     if bounding:
         if w <= 0 or h <= 0:
             return None  # SVG: a bounding-box gradient on a flat element is not drawn; the fallback colour is

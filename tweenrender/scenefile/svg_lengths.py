@@ -1,7 +1,11 @@
-"""Lengths relative to the font, and ``Q``: what CSS Values 3 defines and svgelements reads as bare numbers.
+"""Lengths relative to the font and the viewport, and ``Q``: what CSS Values 3 defines and svgelements reads as
+bare numbers.
 
-``em`` is the element's ``font-size``, ``rem`` the root element's, ``ex`` half an ``em`` (CSS's value
-when the font's x-height is not known, as resvg takes it); ``Q`` a quarter of a millimetre. A
+``em`` is the element's ``font-size``, ``rem`` the root element's, ``ex`` and ``ch`` half an ``em`` (CSS's
+value when the font's x-height or the advance of its "0" is not known: no font is read for shapes);
+``vw``, ``vh``, ``vmin`` and ``vmax`` a hundredth of the outermost ``<svg>``'s viewport's width, height,
+smaller and larger side (its ``width`` and ``height`` in CSS px, else its ``viewBox``'s size), as CSS px of the
+user space they are written in; ``Q`` a quarter of a millimetre. A
 ``font-size`` is a length (``em`` and ``%`` of the parent's), or a keyword (``medium`` = 16 px, CSS's
 scale of 1.2 per step; ``smaller``, ``larger``).
 """
@@ -11,32 +15,41 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["DEFAULT_FONT_SIZE", "font_relative", "font_size"]
+__all__ = ["DEFAULT_FONT_SIZE", "DEFAULT_VIEW", "font_relative", "font_size"]
 
 DEFAULT_FONT_SIZE = 16.0
 """``medium``, the initial ``font-size`` (CSS px, = user units)."""
 
-_LENGTH = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(rem|em|ex|q)\s*$", re.IGNORECASE)
+_LENGTH = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(rem|em|ex|ch|q|vw|vh|vmin|vmax)\s*$",
+                     re.IGNORECASE)
 _KEYWORDS = {"xx-small": 9.0, "x-small": 10.0, "small": 13.0, "medium": 16.0, "large": 18.0, "x-large": 24.0,
              "xx-large": 32.0, "xxx-large": 48.0}
-_PER_UNIT = {"em": 1.0, "ex": 0.5}
+_PER_UNIT = {"em": 1.0, "ex": 0.5, "ch": 0.5}
+DEFAULT_VIEW = (100.0, 100.0)
+"""The outermost viewport's size (CSS px) when the drawing gives none."""
 
 
-def font_relative(text: str, em: float, rem: float) -> float | None:
-    """``text`` in user units when it is a number in ``em``, ``rem``, ``ex`` or ``Q``; else None."""
+def font_relative(text: str, em: float, rem: float, view: tuple[float, float] = DEFAULT_VIEW) -> float | None:
+    """``text`` in user units when it is a number in ``em``, ``rem``, ``ex``, ``ch``, ``Q`` or a viewport unit
+    (``view``: the outermost viewport's width and height); else None."""
     match = _LENGTH.match(text)
     if match is None:
         return None
     number, unit = float(match.group(1)), match.group(2).lower()
     if unit == "q":
         return number * 96.0 / 25.4 / 4.0
-    value = number * (rem if unit == "rem" else em * _PER_UNIT[unit])
+    if unit[0] == "v":
+        width, height = view
+        side = {"vw": width, "vh": height, "vmin": min(width, height), "vmax": max(width, height)}[unit]
+        value = number * side / 100.0
+    else:
+        value = number * (rem if unit == "rem" else em * _PER_UNIT[unit])
     return value if math.isfinite(value) else None
 
 
-def font_size(text: str | None, parent: float, root: float) -> float:
-    """The ``font-size`` written ``text`` (None: inherited) in user units, given the parent's and the root's;
-    what cannot be read is inherited."""
+def font_size(text: str | None, parent: float, root: float, view: tuple[float, float] = DEFAULT_VIEW) -> float:
+    """The ``font-size`` written ``text`` (None: inherited) in user units, given the parent's and the root's
+    (and the outermost viewport's size ``view``); what cannot be read is inherited."""
     if text is None:
         return parent
     value = text.strip().lower()
@@ -52,7 +65,7 @@ def font_size(text: str | None, parent: float, root: float) -> float:
         except ValueError:
             return parent
     else:
-        relative = font_relative(value, parent, root)
+        relative = font_relative(value, parent, root, view)
         if relative is not None:
             found = relative
         else:

@@ -17,7 +17,7 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["Viewport", "aspect_matrix", "nested_viewport", "parse_view_box", "root_size"]
+__all__ = ["Viewport", "aspect_matrix", "nested_viewport", "outermost_size", "parse_view_box", "root_size"]
 
 
 class Node(Protocol):
@@ -26,6 +26,7 @@ class Node(Protocol):
     tag: str
     attrs: dict[str, str]
     font: tuple[float, float]
+    view: tuple[float, float]
 
 
 @dataclass(frozen=True, slots=True)
@@ -74,16 +75,17 @@ def parse_view_box(text: str | None) -> tuple[float, float, float, float] | None
     return (x, y, w, h)
 
 
-def _length(text: str | None, relative: float, default: float, font: tuple[float, float]) -> float:
+def _length(text: str | None, relative: float, default: float, font: tuple[float, float],
+            view: tuple[float, float] = (100.0, 100.0)) -> float:
     """A length attribute in user units (units at 96 per inch, percentages of ``relative``, ``em``, ``rem``
-    and ``ex`` of ``font``); ``default`` when missing or unreadable."""
+    and ``ex`` of ``font``, viewport units of ``view``); ``default`` when missing or unreadable."""
     from svgelements import Length
 
     from .svg_lengths import font_relative
 
     if text is None or not text.strip():
         return default
-    relative_to_font = font_relative(text, *font)
+    relative_to_font = font_relative(text, *font, view)
     if relative_to_font is not None:
         return relative_to_font
     try:
@@ -107,6 +109,27 @@ def root_size(root: Node) -> tuple[float, float]:
     return 100.0, 100.0
 
 
+def outermost_size(root: Node) -> tuple[float, float]:
+    """The outermost ``<svg>``'s viewport in CSS px, what ``vw`` and ``vh`` are of: its absolute ``width`` and
+    ``height``; one of them missing (or a percentage) taken from the other by the ``viewBox``'s aspect, or
+    the ``viewBox``'s own size; else 100 × 100."""
+    box = parse_view_box(root.attrs.get("viewBox"))
+    sizes = []
+    for name in ("width", "height"):
+        text = root.attrs.get(name, "")
+        value = 0.0 if "%" in text else _length(text, 100.0, 0.0, root.font)
+        sizes.append(value if value > 0 and math.isfinite(value) else None)
+    width, height = sizes
+    if box is not None:
+        if width is None and height is None:
+            width, height = box[2], box[3]
+        elif width is None:
+            width = height * box[2] / box[3]  # type: ignore[operator]
+        elif height is None:
+            height = width * box[3] / box[2]
+    return (width or 100.0, height or 100.0)
+
+
 def nested_viewport(node: Node, parent_size: tuple[float, float], overflow: str,
                     instance: Node | None = None) -> Viewport | None:
     """The viewport of a nested ``<svg>`` or of a ``<symbol>`` instanced by ``<use>`` ``instance`` (whose
@@ -120,11 +143,12 @@ def nested_viewport(node: Node, parent_size: tuple[float, float], overflow: str,
     if node.tag == "symbol":
         x = y = 0.0
     else:
-        x, y = _length(node.attrs.get("x"), pw, 0.0, node.font), _length(node.attrs.get("y"), ph, 0.0, node.font)
+        x = _length(node.attrs.get("x"), pw, 0.0, node.font, node.view)
+        y = _length(node.attrs.get("y"), ph, 0.0, node.font, node.view)
     sizes = []
     for name, relative in (("width", pw), ("height", ph)):
         source = instance if instance is not None and instance.attrs.get(name, "").strip() else node
-        value = _length(source.attrs.get(name), relative, relative, source.font)
+        value = _length(source.attrs.get(name), relative, relative, source.font, source.view)
         sizes.append(relative if value < 0 else value)
     width, height = sizes
     if width <= 0 or height <= 0:

@@ -665,9 +665,10 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
 
 EVEN = 3.0
 """A segment's area changes evenly where no step is over this many times the median (as pops are told)."""
-JOIN_CHECKS = np.linspace(0.0, 1.0, 13)
+JOIN_CHECKS = np.concatenate([[1e-6], np.linspace(0.0, 1.0, 13)[1:-1], [1.0 - 1e-6]])
 """The parameters at which a segment's in-betweens with contours joined (:mod:`.bridges`) are measured
-against those without."""
+against those without: the keys as the first and last are approached (a contour growing from a point
+on an outline is apart from it there), and 11 between."""
 
 
 def _probe(pairs: tuple[Pair, ...], first: Key, last: Key, stagger: float) -> Segment:
@@ -679,19 +680,25 @@ def _probe(pairs: tuple[Pair, ...], first: Key, last: Key, stagger: float) -> Se
 def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float
                    ) -> tuple[int, float]:
     """How the in-betweens of ``pairs`` under ``method`` fare at :data:`JOIN_CHECKS`: at how many of the
-    inner ones their moving contours tangle (:func:`.tangles.contact_times`, crossings and stroke
-    crossings; the growing ones keep clear of them, :mod:`.clearance`), and the largest change of their
-    closed contours' signed area from one check to the next over the median change (the pops rule)."""
+    inner ones their contours tangle (:func:`.tangles.contact_times`, crossings and stroke crossings,
+    among the contours that are more than a point then), and the largest change of their closed
+    contours' signed area from one check to the next over the median change (the pops rule)."""
     frames = method_paths(_probe(pairs, first, last, stagger), JOIN_CHECKS, method)
-    moving = [i for i, p in enumerate(pairs) if p.moving]
-    inner = JOIN_CHECKS[1:-1]
-    crossed, stroked = contact_times([frames[i][1:-1] for i in moving], [pairs[i].closed for i in moving], inner,
-                                     [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving])
+    inner = slice(1, len(JOIN_CHECKS) - 1)
+    there = np.array([[bool(np.any(f[k] != f[k][:1])) for f in frames] for k in range(len(JOIN_CHECKS))])[inner]
+    tangled: set[float] = set()
+    for pattern in np.unique(there, axis=0):
+        when = np.flatnonzero((there == pattern).all(axis=1))
+        which = np.flatnonzero(pattern)
+        crossed, stroked = contact_times([frames[i][inner][when] for i in which], [pairs[i].closed for i in which],
+                                         JOIN_CHECKS[inner][when], [frames[i][0] for i in which],
+                                         [frames[i][-1] for i in which])
+        tangled |= set(crossed) | set(stroked)
     area = sum((_signed_areas(frames[i]) for i, p in enumerate(pairs) if p.closed), np.zeros(len(JOIN_CHECKS)))
     steps = np.abs(np.diff(area))
     middle = float(np.median(steps))
     uneven = float(steps.max()) / middle if middle > 0 else (0.0 if steps.max() == 0 else np.inf)
-    return len(set(crossed) | set(stroked)), uneven
+    return len(tangled), uneven
 
 
 def _signed_areas(frames: Array) -> Array:

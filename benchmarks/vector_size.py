@@ -5,7 +5,7 @@ For every shipped scene and ``--pairs`` seeded random pairs of shipped icons (dr
 pixels): the Lottie, dotLottie and animated-SVG bytes against the MP4 of the same clip and against the
 two source SVGs (a pair's), path keyframes against frames drawn (summed over every layer: a run of frames
 of one element in one segment), and the worst replayed error: each contour's cubic Bézier path as the
-file holds it (pixels to a thousandth, tangents relative to their vertex), vertices and tangents moved
+file holds it (pixels to a hundredth, tangents relative to their vertex), vertices and tangents moved
 straight between keyframes through each span's cubic-bezier timing (bisection), drawn from the cubic's
 closed form and measured against the exact in-between polyline (shapely's Hausdorff distance, both
 ways) at every frame. ``--methods`` adds the keyframes per method on the same subjects.
@@ -35,7 +35,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 import tweenrender as tr  # noqa: E402
 from tweenrender.encode.animated_svg import svg_document  # noqa: E402
 from tweenrender.encode.lottie import lottie_document  # noqa: E402
-from tweenrender.encode.vector_data import STRAIGHT, VectorClip, VectorRun  # noqa: E402
+from tweenrender.encode.vector_data import PIXEL_DIGITS, STRAIGHT, VectorClip, VectorRun  # noqa: E402
 from tweenrender.pipeline.library import render_job  # noqa: E402
 from tweenrender.plan.options import RenderOptions  # noqa: E402
 from tweenrender.vector.export import vector_clip  # noqa: E402
@@ -46,12 +46,12 @@ _DRAWN = 32  # points of each cubic span the replay draws
 
 
 def _as_written(points: np.ndarray) -> np.ndarray:
-    """A path ``(K, M, 3, 2)`` (or straight ``(K, L, 2)``) as the files hold it: vertices to a thousandth,
-    control points their vertex plus an offset to a thousandth: ``(K, M, 3, 2)``."""
+    """A path ``(K, M, 3, 2)`` (or straight ``(K, L, 2)``) as the files hold it: vertices to ``PIXEL_DIGITS``
+    decimals, control points their vertex plus an offset to as many: ``(K, M, 3, 2)``."""
     if points.ndim == 3:
         points = points[:, :, None].repeat(3, axis=2)
-    vertex = np.round(points[:, :, 1:2], 3)
-    return vertex + np.round(points - points[:, :, 1:2], 3)
+    vertex = np.round(points[:, :, 1:2], PIXEL_DIGITS)
+    return vertex + np.round(points - points[:, :, 1:2], PIXEL_DIGITS)
 
 
 def _draw(curve: np.ndarray, closed: bool) -> np.ndarray:

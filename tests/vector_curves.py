@@ -71,24 +71,26 @@ def lottie_path_at(prop: dict, frame: float) -> tuple[np.ndarray, np.ndarray, np
 
 
 def svg_path_points(d: str) -> list[tuple[np.ndarray, bool]]:
-    """The subpaths an SVG ``d`` of ``M``, ``L``, ``C`` and ``Z`` (absolute) draws: ``[(points (P, 2), closed)]``."""
+    """The subpaths an SVG ``d`` of ``M``, ``L``, ``C`` and ``Z`` (``l`` and ``c`` relative to the pen) draws:
+    ``[(points (P, 2), closed)]``."""
     out: list[tuple[np.ndarray, bool]] = []
     for sub in re.findall(r"M[^M]*", d):
-        tokens = re.findall(r"[MLCZ]|-?[\d.]+(?:e-?\d+)?", sub)
+        tokens = re.findall(r"[MLCZlc]|-?[\d.]+(?:e-?\d+)?", sub)
         pen, start, pieces, closed = np.zeros(2), np.zeros(2), [], False
         command, numbers = "", []
         for token in tokens + ["M"]:
-            if token in "MLCZ":
+            if token in "MLCZlc":
                 if command == "M":
                     pen = start = np.array(numbers[:2])
                     pieces.append(pen[None])
-                elif command == "L":
+                elif command in "Ll":
                     for k in range(0, len(numbers), 2):
-                        pieces.append(np.stack([pen, np.array(numbers[k:k + 2])]))
-                        pen = np.array(numbers[k:k + 2])
-                elif command == "C":
+                        end = np.array(numbers[k:k + 2]) + (pen if command == "l" else 0.0)
+                        pieces.append(np.stack([pen, end]))
+                        pen = end
+                elif command in "Cc":
                     for k in range(0, len(numbers), 6):
-                        c = np.array(numbers[k:k + 6]).reshape(3, 2)
+                        c = np.array(numbers[k:k + 6]).reshape(3, 2) + (pen if command == "c" else 0.0)
                         pieces.append(cubic(pen, c[0], c[1], c[2]))
                         pen = c[2]
                 elif command == "Z":

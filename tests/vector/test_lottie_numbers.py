@@ -1,5 +1,5 @@
-"""Lottie numbers are written short: whole pixels as integers, no negative zero, the rest to a thousandth —
-the same values the file held before (parsed back, each equals the float rounded to a thousandth)."""
+"""Lottie numbers are written short: whole pixels as integers, no negative zero, the rest to a hundredth —
+the same values the file held before (parsed back, each equals the float rounded to a hundredth)."""
 
 from __future__ import annotations
 
@@ -19,5 +19,5 @@ def test_compact_numbers_parse_back_to_the_rounded_values() -> None:
     assert not re.search(r"(?<![\d.e+-])-?\d+\.0(?![\d])", text), "a whole number written with .0"
     assert not re.search(r"(?<![\d.])-0(?![\d.])", text), "a negative zero"
     back = np.array(json.loads(text), dtype=np.float64)
-    np.testing.assert_array_equal(back, np.round(values, 3) + 0.0)
+    np.testing.assert_array_equal(back, np.round(values, 2) + 0.0)
     assert isinstance(json.loads(text)[50][0], int)

@@ -6,11 +6,11 @@ from typing import Any
 
 import numpy as np
 
-from .vector_data import STRAIGHT, Array, Handles
+from .vector_data import PIXEL_DIGITS, STRAIGHT, Array, Handles
 
 __all__ = ["DIGITS", "compact", "static", "animated", "scalar", "percent", "transform", "contour", "path_item"]
 
-DIGITS = 3  # pixels are written to a thousandth
+DIGITS = PIXEL_DIGITS  # pixels are written to a hundredth
 
 
 def static(value: Any) -> dict[str, Any]:

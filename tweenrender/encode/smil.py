@@ -6,7 +6,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from .vector_data import STRAIGHT, Array, Handles
+from .vector_data import PIXEL_DIGITS, STRAIGHT, Array, Handles
 
 __all__ = ["number", "hex_colour", "path_data", "straight_spans", "clip_timing", "animate"]
 
@@ -61,7 +61,7 @@ def path_data(paths: list[Array], closed: tuple[bool, ...], lines: list[Array] |
         if points.ndim == 3:
             parts.append(_curve_data(points, shut, None if lines is None else lines[index]))
             continue
-        coords = [f"{number(x)},{number(y)}" for x, y in points.tolist()]
+        coords = [f"{number(x, PIXEL_DIGITS)},{number(y, PIXEL_DIGITS)}" for x, y in points.tolist()]
         parts.append("M" + coords[0] + " L" + " ".join(coords[1:]) + (" Z" if shut else ""))
     return " ".join(parts)
 
@@ -76,9 +76,9 @@ def straight_spans(curves: Array) -> Array:
 
 def _curve_data(points: Array, closed: bool, lines: Array | None) -> str:
     """``M`` and one ``C`` (``L`` where ``lines (M,)`` says so) per span of a cubic Bézier contour ``(M, 3, 2)``
-    (closed: back to its first vertex)."""
+    (closed: back to its first vertex), the points written to :data:`PIXEL_DIGITS` decimals."""
     def pair(xy: Array) -> str:
-        return f"{number(float(xy[0]))},{number(float(xy[1]))}"
+        return f"{number(float(xy[0]), PIXEL_DIGITS)},{number(float(xy[1]), PIXEL_DIGITS)}"
 
     count = len(points)
     spans = [(k, k + 1) for k in range(count - 1)] + ([(count - 1, 0)] if closed and count > 1 else [])

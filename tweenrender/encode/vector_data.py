@@ -12,10 +12,14 @@ from numpy.typing import NDArray
 
 from ..model import Color
 
-__all__ = ["Handles", "STRAIGHT", "GradientKeys", "ClipPathKeys", "VectorRun", "VectorClip"]
+__all__ = ["PIXEL_DIGITS", "Handles", "STRAIGHT", "GradientKeys", "ClipPathKeys", "VectorRun", "VectorClip"]
 
 Array = NDArray[np.float64]
 
+
+PIXEL_DIGITS = 2
+"""Decimals the files write a path's pixels with (a hundredth: each point moves at most 0.0071 px, which the
+keyframes leave room for; a thousandth wrote one more digit a number for nothing a player shows)."""
 
 Handles = tuple[float, float, float, float]
 """A CSS ``cubic-bezier(x1, y1, x2, y2)``: the timing between two keyframes."""

@@ -42,7 +42,7 @@ class Frames:
     @property
     def tracks(self) -> tuple[Track, ...]:
         if self._tracks is None:
-            self._tracks = tracks_of(self.job.scene)
+            self._tracks = self.job.tracks if self.job.tracks is not None else tracks_of(self.job.scene)
         return self._tracks
 
     @property

@@ -16,13 +16,14 @@ import os
 import uuid
 from collections import deque
 from concurrent.futures import Executor, Future
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Callable, Iterator, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..core.correspondence.correspond import SearchTooLarge
+from ..core.timing.timeline import tracks_of
 from ..encode.formats import TABLE
 from ..errors import RenderError
 from ..plan.job import RenderJob
@@ -235,6 +236,8 @@ def frame_stream(job: RenderJob, executor: Executor | None = None, workers: int 
         # workers die with this process, leave Ctrl-C, SIGHUP and SIGTERM to it (it stops them), and let go of
         # its stdout
         executor = ProcessPoolExecutor(max_workers=workers, initializer=worker_setup, initargs=(os.getpid(),))
+    if job.tracks is None:  # built once here, not again in every worker
+        job = replace(job, tracks=tracks_of(job.scene))
     width, height = job.frame_size
     # a batch of about 32 MB amortises a round trip without holding much memory
     batch = batch or max(1, min(8, (32 << 20) // (width * height * 4)))

@@ -7,7 +7,7 @@ frames can be rendered on its own, in any process.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
 import numpy as np
@@ -96,6 +96,9 @@ class RenderJob:
     paths: bool = False  # every vertex's path and the keys, behind the shapes
     onion: int = 0  # ghosted inbetweens before and after the frame (see raster.overlays)
     strip: bool = False  # the perimeter-ratio strip along each panel's bottom
+    # the scene's tracks where they were already built (shipped to worker processes, which then need not
+    # build them again); None: built where the frames are drawn
+    tracks: tuple[Track, ...] | None = field(default=None, compare=False, repr=False)
 
     @property
     def panel_size(self) -> tuple[int, int]:

@@ -5,9 +5,10 @@ identity at every frame). :func:`fit_curves` picks *break* vertices once for all
 then more where needed) and fits each span between two breaks with one cubic whose ends are the
 breaks' exact points and whose inner control points are least squares over the span's vertices,
 at parameters fixed across frames (mean chord length). The fit is then one linear map of the samples,
-so control points move as smoothly as the vertices do and keyframe well. A span is split at its
-worst vertex while, at some frame, a vertex of the polyline lies farther than the tolerance from the
-drawn cubic or a point of the cubic (densely sampled) lies farther than it from the polyline.
+so control points move as smoothly as the vertices do and keyframe well. From each break, one cubic
+reaches as far as it can (:func:`_longest_span`) while, at every frame, each vertex of the polyline
+lies within the tolerance of the drawn cubic and each point of the cubic (densely sampled) within it
+of the polyline; the next cubic starts where it ends.
 
 A curve is held as ``(F, M, 3, 2)``: per break vertex its in control point, the vertex, its out control
 point, absolute pixels (an open contour's first in and last out are the vertex itself, as are both
@@ -22,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["fit_curves", "free_points", "with_fixed_points", "curve_points", "curve_error", "CORNER_DEGREES"]
+__all__ = ["RIDGE", "STRAIGHT_RIDGE", "distance_to_polyline", "fit_curves", "free_points", "with_fixed_points", "curve_points", "curve_error", "CORNER_DEGREES"]
 
 Array = NDArray[np.float64]
 
@@ -30,8 +31,18 @@ CORNER_DEGREES = 50.0
 """A vertex where the polyline turns by more than this at some frame is a break (a corner)."""
 
 RIDGE = 0.05
-"""The ridge on a span's inner offsets, as a share of their normal matrix's mean diagonal."""
+"""The ridge on a span's inner offsets, as a share of their normal matrix's mean diagonal: it keeps control
+points steady from frame to frame, so that keyframes fitted to them reach far."""
 
+STRAIGHT_RIDGE = 1e-4
+"""A ridge for a contour that moves straight between two keys: its keyframes are those two, so the fit may
+follow each span as closely as it can (where that takes fewer cubics)."""
+
+_MEASURED_SHARE = 0.97
+"""The share of the tolerance a span's measured error may reach: the measure draws the cubic through points,
+and a long span's cubic may stray a little farther between them."""
+_NEWTON_ROUNDS = 10
+"""Newton steps on a span's parameters when the fit at mean chord length misses."""
 _CHUNK = 1 << 20  # point-segment pairs measured at once
 _DENSE = 24  # points of the cubic measured per span, besides those at the vertices' parameters
 
@@ -52,19 +63,19 @@ def _parameters(samples: Array, i0: int, i1: int) -> Array:
     return np.concatenate([[0.0], np.cumsum(steps) / total])
 
 
-def _fit_span(samples: Array, i0: int, i1: int) -> tuple[Array, Array]:
+def _fit_span(samples: Array, i0: int, i1: int, ridge: float = 0.0) -> tuple[Array, Array]:
     """The cubic over vertices ``i0..i1`` of ``samples (F, L', 2)`` at every frame: control points
     ``(F, 4, 2)`` and the vertices' parameters ``(i1 - i0 + 1,)``, one set for all frames (mean chord
     length), so the fit is one linear map of the samples. (Moving the parameters towards each vertex's
     nearest point, Newton's way, was measured to save nothing on icon pairs.)"""
     u = _parameters(samples, i0, i1)
-    return _solve(samples, i0, i1, u), u
+    return _solve(samples, i0, i1, u, ridge), u
 
 
-def _solve(samples: Array, i0: int, i1: int, u: Array) -> Array:
+def _solve(samples: Array, i0: int, i1: int, u: Array, ridge: float = 0.0) -> Array:
     """Control points ``(F, 4, 2)`` of the cubic from vertex ``i0`` to ``i1`` of ``samples (F, L', 2)`` through
     the vertices at parameters ``u``: the straight line's thirds plus inner offsets solved by least squares,
-    a little ridge (:data:`RIDGE`) keeping them steady where the parameters crowd."""
+    a ``ridge`` (a share of the normal matrix's mean diagonal) keeping them steady where the parameters crowd."""
     p0, p3 = samples[:, i0], samples[:, i1]  # (F, 2)
     thirds = np.stack([p0, (2 * p0 + p3) / 3, (p0 + 2 * p3) / 3, p3], axis=1)  # (F, 4, 2): the straight line
     inner = u[1:-1]
@@ -74,7 +85,7 @@ def _solve(samples: Array, i0: int, i1: int, u: Array) -> Array:
     residual = samples[:, i0 + 1:i1] - (p0[:, None] + inner[None, :, None] * (p3 - p0)[:, None])  # (F, n, 2)
     normal = basis.T @ basis
     # least norm where the parameters give no hold (every inner vertex on an end: no offset moves the cubic)
-    solve = np.linalg.pinv(normal + RIDGE * np.trace(normal) / 2 * np.eye(2)) @ basis.T  # (2, n)
+    solve = np.linalg.pinv(normal + ridge * np.trace(normal) / 2 * np.eye(2)) @ basis.T  # (2, n)
     controls = thirds.copy()
     controls[:, 1:3] += np.einsum("kn,fnd->fkd", solve, residual)
     return controls
@@ -85,7 +96,7 @@ def curve_points(controls: Array, u: Array) -> Array:
     return np.einsum("nk,...kd->...nd", _bernstein(u), controls)
 
 
-def _to_polyline(points: Array, polyline: Array) -> Array:
+def distance_to_polyline(points: Array, polyline: Array) -> Array:
     """Distance from each of ``points (F, P, 2)`` to the polyline ``polyline (F, Q, 2)`` (its Q - 1
     segments; one point if Q is 1) at the same frame: ``(F, P)``."""
     if polyline.shape[1] == 1:
@@ -102,16 +113,95 @@ def _to_polyline(points: Array, polyline: Array) -> Array:
 def curve_error(controls: Array, u: Array, polyline: Array) -> tuple[Array, Array]:
     """How far cubics ``controls (F, 4, 2)`` are from ``polyline (F, n, 2)`` (the span's exact vertices,
     at parameters ``u (n,)``), both ways: per frame the larger of the vertices' distance to the cubic
-    (drawn through ``_DENSE`` points and the vertices' parameters) and the cubic's points' distance to
+    (drawn through ``_DENSE`` points, the vertices' parameters and the midpoints between them) and the cubic's points' distance to
     the polyline, ``(F,)``; and each vertex's largest distance over frames, ``(n,)``."""
-    dense = np.union1d(np.linspace(0.0, 1.0, max(_DENSE, 2 * len(u))), u)
+    dense = np.union1d(np.union1d(np.linspace(0.0, 1.0, max(_DENSE, 2 * len(u))), u), (u[1:] + u[:-1]) / 2)
     drawn = curve_points(controls, dense)  # (F, D, 2)
     step = max(1, _CHUNK // (len(dense) * len(u)))  # frames measured at once
-    vertices = np.concatenate([_to_polyline(polyline[f:f + step], drawn[f:f + step])
+    vertices = np.concatenate([distance_to_polyline(polyline[f:f + step], drawn[f:f + step])
                                for f in range(0, len(drawn), step)])  # (F, n)
-    points = np.concatenate([_to_polyline(drawn[f:f + step], polyline[f:f + step])
+    points = np.concatenate([distance_to_polyline(drawn[f:f + step], polyline[f:f + step])
                              for f in range(0, len(drawn), step)])  # (F, D)
     return np.maximum(vertices.max(axis=1), points.max(axis=1)), vertices.max(axis=0)
+
+
+def _spans(ring: Array, breaks: list[int], tolerance: float, ridge: float) -> tuple[dict[tuple[int, int], Array], float]:
+    """The cubics from each of ``breaks`` (increasing vertex indices of ``ring (F, L', 2)``) to the next, each as
+    long as it can be (:func:`_longest_span`): control points ``(F, 4, 2)`` by ``(first, last)`` vertex, and the
+    largest error measured."""
+    spans: dict[tuple[int, int], Array] = {}
+    worst = 0.0
+    for i0, i1 in zip(breaks, breaks[1:]):
+        while i0 < i1:
+            end, controls, error = _longest_span(ring, i0, i1, tolerance, ridge)
+            spans[(i0, end)] = controls
+            worst = max(worst, error)
+            i0 = end
+    return spans, worst
+
+
+def _span_fit(ring: Array, i0: int, i1: int, tolerance: float, ridge: float) -> tuple[Array, float] | None:
+    """The cubic over vertices ``i0..i1`` of ``ring (F, L', 2)`` and its error, or ``None`` if it misses by
+    more than ``tolerance`` at some frame; an edge always fits (error 0). Fitted at mean chord length
+    (:func:`_fit_span`), then, if that misses, at parameters moved :data:`_NEWTON_ROUNDS` times by Newton's
+    step on the squared distances summed over frames (one set of parameters for all frames, so the fit stays
+    one linear map of the samples)."""
+    controls, u = _fit_span(ring, i0, i1, ridge)
+    if i1 - i0 < 2:
+        return controls, 0.0
+    tolerance *= _MEASURED_SHARE
+    error = float(curve_error(controls, u, ring[:, i0:i1 + 1])[0].max())
+    if error > tolerance:
+        for _ in range(_NEWTON_ROUNDS):
+            u = _newton_step(ring[:, i0:i1 + 1], controls, u)
+            controls = _solve(ring, i0, i1, u, ridge)
+        error = min(error, float(curve_error(controls, u, ring[:, i0:i1 + 1])[0].max()))
+    return (controls, error) if error <= tolerance else None
+
+
+def _newton_step(points: Array, controls: Array, u: Array) -> Array:
+    """Parameters ``u (n,)`` of ``points (F, n, 2)`` on the cubics ``controls (F, 4, 2)`` moved by one Newton step
+    on ``sum_f |B_f(u_j) - p_fj|²`` (ends kept at 0 and 1, order kept)."""
+    inner = u[1:-1]
+    if inner.size == 0:
+        return u
+    v = 1.0 - inner
+    first = 3 * np.einsum("nk,fkd->fnd", np.stack([v * v, 2 * v * inner, inner * inner], axis=-1),
+                          np.diff(controls, axis=1))
+    second = 6 * np.einsum("nk,fkd->fnd", np.stack([v, inner], axis=-1), np.diff(controls, n=2, axis=1))
+    miss = curve_points(controls, inner) - points[:, 1:-1]
+    slope = np.sum(miss * first, axis=(0, 2))
+    curvature = np.sum(first * first + miss * second, axis=(0, 2))
+    step = np.where(curvature > 1e-12, slope / np.where(curvature > 1e-12, curvature, 1.0), 0.0)
+    moved = np.maximum.accumulate(np.clip(inner - step, 0.0, 1.0))
+    return np.concatenate([[0.0], moved, [1.0]])
+
+
+def _longest_span(ring: Array, i0: int, stop: int, tolerance: float, ridge: float) -> tuple[int, Array, float]:
+    """The farthest vertex ``end`` (at most ``stop``) that one cubic from vertex ``i0`` reaches within
+    ``tolerance`` at every frame, found by doubling steps and then halving the gap between the last end
+    that fits and the first that fails (a span's fit nearly always worsens as it grows): ``end``, the
+    span's control points ``(F, 4, 2)`` and its error. Taking the longest span from each break in turn
+    needs far fewer cubics than splitting spans at their worst vertex."""
+    end = i0 + 1
+    best = _span_fit(ring, i0, end, tolerance, ridge)
+    assert best is not None
+    failed, step = stop + 1, 1
+    while end < stop:
+        candidate = min(end + step, stop)
+        found = _span_fit(ring, i0, candidate, tolerance, ridge)
+        if found is None:
+            failed = candidate
+            break
+        end, best, step = candidate, found, 2 * step
+    while failed - end > 1 and end < stop:
+        middle = (end + failed) // 2
+        found = _span_fit(ring, i0, middle, tolerance, ridge)
+        if found is None:
+            failed = middle
+        else:
+            end, best = middle, found
+    return end, best[0], best[1]
 
 
 def _corners(samples: Array, closed: bool) -> set[int]:
@@ -131,7 +221,7 @@ def _corners(samples: Array, closed: bool) -> set[int]:
     return {int(i) for i in np.flatnonzero(turned)}
 
 
-def fit_curves(samples: Array, closed: bool, tolerance: float) -> tuple[NDArray[np.intp], Array, float]:
+def fit_curves(samples: Array, closed: bool, tolerance: float, ridge: float = RIDGE) -> tuple[NDArray[np.intp], Array, float]:
     """Cubic Bézier contours for the polylines ``samples (F, L, 2)`` within ``tolerance`` pixels of them
     at every frame (both ways): the break vertices ``(M,)`` (indices into L, increasing), the curves
     ``(F, M, 3, 2)`` (in control point, vertex, out control point) and the largest distance measured (0
@@ -143,25 +233,9 @@ def fit_curves(samples: Array, closed: bool, tolerance: float) -> tuple[NDArray[
     ring = np.concatenate([samples, samples[:, :1]], axis=1) if closed else samples  # (F, L', 2)
     last = ring.shape[1] - 1
     breaks = sorted(_corners(samples, closed) | {0, last})
-    if closed and len(breaks) < 3 and last >= 3:  # a closed contour takes at least three spans
-        breaks = sorted(set(breaks) | {last // 3, (2 * last) // 3})
-    spans: dict[tuple[int, int], Array] = {}
-    worst = 0.0
-    pending = [(a, b) for a, b in zip(breaks, breaks[1:]) if b > a]
-    while pending:
-        i0, i1 = pending.pop()
-        controls, u = _fit_span(ring, i0, i1)
-        if i1 - i0 >= 2:
-            error, per_vertex = curve_error(controls, u, ring[:, i0:i1 + 1])
-            if float(error.max()) > tolerance:
-                inner = per_vertex[1:-1]
-                cut = i0 + 1 + int(np.argmax(inner)) if inner.size else (i0 + i1) // 2
-                if not i0 < cut < i1 or inner.max() <= 0:
-                    cut = (i0 + i1) // 2
-                pending += [(i0, cut), (cut, i1)]
-                continue
-            worst = max(worst, float(error.max()))
-        spans[(i0, i1)] = controls
+    spans, worst = _spans(ring, breaks, tolerance, ridge)
+    if closed and len(spans) < 3 and last >= 3:  # a closed contour takes at least three spans
+        spans, worst = _spans(ring, sorted(set(breaks) | {last // 3, (2 * last) // 3}), tolerance, ridge)
     order = sorted(spans)
     frames = samples.shape[0]
     heads = np.array([i0 for i0, _ in order], dtype=np.intp)

@@ -4,11 +4,14 @@
 maps scene units to output pixels, and splits each shape's frames into *runs*: consecutive frames
 of one segment on which it is drawn. A run keeps one list of contours (the segment's pairs, so
 every contour keeps one vertex count) and becomes a layer (Lottie, with ``ip``/``op``) or a path
-element shown over those frames (SVG). Keyframes come from :mod:`..core.keyframes`: a ``linear``
-segment whose keys fall on whole frames is exact with two keyframes and the segment's easing;
-every other run's paths are fitted within ``max_error`` pixels (keyframe values free within it, each
-span with its own timing; the run's first and last keyframes exact); paint within 1/255 (width, a
-gradient's geometry and clip paths within ``max_error``; see :mod:`.paint_keys`).
+element shown over those frames (SVG); a run goes on where a key's windings, fill rule or stroke
+ends take over only if the picture changes. Paths are cubic Bézier contours (:mod:`.curves`) keyed by
+:mod:`.keyframes`: a contour that moves straight between its segment's keys (``linear``, ``auto``'s
+straight paths with their copies spread) whose keys fall on whole frames is those two keys, timed by
+the segment's easing (in the Lottie, even where its element's other contours need more); every other
+run's paths are fitted within ``max_error`` pixels (keyframe values free within it, each span with its
+own timing; the run's first and last keyframes exact); paint within 1/255 (width, a gradient's geometry
+and clip paths within ``max_error``; see :mod:`.paint_keys`).
 """
 
 from __future__ import annotations
@@ -19,12 +22,12 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from .curves import fit_curves, free_points, with_fixed_points
+from .curves import RIDGE, STRAIGHT_RIDGE, distance_to_polyline, fit_curves, free_points, with_fixed_points
 from .dash_keys import contour_dashes, dash_rows
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
 from ..encode.formats import is_vector, listing, names, writer
-from ..encode.vector_data import STRAIGHT, Handles, VectorClip, VectorRun
+from ..encode.vector_data import PIXEL_DIGITS, STRAIGHT, Handles, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Scene, Shape
 from ..core.view import Viewport
@@ -44,9 +47,15 @@ CURVE_SHARE = 0.8
 (measured on icon pairs, ``benchmarks/vector_size.py``: the Lottie is 35× the sources at the median with
 half, 26× with 0.8: a path's vertices weigh more than its keyframes)."""
 
+_SAME = 1e-6
+"""Pixels within which two polylines count as drawing the same line (rounding of a straight continuation)."""
+EXACT_SHARE = 0.95
+"""The share of ``max_error`` the cubic fit of a contour that moves straight between two keys may take (its two
+keyframes play the fitted curves exactly, up to the files' rounding and the arithmetic's)."""
+
 _ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
-_ROUNDING = 0.5e-3 * np.sqrt(2.0)
-"""How far a vertex moves when the files round its pixels to a thousandth (a control point, written as
+_ROUNDING = 0.5 * 10.0 ** -PIXEL_DIGITS * np.sqrt(2.0)
+"""How far a vertex moves when the files round its pixels to :data:`PIXEL_DIGITS` decimals (a control point, written as
 an offset from its vertex, moves twice that at most): kept out of the bound."""
 
 
@@ -132,7 +141,8 @@ def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
 
     def look(f: int) -> tuple[object, ...]:
         at = shapes[f]
-        return (int(segments[f]), int(phases[f]), len(at.contours), at.reversed, _style(shape, at), gradients[f],
+        return (int(segments[f]), int(phases[f]), len(at.contours), _windings(shape, at), _drawn_style(shape, at),
+                gradients[f],
                 clip_path_make(at))
 
     out: list[tuple[int, int]] = []
@@ -145,6 +155,15 @@ def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
         if start is None and f < len(shapes) and drawn[f]:
             start = f
     return out
+
+
+def _windings(shape: Shape, at: ShapeAt) -> tuple[bool, ...]:
+    """Which contours are drawn reversed, as far as the picture can tell: nothing under ``evenodd``, and under
+    ``nonzero`` only relative to the first contour (every contour reversed fills the same), so a run goes on
+    where a key's windings take over and the picture does not change."""
+    if _style(shape, at)[0] == "evenodd" or not at.reversed:
+        return ()
+    return tuple(flip != at.reversed[0] for flip in at.reversed)
 
 
 def _refuse_uncarried(shape: Shape, at: ShapeAt) -> None:
@@ -239,46 +258,46 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                    for s, i in zip(samples, keep)]
         shapes = [*shapes, end_shape]
     closed = tuple(shapes[0].closed[i] for i in keep)
+    samples = [_opened(s, shut) for s, shut in zip(samples, closed)]
     paths: tuple[Array, ...] = ()
     contour_keys: tuple[tuple[tuple[int, ...], Array, tuple[Handles, ...]], ...] | None = None
-    fit_tolerance = max_error * CURVE_SHARE
+    exact_own: dict[int, tuple[tuple[int, ...], Array, tuple[Handles, ...]]] = {}
     if exact is not None and every_pair:
         a, b, segment = exact
-        ends = pair_paths(segment, np.array([0.0, 1.0]), method)  # every pair, growing ones too: (2, L_i, 2)
+        t = segment.local_t(run_times)
+        opened = _segment_ends(segment, method)
+        ends = [_drawn(viewport, opened[i], flips[i]) for i in keep]  # (2, L_i, 2) each
+        samples = [_with_ends(s, t, e, shut) for s, e, shut in zip(samples, ends, closed)]
         path_frames: tuple[int, ...] = (a, b)
-        fitted_curves = [fit_curves(np.concatenate([s, _drawn(viewport, ends[i][0], flips[i])[None],
-                                                    _drawn(viewport, ends[i][1], flips[i])[None]]), shut,
-                                    fit_tolerance) for s, i, shut in zip(samples, keep, closed)]
+        exact_tolerance = max_error * EXACT_SHARE - 2 * _ROUNDING  # the keyframes add nothing but rounding
+        fitted_curves = [_fewest_cubics(np.concatenate([s, e]), shut, exact_tolerance)
+                         for s, e, shut in zip(samples, ends, closed)]
         curves = [c for _, c, _ in fitted_curves]  # (F + 2, M_i, 3, 2) each
-        key_tolerance = _key_tolerance(max_error, max((e for _, _, e in fitted_curves), default=0.0))
         paths = tuple(c[-2:] for c in curves)
         ease = _timing(segment) or STRAIGHT
         eases: tuple[Handles, ...] = (ease,)
-        # the eased chord of the curves must be within the keyframes' share of the bound of the curves fitted
-        # at every frame (a contour may grow otherwise than straight)
-        t = segment.local_t(run_times)
-        fitted = _flat_curves([c[:len(run_times)] for c in curves], len(run_times))
-        k0, k1 = _flat_curves([p[:1] for p in paths], 1)[0], _flat_curves([p[1:] for p in paths], 1)[0]
-        chord = k0 + t[:, None, None] * (k1 - k0)
-        if paths and float(np.linalg.norm(chord - fitted, axis=-1).max()) > key_tolerance:
+        # each contour's eased chord must be within what the fit left of the bound (less the files' rounding) of
+        # its curves fitted at every frame (a contour may grow otherwise than straight); those that are keep
+        # their two keyframes
+        for index, (c, (_, _, error)) in enumerate(zip(curves, fitted_curves)):
+            fitted = c[:len(run_times)]
+            chord = c[-2] + t[:, None, None, None] * (c[-1] - c[-2])
+            if float(np.linalg.norm(chord - fitted, axis=-1).max()) <= max_error - error - 2 * _ROUNDING:
+                exact_own[index] = (path_frames, paths[index], eases)
+        if len(exact_own) < len(curves):
             paths = ()
             exact = None
     if exact is None or not every_pair:
         path_frames, paths, eases = (first,), (), ()
         if samples:
-            fitted_curves = [fit_curves(s, shut, fit_tolerance) for s, shut in zip(samples, closed)]
-            curves = [c for _, c, _ in fitted_curves]
-            errors = [e for _, _, e in fitted_curves]
-            free = [free_points(c) for c in curves]  # only these are keyframed; the rest sit on their vertex
-            keyed = fit_keyframes(np.concatenate([c[:, f] for c, f in zip(curves, free)], axis=1),
-                                  _key_tolerance(max_error, max(errors)))
-            path_frames = tuple(first + k for k in keyed.frames)
-            cuts = np.cumsum([int(f.sum()) for f in free])[:-1]
-            paths = tuple(with_fixed_points(v, f) for v, f in zip(np.split(keyed.values, cuts, axis=1), free))
-            eases = keyed.handles()
+            frames_in, paths, eases, (curves, free, errors) = keyed_curves(samples, closed, max_error)
+            path_frames = tuple(first + k for k in frames_in)
             if len(curves) > 1:  # each contour keyed on its own too, for the files that animate them apart
                 own = []
-                for c, f, error in zip(curves, free, errors):
+                for index, (c, f, error) in enumerate(zip(curves, free, errors)):
+                    if index in exact_own:  # straight between the keys: exact with its two keyframes
+                        own.append(exact_own[index])
+                        continue
                     alone = fit_keyframes(c[:, f], _key_tolerance(max_error, error))
                     own.append((tuple(first + k for k in alone.frames), with_fixed_points(alone.values, f),
                                 alone.handles()))
@@ -305,7 +324,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         channels = np.concatenate([channels, gradient.channels()], axis=1)
     paint_keys = greedy_keyframes(channels, 1.0)
     pick = np.array(paint_keys)
-    rule, cap, join, miter = _style(shape, shapes[0])
+    rule, cap, join, miter = _style(shape, next((at for at in shapes if _stroked(at)), shapes[0]))
     run = VectorRun(shape.name, first, stop, path_frames, paths, closed, eases, tuple(first + k for k in paint_keys),
                     None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
                     opacity[pick], rule, cap, join, miter, joined,
@@ -315,7 +334,85 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                     exact_lengths=tuple(s.shape[1] for s in samples),
                     contour_keys=contour_keys,
                     dash=None if dashes is None else tuple(d[pick] for d in dashes))
-    return replace(run, gradient_paths=gradient_frame_paths(run, max_error))
+    return replace(run, gradient_paths=gradient_frame_paths(run, max_error, keyed_curves))
+
+
+def keyed_curves(samples: list[Array], closed: tuple[bool, ...], max_error: float
+                 ) -> tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...], tuple[list[Array], list[NDArray[np.bool_]], list[float]]]:
+    """Contours ``samples`` (``(F, L_i, 2)`` each, pixels) as cubic Bézier paths keyed together within ``max_error``
+    of them at every frame: the keyframes' frames (from 0), the paths ``(K, M_i, 3, 2)``, each span's timing, and
+    the curves fitted at every frame, their free points and the distance each fit reached."""
+    fitted_curves = [fit_curves(s, shut, max_error * CURVE_SHARE) for s, shut in zip(samples, closed)]
+    curves = [c for _, c, _ in fitted_curves]
+    errors = [e for _, _, e in fitted_curves]
+    free = [free_points(c) for c in curves]  # only these are keyframed; the rest sit on their vertex
+    keyed = fit_keyframes(np.concatenate([c[:, f] for c, f in zip(curves, free)], axis=1),
+                          _key_tolerance(max_error, max(errors)))
+    cuts = np.cumsum([int(f.sum()) for f in free])[:-1]
+    paths = tuple(with_fixed_points(v, f) for v, f in zip(np.split(keyed.values, cuts, axis=1), free))
+    return keyed.frames, paths, keyed.handles(), (curves, free, errors)
+
+
+def _fewest_cubics(samples: Array, closed: bool, tolerance: float) -> tuple[NDArray[np.intp], Array, float]:
+    """:func:`~.curves.fit_curves` of ``samples (F, L, 2)`` with the ridge that takes fewer cubics: the steady
+    one, or the close one (a contour keyed only at its two keys needs no steadiness, and the close fit follows
+    the keys' own curves where their in-betweens are curves too)."""
+    fits = [fit_curves(samples, closed, tolerance, ridge) for ridge in (RIDGE, STRAIGHT_RIDGE)]
+    return min(fits, key=lambda fit: len(fit[0]))
+
+
+def _same_drawing(a: Array, b: Array, closed: bool) -> bool:
+    """Whether the polylines ``a`` and ``b`` ``(L, 2)`` (pixels) draw the same line: every vertex of each, and
+    the quarter points of ``a``'s edges, on the other (within :data:`_SAME`)."""
+    if a.shape != b.shape or not (np.all(np.isfinite(a)) and np.all(np.isfinite(b))):
+        return False
+    ring_a = np.concatenate([a, a[:1]]) if closed else a
+    ring_b = np.concatenate([b, b[:1]]) if closed else b
+    edges = ring_a[:-1, None] + np.array([0.25, 0.5, 0.75])[:, None] * (ring_a[1:] - ring_a[:-1])[:, None]
+    on_b = np.concatenate([a, edges.reshape(-1, 2)])
+    return bool(distance_to_polyline(on_b[None], ring_b[None]).max() <= _SAME
+                and distance_to_polyline(b[None], ring_a[None]).max() <= _SAME)
+
+
+def _opened(samples: Array, closed: bool) -> Array:
+    """``samples (F, L, 2)`` whose first (last) frame is replaced by the straight continuation of the two
+    frames after (before) it where that draws the same line: a method that spreads a key's coincident
+    copies along its edges in between (``auto``'s straight paths) moves them straight from there, so the
+    keyframes need not break at the key."""
+    if len(samples) < 3:
+        return samples
+    out = samples
+    for at, near, far in ((0, 1, 2), (-1, -2, -3)):
+        opened = 2 * samples[near] - samples[far]
+        if not np.array_equal(opened, samples[at]) and _same_drawing(opened, samples[at], closed):
+            out = out.copy() if out is samples else out
+            out[at] = opened
+    return out
+
+
+def _segment_ends(segment: Segment, method: str) -> list[Array]:
+    """Every pair's keys ``(2, L_i, 2)`` as the straight continuation of its in-betweens (at t = 1/3 and
+    2/3) where that draws the same as the key (copies of a vertex spread along its edges), else the key."""
+    keys = pair_paths(segment, np.array([0.0, 1.0]), method)
+    inner = pair_paths(segment, np.array([1 / 3, 2 / 3]), method)
+    out = []
+    for key, path, pair in zip(keys, inner, segment.pairs):
+        opened = np.stack([2 * path[0] - path[1], 2 * path[1] - path[0]])
+        scale = max(float(np.abs(key).max()), 1.0)
+        same = [_same_drawing(opened[k] / scale, key[k] / scale, pair.closed) for k in (0, 1)]
+        out.append(np.stack([opened[k] if same[k] else key[k] for k in (0, 1)]))
+    return out
+
+
+def _with_ends(samples: Array, t: Array, ends: Array, closed: bool) -> Array:
+    """``samples (F', L, 2)`` (the run's frames first, at segment times ``t (F,)``) with the frames at t = 0
+    and 1 replaced by ``ends (2, L, 2)`` where those draw the same line."""
+    out = samples.copy()
+    for k, at in ((0, 0.0), (1, 1.0)):
+        for f in np.flatnonzero(t == at):
+            if _same_drawing(ends[k], samples[f], closed):
+                out[f] = ends[k]
+    return out
 
 
 def _contour_dashes(dash: Array, samples: list[Array], shapes: list[ShapeAt], keep: list[int],
@@ -333,9 +430,17 @@ def _key_tolerance(max_error: float, fitted: float) -> float:
     return max(max_error - fitted - 2 * _ROUNDING, max_error * (1 - CURVE_SHARE) / 2)
 
 
-def _flat_curves(curves: list[Array], frames: int) -> Array:
-    """Curves ``(F, M_i, 3, 2)`` side by side as points ``(F, 3 · sum M_i, 2)``."""
-    return np.concatenate([c.reshape(frames, -1, 2) for c in curves], axis=1) if curves else np.zeros((frames, 0, 2))
+def _stroked(at: ShapeAt) -> bool:
+    """Whether ``at`` draws a stroke (a colour not fully transparent, a width)."""
+    stroke = at.paint.stroke
+    return stroke is not None and stroke[3] > 0 and at.paint.stroke_width > 0
+
+
+def _drawn_style(shape: Shape, at: ShapeAt) -> tuple[str, str | None, str | None, float | None]:
+    """:func:`_style` as far as the picture can tell: no caps, joins nor miter limit where no stroke is drawn,
+    so a run goes on where the next key's stroke ends take over while neither key strokes."""
+    rule, cap, join, miter = _style(shape, at)
+    return (rule, cap, join, miter) if _stroked(at) else (rule, None, None, None)
 
 
 def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:

@@ -14,7 +14,9 @@ colour. Clip paths are each frame's clip regions in pixels.
 from __future__ import annotations
 
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -272,13 +274,15 @@ def clip_path_keys(shapes: list[ShapeAt], first: int, viewport: Viewport, tolera
     return ClipPathKeys(tuple(first + k for k in keys), tuple(tuple(c[keys] for c in region) for region in regions))
 
 
-def gradient_frame_paths(run: VectorRun, tolerance: float
+def gradient_frame_paths(run: VectorRun, tolerance: float, keyed: Callable[..., tuple[Any, ...]]
                          ) -> tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None:
     """The run's contours in its elliptical radial gradient's own frame, as the player places that frame at
-    each frame: ``(frames, ((K, L_i, 2) per contour), eases (K - 1,))``; ``None`` for a linear or circular gradient
-    (or none). Where the frame never moves, the run's own keyframes mapped into it (an affine map keeps
-    straight lines straight); else the exact paths at every frame of the run mapped through the player's
-    transform there, keyframed so that, mapped back, they stay within ``tolerance`` pixels."""
+    each frame: ``(frames, (one path per contour, as ``VectorRun.paths``), eases (K - 1,))``; ``None`` for a
+    linear or circular gradient (or none). Where the frame never moves, the run's own keyframes mapped into it
+    (an affine map keeps a cubic a cubic of its mapped control points); else the exact paths at every frame of
+    the run mapped through the player's transform there and keyed as curves by ``keyed`` (``(samples, closed,
+    tolerance) -> (frames from 0, paths, eases, ...)``) so that, mapped back, they stay within ``tolerance``
+    pixels."""
     gradient = run.gradient
     if gradient is None or gradient.kind == "linear" or gradient.circular:
         return None
@@ -293,10 +297,10 @@ def gradient_frame_paths(run: VectorRun, tolerance: float
     exact = run.exact_frames  # (F, sum L_i, 2)
     placed = np.stack([_into(exact[f], centre[f], angle[f], ratio[f]) for f in range(len(frames))])
     stretch = max(1.0, float(ratio.max()))  # the transform lengthens no distance more than this
-    picked = greedy_keyframes(placed * stretch, tolerance)
     bounds = np.cumsum([0] + [c.shape[1] for c in run.exact_contours()])
-    return (tuple(run.first + k for k in picked), tuple(placed[picked, a:b] for a, b in zip(bounds, bounds[1:])),
-            ())
+    picked, paths, eases = keyed([placed[:, a:b] for a, b in zip(bounds, bounds[1:])], run.closed,
+                                 tolerance / stretch)[:3]
+    return tuple(run.first + k for k in picked), paths, eases
 
 
 def _into(points: Array, centre: Array, angle: float, ratio: float) -> Array:

@@ -239,3 +239,20 @@ def _session(url: str, size: tuple[int, int], domains: tuple[str, ...]) -> Itera
             yield browser, session
         finally:
             browser.close()
+
+
+def svg_screenshots(svgs: list[Path], sizes: list[tuple[int, int]], slot: int, folder: Path) -> list[Any]:
+    """Chromium's pictures of ``svgs``, each drawn as an ``<img>`` of its size ``(w, h)`` at the top left of
+    a ``slot`` × ``slot`` place, all in one screenshot: RGB floats ``(h, w, 3)`` in [0, 255]."""
+    import imageio.v3 as iio
+
+    images = "".join(f"<img src='{svg.as_uri()}' width='{w}' height='{h}' "
+                     f"style='position:absolute;left:0;top:{slot * i}px'>" for i, (svg, (w, h)) in
+                     enumerate(zip(svgs, sizes)))
+    page, shot = folder / "page.html", folder / "shot.png"
+    page.write_text(f"<html><body style='margin:0;background:white'>{images}</body></html>")
+    subprocess.run([chromium() or "chromium", "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+                    "--allow-file-access-from-files", f"--window-size={slot},{slot * len(svgs)}",
+                    f"--screenshot={shot}", page.as_uri()], capture_output=True, timeout=120, check=False)
+    whole = iio.imread(shot, mode="RGB").astype(float)
+    return [whole[slot * i:slot * i + h, :w] for i, (w, h) in enumerate(sizes)]

@@ -8,7 +8,6 @@ Each drawing is made so that the CSS rules paint its square green and any misrea
 from __future__ import annotations
 
 import shutil
-import subprocess
 import warnings
 from pathlib import Path
 
@@ -16,6 +15,7 @@ import numpy as np
 import pytest
 
 import tweenrender as tr
+from tests.browser import svg_screenshots
 
 GREEN, RED, WHITE = (0, 128, 0), (255, 0, 0), (255, 255, 255)
 SIZE = 40
@@ -82,17 +82,7 @@ def _ours(svg: Path) -> np.ndarray:
 
 def _chromium(svgs: list[Path], folder: Path) -> list[np.ndarray]:
     """Chromium's pictures of ``svgs``, each drawn as an ``<img>``, all in one screenshot."""
-    import imageio.v3 as iio
-
-    images = "".join(f"<img src='{svg.as_uri()}' width='{SIZE}' height='{SIZE}' "
-                     f"style='position:absolute;left:0;top:{SIZE * i}px'>" for i, svg in enumerate(svgs))
-    page, shot = folder / "page.html", folder / "shot.png"
-    page.write_text(f"<html><body style='margin:0;background:white'>{images}</body></html>")
-    subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
-                    "--allow-file-access-from-files", f"--window-size={SIZE},{SIZE * len(svgs)}",
-                    f"--screenshot={shot}", page.as_uri()], capture_output=True, timeout=120, check=False)
-    whole = iio.imread(shot, mode="RGB").astype(int)
-    return [whole[SIZE * i:SIZE * (i + 1), :SIZE] for i in range(len(svgs))]
+    return [p.astype(int) for p in svg_screenshots(svgs, [(SIZE, SIZE)] * len(svgs), SIZE, folder)]
 
 
 def _colour_at(picture: np.ndarray, x: int, y: int) -> tuple[int, ...]:

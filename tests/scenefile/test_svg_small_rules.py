@@ -8,7 +8,6 @@ Each case is drawn by tweenrender and by headless Chromium, an independent rende
 from __future__ import annotations
 
 import shutil
-import subprocess
 import warnings
 from pathlib import Path
 
@@ -16,6 +15,7 @@ import numpy as np
 import pytest
 
 import tweenrender as tr
+from tests.browser import svg_screenshots
 from tests.scenefile.test_key_frames import measures
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -110,18 +110,7 @@ def _ours(svg: Path, name: str) -> np.ndarray:
 def _chromium(svgs: list[Path], sizes: list[tuple[int, int]], folder: Path) -> list[np.ndarray]:
     """Chromium's pictures of ``svgs``, each drawn as an ``<img>`` of its size in a SIZE × SIZE slot, all in
     one screenshot."""
-    import imageio.v3 as iio
-
-    images = "".join(f"<img src='{svg.as_uri()}' width='{w}' height='{h}' "
-                     f"style='position:absolute;left:0;top:{SIZE * i}px'>" for i, (svg, (w, h)) in
-                     enumerate(zip(svgs, sizes)))
-    page, shot = folder / "page.html", folder / "shot.png"
-    page.write_text(f"<html><body style='margin:0;background:white'>{images}</body></html>")
-    subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
-                    "--allow-file-access-from-files", f"--window-size={SIZE},{SIZE * len(svgs)}",
-                    f"--screenshot={shot}", page.as_uri()], capture_output=True, timeout=120, check=False)
-    whole = iio.imread(shot, mode="RGB").astype(float)
-    return [whole[SIZE * i:SIZE * i + h, :w] for i, (w, h) in enumerate(sizes)]
+    return svg_screenshots(svgs, sizes, SIZE, folder)
 
 
 @pytest.fixture(scope="module")

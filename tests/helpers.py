@@ -34,6 +34,57 @@ def run_module(*args: str, cwd: Path | None = None) -> subprocess.CompletedProce
                           text=True, cwd=cwd, timeout=600)
 
 
+def run_main(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
+    """``tweenrender ARGS`` run in this process, seen as :func:`run_module` sees a process: the exit code, and
+    stdout and stderr read as text from file descriptors 1 and 2 (so what a library or a child writes there is
+    seen too), Python's streams encoding as a pipe's (UTF-8, strict on stdout), the warnings a fresh
+    interpreter would show written to stderr. For tests of what a command does and says; signals, exits,
+    start-up and the interpreter's own warnings are tested on real processes (:func:`run_module`)."""
+    import io
+    import tempfile
+    import warnings
+
+    from tweenrender.cli.main import main
+
+    for stream in (sys.stdout, sys.stderr):
+        stream.flush()
+    here, streams, kept = os.getcwd(), (sys.stdout, sys.stderr), (os.dup(1), os.dup(2))
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err, \
+            warnings.catch_warnings(record=True) as caught:
+        warnings.resetwarnings()  # a fresh interpreter's filters
+        for quiet in (DeprecationWarning, PendingDeprecationWarning, ImportWarning, ResourceWarning):
+            warnings.simplefilter("ignore", quiet)
+        warnings.filterwarnings("default", category=DeprecationWarning, module="__main__")
+        os.dup2(out.fileno(), 1)
+        os.dup2(err.fileno(), 2)
+        sys.stdout = io.TextIOWrapper(open(os.dup(1), "wb"), encoding="utf-8", errors="strict", line_buffering=False)
+        sys.stderr = io.TextIOWrapper(open(os.dup(2), "wb"), encoding="utf-8", errors="backslashreplace",
+                                      line_buffering=True)
+        try:
+            if cwd is not None:
+                os.chdir(cwd)
+            try:
+                code = main([str(a) for a in args])
+            except SystemExit as done:  # --help, --version
+                code = done.code if isinstance(done.code, int) else (0 if done.code is None else 1)
+            for shown in caught:
+                sys.stderr.write(warnings.formatwarning(shown.message, shown.category, shown.filename, shown.lineno,
+                                                        shown.line))
+        finally:
+            for stream in (sys.stdout, sys.stderr):
+                stream.close()
+            sys.stdout, sys.stderr = streams
+            os.dup2(kept[0], 1)
+            os.dup2(kept[1], 2)
+            for fd in kept:
+                os.close(fd)
+            os.chdir(here)
+        out.seek(0)
+        err.seek(0)
+        return subprocess.CompletedProcess(["tweenrender", *map(str, args)], code, out.read().decode(),
+                                           err.read().decode())
+
+
 def decode(path: Path) -> tuple[dict, list[np.ndarray]]:
     """A video's metadata and every frame as RGB ``(H, W, 3)`` uint8, decoded by ffmpeg."""
     import imageio_ffmpeg

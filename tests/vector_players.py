@@ -13,12 +13,14 @@ without it, or without node (Skottie) or chromium (lottie-web), the checks that 
 from __future__ import annotations
 
 import base64
+import contextlib
 import json
 import os
 import shutil
 import subprocess
 import tempfile
 import time
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import numpy as np
@@ -45,8 +47,13 @@ def bezier_timing(x: np.ndarray, handles: np.ndarray | tuple[float, float, float
 
 
 def ink(picture: np.ndarray, background: tuple[int, int, int]) -> np.ndarray:
-    """Where ``picture (H, W, ≥3)`` differs from the opaque ``background`` by more than 32/255: ``(H, W)`` bool."""
-    return np.any(np.abs(picture[..., :3].astype(np.int16) - np.array(background, dtype=np.int16)) > _INK, axis=-1)
+    """Where ``picture (H, W, ≥3)`` uint8 differs from the opaque ``background`` by more than 32/255: ``(H, W)``
+    bool (a table per channel, by value: the same as comparing each channel's difference)."""
+    values = np.arange(256, dtype=np.int16)
+    out = np.zeros(picture.shape[:2], dtype=bool)
+    for channel, level in enumerate(background[:3]):
+        out |= (np.abs(values - level) > _INK)[picture[..., channel]]
+    return out
 
 
 def measures(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> tuple[float, float]:
@@ -57,7 +64,7 @@ def measures(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> 
     count = np.count_nonzero(union)
     if count == 0:
         return 1.0, 0.0
-    difference = np.abs(a[..., :3].astype(np.int16) - b[..., :3].astype(np.int16))[union]
+    difference = np.abs(a[union][:, :3].astype(np.int16) - b[union][:, :3].astype(np.int16))
     return np.count_nonzero(ink_a & ink_b) / count, float(difference.mean() / 255.0)
 
 
@@ -86,20 +93,26 @@ def background_of(scene: object) -> tuple[int, int, int]:
 
 
 def check_pictures(scene: object, pictures: list[np.ndarray], frames: list[int], method: str | None,
-                   player: str) -> list[tuple[float, float]]:
+                   player: str, ours: Callable[[int], np.ndarray] | None = None) -> list[tuple[float, float]]:
     """Assert that each of ``pictures`` (RGB or straight RGBA) of ``frames`` is within :data:`IOU` and
-    :data:`COLOUR` of ``tr.frame`` of ``scene`` at the same time; returns the measures per frame."""
-    import tweenrender as tr
-
+    :data:`COLOUR` of ``tr.frame`` of ``scene`` at the same time (``ours(frame)``, where given, is that frame
+    over the background, already drawn); returns the measures per frame."""
     background = background_of(scene)
+    draw = ours or (lambda frame: project_frame(scene, frame, method))
     out = []
     for frame, picture in zip(frames, pictures):
-        ours = over(tr.frame(scene, frame / scene.fps, method=method), background)  # type: ignore[attr-defined]
         theirs = over(picture, background) if picture.shape[-1] == 4 else picture
-        iou, error = measures(ours, theirs, background)
+        iou, error = measures(draw(frame), theirs, background)
         assert iou >= IOU and error <= COLOUR, f"{player}, frame {frame}: IoU {iou:.4f}, colour error {error:.4f}"
         out.append((iou, error))
     return out
+
+
+def project_frame(scene: object, frame: int, method: str | None) -> np.ndarray:
+    """``tr.frame`` of ``scene`` at frame ``frame`` under ``method``, over its background: ``(H, W, 3)`` uint8."""
+    import tweenrender as tr
+
+    return over(tr.frame(scene, frame / scene.fps, method=method), background_of(scene))  # type: ignore[attr-defined]
 
 
 def sample_frames(scene: object, count: int) -> list[int]:
@@ -110,51 +123,103 @@ def sample_frames(scene: object, count: int) -> list[int]:
     return sorted({0, count - 1, *np.linspace(0, count - 1, 10).round().astype(int).tolist(), *around})
 
 
+class Clip:
+    """``scene`` under ``method`` written once as Lottie and once as an animated SVG into ``folder`` (each when
+    first asked for), with the project's own frames drawn once each: what several players are checked against."""
+
+    def __init__(self, scene: object, folder: Path, method: str | None = None, name: str = "clip") -> None:
+        from tweenrender.plan.job import total_frames
+
+        self.scene, self.folder, self.method, self.name = scene, folder, method, name
+        self.count = total_frames(scene)
+        self.sample = sample_frames(scene, self.count)
+        self._lottie: Path | None = None
+        self._svg: Path | None = None
+        self._ours: dict[int, np.ndarray] = {}
+
+    @property
+    def size(self) -> tuple[int, int]:
+        return self.scene.size  # type: ignore[attr-defined]
+
+    @property
+    def lottie(self) -> Path:
+        """The Lottie file of the clip, written on first need."""
+        if self._lottie is None:
+            import tweenrender as tr
+
+            self._lottie = tr.write(self.scene, self.folder / f"{self.name}.json", method=self.method)
+        return self._lottie
+
+    def svg(self) -> Path:
+        """The animated SVG of the clip, written on first need."""
+        if self._svg is None:
+            import tweenrender as tr
+
+            self._svg = tr.write(self.scene, self.folder / f"{self.name}.svg", method=self.method)
+        return self._svg
+
+    def ours(self, frame: int) -> np.ndarray:
+        """The project's frame ``frame`` over the background: ``(H, W, 3)`` uint8, drawn once."""
+        if frame not in self._ours:
+            self._ours[frame] = project_frame(self.scene, frame, self.method)
+        return self._ours[frame]
+
+    def frames(self, every_frame: bool) -> list[int]:
+        return list(range(self.count)) if every_frame else self.sample
+
+    def check(self, pictures: list[np.ndarray], frames: list[int], player: str) -> None:
+        check_pictures(self.scene, pictures, frames, self.method, player, self.ours)
+
+    def check_rlottie_thorvg(self, every_frame: bool = True) -> None:
+        """rlottie's pictures of every frame (or the sample) and ThorVG's of the sample."""
+        frames = self.frames(every_frame)
+        self.check(rlottie_frames(self.lottie, frames, self.size), frames, "rlottie")
+        self.check(thorvg_frames(self.lottie, self.sample, self.size), self.sample, "ThorVG")
+
+    def check_skottie(self, every_frame: bool = True) -> None:
+        frames = self.frames(every_frame)
+        self.check(skottie_frames(self.lottie, frames, self.size), frames, "Skottie")
+
+    def check_lottie_web(self, every_frame: bool = True, browser: PlayerBrowser | None = None) -> None:
+        frames = self.frames(every_frame)
+        self.check(lottie_web_frames(self.lottie, frames, self.size, background_of(self.scene), browser), frames,
+                   "lottie-web")
+
+    def five_times(self) -> list[int]:
+        """The frames at t = 0, ¼, ½, ¾, 1 of the clip."""
+        return sorted({round(q * (self.count - 1)) for q in (0, 0.25, 0.5, 0.75, 1)})
+
+    def check_chromium(self, browser: PlayerBrowser | None = None) -> None:
+        """Chromium's pictures of the animated SVG paused at t = 0, ¼, ½, ¾, 1 (at frame times)."""
+        frames = self.five_times()
+        fps = self.scene.fps  # type: ignore[attr-defined]
+        pictures = chromium_svg_frames([(self.svg(), [f / fps for f in frames], self.size)], browser)[0]
+        self.check(pictures, frames, f"Chromium, {self.name}")
+
+
 def check_lottie_players(scene: object, folder: Path, method: str | None = None, every_frame: bool = True) -> None:
     """Write ``scene`` as Lottie and check what rlottie (every frame, or :func:`sample_frames`) and ThorVG
     (the sample) draw of it against the project's frames."""
-    import tweenrender as tr
-    from tweenrender.plan.job import total_frames
-
-    target = tr.write(scene, folder / "clip.json", method=method)
-    count = total_frames(scene)
-    sample = sample_frames(scene, count)
-    rlottie_picked = list(range(count)) if every_frame else sample
-    size = scene.size  # type: ignore[attr-defined]
-    check_pictures(scene, rlottie_frames(target, rlottie_picked, size), rlottie_picked, method, "rlottie")
-    check_pictures(scene, thorvg_frames(target, sample, size), sample, method, "ThorVG")
+    Clip(scene, folder, method).check_rlottie_thorvg(every_frame)
 
 
 def check_skottie(scene: object, folder: Path, method: str | None = None, every_frame: bool = True) -> None:
     """Write ``scene`` as Lottie and check what Skottie draws of every frame (or :func:`sample_frames`)
     against the project's frames (the caller skips first where :func:`skottie_missing` says why it cannot run)."""
-    import tweenrender as tr
-    from tweenrender.plan.job import total_frames
-
-    target = tr.write(scene, folder / "skottie.json", method=method)
-    count = total_frames(scene)
-    frames = list(range(count)) if every_frame else sample_frames(scene, count)
-    check_pictures(scene, skottie_frames(target, frames, scene.size), frames, method,  # type: ignore[attr-defined]
-                   "Skottie")
+    Clip(scene, folder, method, "skottie").check_skottie(every_frame)
 
 
 def check_lottie_web(scene: object, folder: Path, method: str | None = None, every_frame: bool = True) -> None:
     """Write ``scene`` as Lottie and check what lottie-web (SVG renderer, headless Chromium) draws of every frame
     (or :func:`sample_frames`) against the project's frames (the caller skips first where
     :func:`lottie_web_missing` says why it cannot run)."""
-    import tweenrender as tr
-    from tweenrender.plan.job import total_frames
-
-    target = tr.write(scene, folder / "lottie-web.json", method=method)
-    count = total_frames(scene)
-    frames = list(range(count)) if every_frame else sample_frames(scene, count)
-    pictures = lottie_web_frames(target, frames, scene.size, background_of(scene))  # type: ignore[attr-defined]
-    check_pictures(scene, pictures, frames, method, "lottie-web")
+    Clip(scene, folder, method, "lottie-web").check_lottie_web(every_frame)
 
 
-def check_chromium(cases: list[tuple[str, object, str | None]], folder: Path) -> None:
+def check_chromium(cases: list[tuple[str, object, str | None]], folder: Path,
+                   browser: PlayerBrowser | None = None) -> None:
     """Write each ``(name, scene, method)`` as an animated SVG and check Chromium's pictures at t = 0, ¼, ½, ¾, 1
-    of the clip (at frame times) against the project's frames, one browser for all."""
+    of the clip (at frame times) against the project's frames, one browser for all (``browser`` if given)."""
     import tweenrender as tr
     from tweenrender.plan.job import total_frames
 
@@ -165,7 +230,7 @@ def check_chromium(cases: list[tuple[str, object, str | None]], folder: Path) ->
         frames = sorted({round(q * (count - 1)) for q in (0, 0.25, 0.5, 0.75, 1)})
         files.append((target, [f / scene.fps for f in frames], scene.size))  # type: ignore[attr-defined]
         picks.append(frames)
-    shots = chromium_svg_frames(files)
+    shots = chromium_svg_frames(files, browser)
     for (name, scene, method), frames, pictures in zip(cases, picks, shots):
         check_pictures(scene, pictures, frames, method, f"Chromium, {name}")
 
@@ -208,39 +273,72 @@ html, body {{ margin: 0; overflow: hidden; background: {background} }} svg {{ di
 loop: false, autoplay: false, animationData: window.animationData}});</script></body></html>"""
 
 
-def lottie_web_frames(path: Path, frames: list[int], size: tuple[int, int],
-                      background: tuple[int, int, int]) -> list[np.ndarray]:
-    """lottie-web's pictures of ``frames`` (its SVG renderer in headless Chromium, ``goToAndStop`` at each frame,
-    over the opaque ``background``): RGB ``(H, W, 3)`` each."""
-    from tests.browser import _Browser, chromium
+class PlayerBrowser:
+    """One headless Chromium page kept for many pictures (each start of a browser costs about half a CPU
+    second): :meth:`show` a URL at a size, then :meth:`shot`."""
 
-    executable = chromium()
-    if executable is None:
-        raise FileNotFoundError("chromium")
+    def __init__(self) -> None:
+        from tests.browser import _Browser, chromium
+
+        executable = chromium()
+        if executable is None:
+            raise FileNotFoundError("chromium")
+        self._profile = tempfile.TemporaryDirectory(prefix="tweenrender-players-")
+        self.browser = _Browser(executable, self._profile.name)
+        target = self.browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+        self.session = self.browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+        self.browser.send("Page.enable", session=self.session)
+
+    def show(self, url: str, size: tuple[int, int], ready: str) -> None:
+        """Load ``url`` in a ``size = (width, height)`` window and wait until the JavaScript ``ready`` holds."""
+        width, height = size
+        self.browser.send("Emulation.setDeviceMetricsOverride",
+                          {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False},
+                          session=self.session)
+        self.browser.send("Page.navigate", {"url": url}, session=self.session)
+        _wait_for(self.browser, self.session, f"location.href === {json.dumps(url)} && ({ready})")
+
+    def run(self, expression: str) -> None:
+        self.browser.send("Runtime.evaluate", {"expression": expression, "returnByValue": True}, session=self.session)
+
+    def shot(self) -> np.ndarray:
+        return _painted_shot(self.browser, self.session)
+
+    def close(self) -> None:
+        self.browser.close()
+        self._profile.cleanup()
+
+
+@contextlib.contextmanager
+def _kept_or_own(browser: PlayerBrowser | None) -> Iterator[PlayerBrowser]:
+    """``browser`` when given (left open), else a browser of its own, closed afterwards."""
+    if browser is not None:
+        yield browser
+        return
+    own = PlayerBrowser()
+    try:
+        yield own
+    finally:
+        own.close()
+
+
+def lottie_web_frames(path: Path, frames: list[int], size: tuple[int, int], background: tuple[int, int, int],
+                      browser: PlayerBrowser | None = None) -> list[np.ndarray]:
+    """lottie-web's pictures of ``frames`` (its SVG renderer in headless Chromium, ``goToAndStop`` at each frame,
+    over the opaque ``background``; in ``browser`` if given): RGB ``(H, W, 3)`` each."""
     width, height = size
     out = []
-    with tempfile.TemporaryDirectory(prefix="tweenrender-lottie-web-") as scratch:
+    with tempfile.TemporaryDirectory(prefix="tweenrender-lottie-web-") as scratch, _kept_or_own(browser) as shown:
         (Path(scratch) / "animation.js").write_text(f"window.animationData = {path.read_text(encoding='utf-8')};",
                                                     encoding="utf-8")
         page = Path(scratch) / "page.html"
         page.write_text(_LOTTIE_PAGE.format(background="rgb({},{},{})".format(*background), width=width,
                                             height=height, player=lottie_web_player().resolve().as_uri()),
-                                encoding="utf-8")
-        browser = _Browser(executable, str(Path(scratch) / "profile"))
-        try:
-            target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-            browser.send("Page.enable", session=session)
-            browser.send("Emulation.setDeviceMetricsOverride",
-                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False}, session=session)
-            browser.send("Page.navigate", {"url": page.resolve().as_uri()}, session=session)
-            _wait_for(browser, session, "!!(window.animation && window.animation.isLoaded)")
-            for frame in frames:
-                browser.send("Runtime.evaluate", {"expression": f"window.animation.goToAndStop({frame}, true)",
-                                                  "returnByValue": True}, session=session)
-                out.append(_painted_shot(browser, session))
-        finally:
-            browser.close()
+                        encoding="utf-8")
+        shown.show(page.resolve().as_uri(), size, "!!(window.animation && window.animation.isLoaded)")
+        for frame in frames:
+            shown.run(f"window.animation.goToAndStop({frame}, true)")
+            out.append(shown.shot())
     return out
 
 
@@ -327,37 +425,19 @@ _PAUSE = """
 """
 
 
-def chromium_svg_frames(files: list[tuple[Path, list[float], tuple[int, int]]]) -> list[list[np.ndarray]]:
+def chromium_svg_frames(files: list[tuple[Path, list[float], tuple[int, int]]],
+                        browser: PlayerBrowser | None = None) -> list[list[np.ndarray]]:
     """Headless Chromium's pictures of each animated SVG ``(path, times, (width, height))``, paused at
-    each of its ``times`` seconds: RGB ``(H, W, 3)`` each, one browser for all."""
-    from tests.browser import _Browser, chromium
-
-    executable = chromium()
-    if executable is None:
-        raise FileNotFoundError("chromium")
+    each of its ``times`` seconds: RGB ``(H, W, 3)`` each, one browser for all (``browser`` if given)."""
     out = []
-    with tempfile.TemporaryDirectory(prefix="tweenrender-chromium-") as profile:
-        browser = _Browser(executable, profile)
-        try:
-            target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-            browser.send("Page.enable", session=session)
-            for path, times, (width, height) in files:
-                browser.send("Emulation.setDeviceMetricsOverride",
-                             {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False},
-                             session=session)
-                url = path.resolve().as_uri()
-                browser.send("Page.navigate", {"url": url}, session=session)
-                _wait_for(browser, session,
-                          f"location.href === {json.dumps(url)} && document.readyState === 'complete'")
-                shots = []
-                for when in times:
-                    browser.send("Runtime.evaluate", {"expression": _PAUSE.format(time=repr(float(when))),
-                                                      "returnByValue": True}, session=session)
-                    shots.append(_painted_shot(browser, session))
-                out.append(shots)
-        finally:
-            browser.close()
+    with _kept_or_own(browser) as shown:
+        for path, times, size in files:
+            shown.show(path.resolve().as_uri(), size, "document.readyState === 'complete'")
+            shots = []
+            for when in times:
+                shown.run(_PAUSE.format(time=repr(float(when))))
+                shots.append(shown.shot())
+            out.append(shots)
     return out
 
 

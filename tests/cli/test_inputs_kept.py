@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import SQUARE, run_module
+from tests.helpers import SQUARE, run_main
 
 SVG = ('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">'
        '<path id="p" d="M1 1 L{x} 1 L{x} 9 Z"/></svg>')
@@ -45,7 +45,7 @@ def _folder(tmp_path: Path) -> Path:
 
 def _refused(tmp_path: Path, *args: str, names: tuple[str, ...]) -> None:
     before = _tree(tmp_path)
-    done = run_module(*args, cwd=tmp_path)
+    done = run_main(*args, cwd=tmp_path)
     assert done.returncode == 2, (args, done.stderr)
     assert done.stderr.startswith("tweenrender: error: ") and done.stderr.count("\n") == 1, done.stderr
     assert "unexpected" not in done.stderr
@@ -110,6 +110,6 @@ def test_a_report_folder_whose_index_is_a_link_to_the_scene_is_refused(tmp_path:
 
 def test_writing_next_to_an_input_is_fine(tmp_path: Path) -> None:
     _folder(tmp_path)
-    done = run_module("render", "a.svg", "b.svg", "-o", "ab.gif", "-q", cwd=tmp_path)
+    done = run_main("render", "a.svg", "b.svg", "-o", "ab.gif", "-q", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert (tmp_path / "b.svg").read_text() == SVG.format(x=7)

@@ -11,11 +11,11 @@ import pytest
 import tweenrender as tr
 from tweenrender.core.methods.registry import METHODS
 
-from ..helpers import SCENES, SQUARE, decode, run_module, write_scene
+from ..helpers import SCENES, SQUARE, decode, run_main, write_scene
 
 
 def test_stats_json_measures_every_method_with_the_documented_fields() -> None:
-    done = run_module("stats", SCENES / "walk.toml", "--t", "0.25,0.5", "--json")
+    done = run_main("stats", SCENES / "walk.toml", "--t", "0.25,0.5", "--json")
     assert done.returncode == 0, done.stderr
     stats = json.loads(done.stdout)
     fields = {"t", "perimeter", "perimeter_keys", "perimeter_mean", "ratio", "ratio_min", "ratio_max",
@@ -29,7 +29,7 @@ def test_stats_json_measures_every_method_with_the_documented_fields() -> None:
 
 
 def test_a_scene_without_joints_is_measured_without_jointed() -> None:
-    stats = json.loads(run_module("stats", SCENES / "square.toml", "--json").stdout)
+    stats = json.loads(run_main("stats", SCENES / "square.toml", "--json").stdout)
     assert set(stats["shapes"][0]["methods"]) == set(METHODS) - {"jointed"}
 
 
@@ -37,7 +37,7 @@ def test_a_scene_without_joints_is_measured_without_jointed() -> None:
 def test_render_with_a_new_method(tmp_path: Path, method: str) -> None:
     scene = write_scene(tmp_path, SQUARE)
     target = tmp_path / f"{method}.mp4"
-    done = run_module("render", scene, "--method", method, "-o", target, "-q", "--fps", "6")
+    done = run_main("render", scene, "--method", method, "-o", target, "-q", "--fps", "6")
     assert done.returncode == 0, done.stderr
     meta, frames = decode(target)
     assert len(frames) == 13 and frames[0].shape == (240, 320, 3)
@@ -46,14 +46,14 @@ def test_render_with_a_new_method(tmp_path: Path, method: str) -> None:
 def test_sheet_rows_and_compare_panels_take_the_new_methods(tmp_path: Path) -> None:
     scene = write_scene(tmp_path, SQUARE.replace("size = [320, 240]",
                                                  'size = [320, 240]\ncompare = ["arap", "intrinsic"]'))
-    assert run_module("sheet", scene, "--methods", "linear,arap,intrinsic", "-o", tmp_path / "s.png").returncode == 0
-    done = run_module("render", scene, "--compare", "-o", tmp_path / "c.mp4", "-q", "--fps", "4")
+    assert run_main("sheet", scene, "--methods", "linear,arap,intrinsic", "-o", tmp_path / "s.png").returncode == 0
+    done = run_main("render", scene, "--compare", "-o", tmp_path / "c.mp4", "-q", "--fps", "4")
     assert done.returncode == 0, done.stderr
     assert decode(tmp_path / "c.mp4")[1][0].shape == (240, 640, 3)
 
 
 def test_a_misspelt_balance_is_a_usage_error(tmp_path: Path) -> None:
-    done = run_module("render", write_scene(tmp_path, SQUARE), "--balance", "spred", "-q")
+    done = run_main("render", write_scene(tmp_path, SQUARE), "--balance", "spred", "-q")
     assert done.returncode == 2 and "--balance" in done.stderr and "Traceback" not in done.stderr
 
 

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import SQUARE, run_module, write_scene
+from tests.helpers import SQUARE, run_main, write_scene
 
 NAME_MAX = os.pathconf("/tmp", "PC_NAME_MAX")  # 255 on every Linux file system the tests run on
 
@@ -43,21 +43,21 @@ def test_an_output_name_too_long_for_the_file_system_is_a_usage_error(tmp_path: 
     write_scene(tmp_path, SQUARE)
     name = "n" * length
     args = [a.format(scene="scene.toml", name=name) for a in COMMANDS[command]]
-    done = run_module(*args, cwd=tmp_path)
+    done = run_main(*args, cwd=tmp_path)
     _clean_refusal(done, "too long")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]
 
 
 @pytest.mark.parametrize("command", ["check", "render", "report", "sheet"])
 def test_a_scene_name_too_long_is_one_line(tmp_path: Path, command: str) -> None:
-    done = run_module(command, "s" * (NAME_MAX + 5) + ".toml", cwd=tmp_path)
+    done = run_main(command, "s" * (NAME_MAX + 5) + ".toml", cwd=tmp_path)
     _clean_refusal(done, "too long")
 
 
 @pytest.mark.parametrize("name", [".", "..", "", "/"])
 def test_report_to_no_folder_of_its_own_is_a_usage_error(tmp_path: Path, name: str) -> None:
     write_scene(tmp_path, SQUARE)
-    done = run_module("report", "scene.toml", "--compare", "linear", "-o", name, "-q", cwd=tmp_path)
+    done = run_main("report", "scene.toml", "--compare", "linear", "-o", name, "-q", cwd=tmp_path)
     _clean_refusal(done, "report")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]
 
@@ -68,7 +68,7 @@ def test_a_surrogate_in_the_title_does_not_crash_the_report(tmp_path: Path) -> N
             '"shape": [{"name": "s\\ud800", "key": [{"time": 0, "points": [[0, 0], [4, 0], [4, 4]]}, '
             '{"time": 0.5, "points": [[1, 0], [5, 0], [5, 4]]}]}]}')
     write_scene(tmp_path, text, "odd.json")
-    done = run_module("report", "odd.json", "--compare", "linear", "-o", "r", "-q", cwd=tmp_path)
+    done = run_main("report", "odd.json", "--compare", "linear", "-o", "r", "-q", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     page = (tmp_path / "r" / "index.html").read_bytes().decode("utf-8")  # valid UTF-8 throughout
     assert "caf\ufffd été" in page and "s\ufffd" in page
@@ -77,7 +77,7 @@ def test_a_surrogate_in_the_title_does_not_crash_the_report(tmp_path: Path) -> N
 @pytest.mark.parametrize("odd", ["new\nline", "esc\x1b[31mred", "bell\x07"])
 def test_odd_characters_in_a_name_are_escaped_when_report_prints_it(tmp_path: Path, odd: str) -> None:
     write_scene(tmp_path, SQUARE, f"{odd}.toml")
-    done = run_module("report", f"{odd}.toml", "--compare", "linear", "-q", cwd=tmp_path)
+    done = run_main("report", f"{odd}.toml", "--compare", "linear", "-q", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert done.stdout.count("\n") == 1 and "\x1b" not in done.stdout and "\x07" not in done.stdout
     assert repr(odd)[1:-1] in done.stdout
@@ -86,7 +86,7 @@ def test_odd_characters_in_a_name_are_escaped_when_report_prints_it(tmp_path: Pa
 
 def test_odd_characters_in_a_shape_name_are_escaped_in_the_page(tmp_path: Path) -> None:
     write_scene(tmp_path, SQUARE.replace('name = "sq"', 'name = "<b>sq</b> & \\"x\\""'))
-    done = run_module("report", "scene.toml", "--compare", "linear", "-o", "r", "-q", cwd=tmp_path)
+    done = run_main("report", "scene.toml", "--compare", "linear", "-o", "r", "-q", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     page = (tmp_path / "r" / "index.html").read_text()
     assert "<b>sq</b>" not in page and "&lt;b&gt;sq&lt;/b&gt; &amp; &quot;x&quot;" in page

@@ -14,7 +14,7 @@ import pytest
 import tweenrender as tr
 from tweenrender.errors import OptionError
 
-from tests.helpers import SQUARE, read_png, run_module, write_scene
+from tests.helpers import SQUARE, read_png, run_main, write_scene
 
 
 def _tree(folder: Path) -> dict[str, bytes | None]:
@@ -46,7 +46,7 @@ def test_output_slash_is_refused_and_its_videos_kept(tmp_path: Path) -> None:
     (tmp_path / "output").mkdir()
     (tmp_path / "output" / "earlier.mp4").write_bytes(b"an earlier video")
     before = _tree(tmp_path)
-    done = run_module("render", scene, "-o", "output/", "-q", cwd=tmp_path)
+    done = run_main("render", scene, "-o", "output/", "-q", cwd=tmp_path)
     assert done.returncode == 2 and done.stderr.startswith("tweenrender: error: output: "), done.stderr
     assert done.stderr.count("\n") == 1
     assert _tree(tmp_path) == before
@@ -57,7 +57,7 @@ def test_a_scene_whose_stem_is_a_dot_does_not_replace_the_output_folder(tmp_path
     (tmp_path / "output").mkdir()
     (tmp_path / "output" / "earlier.mp4").write_bytes(b"an earlier video")
     before = _tree(tmp_path)
-    done = run_module("render", "..toml", "--format", "png", "-q", cwd=tmp_path)
+    done = run_main("render", "..toml", "--format", "png", "-q", cwd=tmp_path)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert "Traceback" not in done.stderr and "output" in done.stderr
     assert _tree(tmp_path) == before
@@ -70,7 +70,7 @@ def test_no_name_is_a_usage_error(tmp_path: Path, name: str, words: str, fmt: st
     scene = write_scene(tmp_path, SQUARE)
     (tmp_path / "sub").mkdir()
     before = _tree(tmp_path)
-    done = run_module("render", scene, "-o", name, "--format", fmt, "-q", cwd=tmp_path)
+    done = run_main("render", scene, "-o", name, "--format", fmt, "-q", cwd=tmp_path)
     assert done.returncode == 2, done.stderr
     assert done.stderr == f"tweenrender: error: output {name!r} is {words}; expected a file name " \
                           "(.mp4, .webm, .mov, .gif, .json, .lottie, .svg) or a folder's name for PNG frames\n"

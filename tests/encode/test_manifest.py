@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import SCENES, SQUARE, run_module, write_scene
+from tests.helpers import SCENES, SQUARE, run_main, write_scene
 
 MANIFEST = ".tweenrender-manifest.json"
 
@@ -121,11 +121,11 @@ def test_a_manifest_listing_names_the_tool_never_writes_owns_nothing(cli, tmp_pa
 
 def test_a_report_folder_with_a_note_or_the_scene_inside_is_kept(tmp_path: Path) -> None:
     folder = tmp_path / "square-report"
-    assert run_module("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q").returncode == 0
+    assert run_main("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q").returncode == 0
     assert (folder / MANIFEST).is_file()
     (folder / "my notes.txt").write_text("what I saw in the linear column")
     before = _tree(tmp_path)
-    done = run_module("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
+    done = run_main("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert "my notes.txt" in done.stderr and "Traceback" not in done.stderr
     assert _tree(tmp_path) == before
@@ -137,7 +137,7 @@ def test_a_report_written_before_manifests_is_refused_with_the_way_out(tmp_path:
     (folder / ".tweenrender-report").write_text("a report written by tweenrender; the folder is replaced whole\n")
     (folder / "index.html").write_text("<!doctype html>")
     before = _tree(tmp_path)
-    done = run_module("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
+    done = run_main("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert MANIFEST in done.stderr and "remove" in done.stderr
     assert _tree(tmp_path) == before
@@ -147,7 +147,7 @@ def test_a_report_marker_that_is_a_folder_owns_nothing(tmp_path: Path) -> None:
     folder = tmp_path / "report"
     (folder / ".tweenrender-report").mkdir(parents=True)
     before = _tree(tmp_path)
-    done = run_module("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
+    done = run_main("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert _tree(tmp_path) == before
 

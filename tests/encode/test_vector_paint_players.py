@@ -10,17 +10,21 @@ a gradient fading to transparent black (stops are blended straight, as the video
 premultiplied, as rlottie does);
 an element clipped by a moving clip path, clip paths of several contours (one with a hole) under a
 group's clip path; linear gradients that repeat and reflect (SVG only: Lottie gradients pad).
+
+Each case is loaded and drawn by the project once for all its players (the ``clip`` fixture), and one
+Chromium draws every animated SVG.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
 
 import tweenrender as tr
 from tests.helpers import DATA
-from tests.vector_players import check_chromium, check_lottie_players
+from tests.vector_players import Clip, PlayerBrowser
 
 EMOJI = [("fluent-emoji/red-circle.svg", "fluent-emoji/egg.svg"),
          ("fluent-emoji/chestnut.svg", "fluent-emoji/drop-of-blood.svg"),
@@ -82,33 +86,67 @@ def _drawings(folder: Path, name: str, texts: tuple[str, ...]) -> tr.Scene:
     return tr.load_scene(paths)
 
 
+SPREAD = tuple(text.replace('<linearGradient id="lin"', f'<linearGradient id="lin" spreadMethod="{method}"')
+               .replace('x2="1" y2="0.3"', 'x2="0.3" y2="0.1"').replace('x2="0.2" y2="0"', 'x2="0.05" y2="0.6"')
+               for text, method in zip(GRADIENTS, ("repeat", "reflect")))
+EMOJI_CASES = {Path(a).stem + "-" + Path(b).stem: (a, b) for a, b in EMOJI}
+CASES: dict[str, Callable[[Path], tr.Scene]] = {
+    **{name: (lambda folder, pair=pair: _emoji(*pair)) for name, pair in EMOJI_CASES.items()},
+    **{name: (lambda folder, name=name, texts=texts: _drawings(folder, name, texts)) for name, texts in DRAWN.items()},
+    "spread": lambda folder: _drawings(folder, "spread", SPREAD),
+}
+"""Every case the players draw, by name: how to make its scene, given a folder to write into."""
+
+
+@pytest.fixture(scope="module")
+def clip(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Clip:
+    """The case named by the test's parameter, drawn by the project once for every test of that case."""
+    folder = tmp_path_factory.mktemp(request.param)
+    return Clip(CASES[request.param](folder), folder, name=request.param)
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[PlayerBrowser | None]:
+    """One headless Chromium for every animated SVG of the module (None: no chromium here)."""
+    from tests.browser import chromium
+
+    if chromium() is None:
+        yield None
+        return
+    kept = PlayerBrowser()
+    try:
+        yield kept
+    finally:
+        kept.close()
+
+
 @pytest.fixture
 def _players() -> None:
     pytest.importorskip("rlottie_python", reason="rlottie-python (the test extra) is not installed")
     pytest.importorskip("thorvg_python", reason="thorvg-python (the test extra) is not installed")
 
 
-@pytest.mark.usefixtures("_players")
-@pytest.mark.parametrize("pair", EMOJI, ids=lambda p: Path(p[0]).stem + "-" + Path(p[1]).stem)
-def test_emoji_gradients_in_rlottie_and_thorvg(pair: tuple[str, str], tmp_path: Path) -> None:
-    check_lottie_players(_emoji(*pair), tmp_path)
+def _in_rlottie_and_thorvg(clip: Clip) -> None:
+    from tests.lottie_schema import check_folder
+
+    clip.check_rlottie_thorvg()
+    assert check_folder(clip.folder) == 1
 
 
 @pytest.mark.usefixtures("_players")
-@pytest.mark.parametrize("name", ["gradients", "fade", "clips"])
-def test_drawn_gradients_and_clips_in_rlottie_and_thorvg(name: str, tmp_path: Path) -> None:
-    check_lottie_players(_drawings(tmp_path, name, DRAWN[name]), tmp_path)
+@pytest.mark.parametrize("clip", list(EMOJI_CASES), indirect=True)
+def test_emoji_gradients_in_rlottie_and_thorvg(clip: Clip) -> None:
+    _in_rlottie_and_thorvg(clip)
 
 
-def test_gradients_and_clips_in_chromium_at_five_times(tmp_path: Path) -> None:
-    from tests.browser import chromium
+@pytest.mark.usefixtures("_players")
+@pytest.mark.parametrize("clip", list(DRAWN), indirect=True)
+def test_drawn_gradients_and_clips_in_rlottie_and_thorvg(clip: Clip) -> None:
+    _in_rlottie_and_thorvg(clip)
 
-    if chromium() is None:
+
+@pytest.mark.parametrize("clip", [*EMOJI_CASES, *DRAWN, "spread"], indirect=True)
+def test_gradients_and_clips_in_chromium_at_five_times(clip: Clip, browser: PlayerBrowser | None) -> None:
+    if browser is None:
         pytest.skip("no chromium on this machine to play the animated SVG")
-    cases: list[tuple[str, object, str | None]] = [(Path(a).stem, _emoji(a, b), None) for a, b in EMOJI]
-    cases += [(name, _drawings(tmp_path, name, texts), None) for name, texts in DRAWN.items()]
-    spread = [text.replace('<linearGradient id="lin"', f'<linearGradient id="lin" spreadMethod="{method}"')
-              .replace('x2="1" y2="0.3"', 'x2="0.3" y2="0.1"').replace('x2="0.2" y2="0"', 'x2="0.05" y2="0.6"')
-              for text, method in zip(GRADIENTS, ("repeat", "reflect"))]
-    cases.append(("spread", _drawings(tmp_path, "spread", tuple(spread)), None))
-    check_chromium(cases, tmp_path)
+    clip.check_chromium(browser)

@@ -11,19 +11,27 @@ is compared with ``tr.frame`` at the same time: coverage IoU ≥ 0.98 and mean c
 (DESIGN, "Measures used in acceptance"), for the shipped scenes, real icon pairs (holes, strokes,
 several coloured elements, a paint order that switches), every method, a scene whose paint changes,
 and drawings held between moves on a CSS easing with their elements staggered.
+
+Each scene is loaded, written and drawn by the project once (the ``clip`` fixture, one scene at a time: the
+tests of one scene run together), and one Chromium draws every picture the browser players take.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
 
 import tweenrender as tr
-from tweenrender.core.methods.registry import METHODS
 from tests.helpers import DATA, SCENES, write_scene
-from tests.vector_players import (check_chromium, check_lottie_players, check_lottie_web, check_skottie,
-                                  lottie_web_missing, skottie_missing)
+from tests.vector_players import (
+    Clip,
+    PlayerBrowser,
+    lottie_web_missing,
+    skottie_missing,
+)
+from tweenrender.core.methods.registry import METHODS
 
 SHIPPED = sorted(SCENES.glob("*.toml"))
 ICONS = DATA / "icons"
@@ -91,8 +99,62 @@ def _icons(a: str, b: str) -> tr.Scene:
     return tr.load_scene([ICONS / a, ICONS / b])
 
 
-def _paint_scene(tmp_path: Path) -> tr.Scene:
-    return tr.load_scene(write_scene(tmp_path, PAINT))
+def _timed() -> tr.Scene:
+    """Three drawings, each held a quarter second, moving on CSS's ease-in-out, elements staggered."""
+    faces = [ICONS / "twemoji/1f600.svg", ICONS / "twemoji/1f60e.svg", ICONS / "twemoji/1f600.svg"]
+    return tr.load_scene(faces, step=1.0, ease="ease-in-out", hold=0.25, stagger=0.05)
+
+
+def _pair_name(pair: tuple[str, str]) -> str:
+    return pair[0].split("/")[0] + "-" + Path(pair[0]).stem
+
+
+SceneMaker = Callable[[Path], tr.Scene]
+CASES: dict[str, tuple[SceneMaker, str | None]] = {
+    **{f"scene-{p.stem}": ((lambda folder, p=p: tr.load_scene(p)), None) for p in SHIPPED},
+    **{f"pair-{_pair_name(pair)}": ((lambda folder, pair=pair: _icons(*pair)), None) for pair in ICON_PAIRS},
+    **{f"{kind}-{method}": ((lambda folder, pair=pair: _icons(*pair)), method)
+       for kind, pair in (("holes", ICON_PAIRS[0]), ("strokes", ICON_PAIRS[2])) for method in METHODS},
+    "timed": ((lambda folder: _timed()), None),
+    "paint": ((lambda folder: tr.load_scene(write_scene(folder, PAINT))), None),
+}
+"""Every scene the players draw, by name: how to make it (given a folder to write into) and the method."""
+SCENE_CASES = [f"scene-{p.stem}" for p in SHIPPED]
+PAIR_CASES = [f"pair-{_pair_name(pair)}" for pair in ICON_PAIRS]
+CURVED_TIMED_PAINT = ["holes-nonlinear", "holes-arap", "timed", "paint"]
+
+
+def _ids(case: str) -> str:
+    return case.split("-", 1)[1] if case.startswith(("scene-", "pair-")) else case
+
+
+@pytest.fixture(scope="module")
+def clip(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Clip:
+    """The scene named by the test's parameter, written as Lottie (valid by the schema) and drawn by the project
+    once for every test of that scene."""
+    from tests.lottie_schema import check_folder
+
+    make, method = CASES[request.param]
+    folder = tmp_path_factory.mktemp(request.param)
+    made = Clip(make(folder), folder, method)
+    made.lottie  # noqa: B018 - written now, and checked against the schema
+    assert check_folder(folder) == 1
+    return made
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[PlayerBrowser | None]:
+    """One headless Chromium for every picture of the module's browser players (None: no chromium here)."""
+    from tests.browser import chromium
+
+    if chromium() is None:
+        yield None
+        return
+    kept = PlayerBrowser()
+    try:
+        yield kept
+    finally:
+        kept.close()
 
 
 @pytest.fixture(autouse=True)
@@ -101,20 +163,33 @@ def _players() -> None:
     pytest.importorskip("thorvg_python", reason="thorvg-python (the test extra) is not installed")
 
 
-@pytest.mark.parametrize("scene_path", SHIPPED, ids=lambda p: p.stem)
-def test_shipped_scenes_in_rlottie_and_thorvg(scene_path: Path, tmp_path: Path) -> None:
-    check_lottie_players(tr.load_scene(scene_path), tmp_path, every_frame=False)
+def _cases(names: list[str]):  # type: ignore[no-untyped-def]
+    return pytest.mark.parametrize("clip", names, ids=_ids, indirect=True)
 
 
-@pytest.mark.parametrize("pair", ICON_PAIRS, ids=lambda p: p[0].split("/")[0] + "-" + Path(p[0]).stem)
-def test_icon_pairs_in_rlottie_and_thorvg(pair: tuple[str, str], tmp_path: Path) -> None:
-    check_lottie_players(_icons(*pair), tmp_path)
+@_cases(SCENE_CASES)
+def test_shipped_scenes_in_rlottie_and_thorvg(clip: Clip) -> None:
+    clip.check_rlottie_thorvg(every_frame=False)
 
 
-@pytest.mark.parametrize("method", METHODS)
-@pytest.mark.parametrize("pair", [ICON_PAIRS[0], ICON_PAIRS[2]], ids=["holes", "strokes"])
-def test_every_method_in_rlottie_and_thorvg(method: str, pair: tuple[str, str], tmp_path: Path) -> None:
-    check_lottie_players(_icons(*pair), tmp_path, method, every_frame=False)
+@_cases(PAIR_CASES)
+def test_icon_pairs_in_rlottie_and_thorvg(clip: Clip) -> None:
+    clip.check_rlottie_thorvg()
+
+
+@_cases([f"{kind}-{method}" for kind in ("holes", "strokes") for method in METHODS])
+def test_every_method_in_rlottie_and_thorvg(clip: Clip) -> None:
+    clip.check_rlottie_thorvg(every_frame=False)
+
+
+@_cases(["timed"])
+def test_holds_css_easing_and_stagger_in_rlottie_and_thorvg(clip: Clip) -> None:
+    clip.check_rlottie_thorvg()
+
+
+@_cases(["paint"])
+def test_paint_changes_in_rlottie_and_thorvg(clip: Clip) -> None:
+    clip.check_rlottie_thorvg()
 
 
 def _skottie() -> None:
@@ -123,68 +198,52 @@ def _skottie() -> None:
         pytest.skip(reason)
 
 
-@pytest.mark.parametrize("pair", ICON_PAIRS, ids=lambda p: p[0].split("/")[0] + "-" + Path(p[0]).stem)
-def test_icon_pairs_in_skottie_every_frame(pair: tuple[str, str], tmp_path: Path) -> None:
+@_cases(PAIR_CASES)
+def test_icon_pairs_in_skottie_every_frame(clip: Clip) -> None:
     _skottie()
-    check_skottie(_icons(*pair), tmp_path)
+    clip.check_skottie()
 
 
-def test_shipped_scenes_and_curved_methods_in_skottie(tmp_path: Path) -> None:
-    """The shipped scenes (1280 × 720) at the sample frames, the rest at every frame."""
+@_cases(SCENE_CASES)
+def test_shipped_scenes_in_skottie(clip: Clip) -> None:
+    """The shipped scenes (1280 × 720) at the sample frames."""
     _skottie()
-    for scene_path in SHIPPED:
-        check_skottie(tr.load_scene(scene_path), tmp_path, every_frame=False)
-    for method in ("nonlinear", "arap"):
-        check_skottie(_icons(*ICON_PAIRS[0]), tmp_path, method)
-    check_skottie(_timed(), tmp_path)
-    check_skottie(_paint_scene(tmp_path), tmp_path)
+    clip.check_skottie(every_frame=False)
 
 
-def _lottie_web() -> None:
+@_cases(CURVED_TIMED_PAINT)
+def test_curved_methods_timing_and_paint_in_skottie_every_frame(clip: Clip) -> None:
+    _skottie()
+    clip.check_skottie()
+
+
+def _lottie_web(browser: PlayerBrowser | None) -> PlayerBrowser:
     reason = lottie_web_missing()
     if reason is not None:
         pytest.skip(reason)
+    assert browser is not None
+    return browser
 
 
-@pytest.mark.parametrize("pair", ICON_PAIRS, ids=lambda p: p[0].split("/")[0] + "-" + Path(p[0]).stem)
-def test_icon_pairs_in_lottie_web_every_frame(pair: tuple[str, str], tmp_path: Path) -> None:
-    _lottie_web()
-    check_lottie_web(_icons(*pair), tmp_path)
+@_cases(PAIR_CASES)
+def test_icon_pairs_in_lottie_web_every_frame(clip: Clip, browser: PlayerBrowser | None) -> None:
+    clip.check_lottie_web(browser=_lottie_web(browser))
 
 
-def test_shipped_scenes_and_curved_methods_in_lottie_web(tmp_path: Path) -> None:
-    """The shipped scenes (1280 × 720) at the sample frames, the rest at every frame."""
-    _lottie_web()
-    for scene_path in SHIPPED:
-        check_lottie_web(tr.load_scene(scene_path), tmp_path, every_frame=False)
-    for method in ("nonlinear", "arap"):
-        check_lottie_web(_icons(*ICON_PAIRS[0]), tmp_path, method)
-    check_lottie_web(_timed(), tmp_path)
-    check_lottie_web(_paint_scene(tmp_path), tmp_path)
+@_cases(SCENE_CASES)
+def test_shipped_scenes_in_lottie_web(clip: Clip, browser: PlayerBrowser | None) -> None:
+    """The shipped scenes (1280 × 720) at the sample frames."""
+    clip.check_lottie_web(every_frame=False, browser=_lottie_web(browser))
 
 
-def _timed() -> tr.Scene:
-    """Three drawings, each held a quarter second, moving on CSS's ease-in-out, elements staggered."""
-    faces = [ICONS / "twemoji/1f600.svg", ICONS / "twemoji/1f60e.svg", ICONS / "twemoji/1f600.svg"]
-    return tr.load_scene(faces, step=1.0, ease="ease-in-out", hold=0.25, stagger=0.05)
+@_cases(CURVED_TIMED_PAINT)
+def test_curved_methods_timing_and_paint_in_lottie_web_every_frame(clip: Clip, browser: PlayerBrowser | None) -> None:
+    clip.check_lottie_web(browser=_lottie_web(browser))
 
 
-def test_holds_css_easing_and_stagger_in_rlottie_and_thorvg(tmp_path: Path) -> None:
-    check_lottie_players(_timed(), tmp_path)
-
-
-def test_paint_changes_in_rlottie_and_thorvg(tmp_path: Path) -> None:
-    check_lottie_players(_paint_scene(tmp_path), tmp_path)
-
-
-def test_svg_in_chromium_at_five_times(tmp_path: Path) -> None:
-    """Every shipped scene, the icon pairs, the paint scene and curved methods on icons, one browser."""
-    from tests.browser import chromium
-
-    if chromium() is None:
+@_cases(SCENE_CASES + PAIR_CASES + ["paint", "timed", "holes-nonlinear", "holes-arap", "holes-intrinsic"])
+def test_svg_in_chromium_at_five_times(clip: Clip, browser: PlayerBrowser | None) -> None:
+    """Every shipped scene, the icon pairs, the paint scene and curved methods on icons."""
+    if browser is None:
         pytest.skip("no chromium on this machine to play the animated SVG")
-    cases: list[tuple[str, tr.Scene, str | None]] = [(p.stem, tr.load_scene(p), None) for p in SHIPPED]
-    cases += [(a.replace("/", "-"), _icons(a, b), None) for a, b in ICON_PAIRS]
-    cases += [("paint", _paint_scene(tmp_path), None), ("timed", _timed(), None)]
-    cases += [(f"holes-{m}", _icons(*ICON_PAIRS[0]), m) for m in ("nonlinear", "arap", "intrinsic")]
-    check_chromium(cases, tmp_path)
+    clip.check_chromium(browser)

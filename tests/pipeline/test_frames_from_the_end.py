@@ -11,7 +11,7 @@ import pytest
 from tweenrender.errors import OptionError
 from tweenrender.plan.job import pick_frames
 
-from tests.helpers import SQUARE, read_png, run_module, write_scene
+from tests.helpers import SQUARE, read_png, run_main, write_scene
 
 
 @pytest.mark.parametrize("text, expected", [
@@ -31,7 +31,7 @@ def test_a_selection_of_nothing_is_refused(text: str) -> None:
 def test_the_command_line_renders_the_last_frame(tmp_path: Path) -> None:
     scene = write_scene(tmp_path, SQUARE)
     for name, frames in (("last", "-1"), ("by-index", "48")):
-        done = run_module("render", scene, "-o", tmp_path / name, "--frames", frames, "-q")
+        done = run_main("render", scene, "-o", tmp_path / name, "--frames", frames, "-q")
         assert done.returncode == 0, done.stderr
     assert np.array_equal(read_png(tmp_path / "last" / "frame_0000.png"),
                           read_png(tmp_path / "by-index" / "frame_0000.png"))

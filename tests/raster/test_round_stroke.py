@@ -3,6 +3,7 @@ where :class:`Raster` uses it or leaves the stroke to skia."""
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import numpy as np
@@ -223,8 +224,10 @@ def test_coordinates_scaled_past_any_canvas_or_to_infinity_are_safe() -> None:
     assert np.isfinite(pixels).all() and pixels[..., 3].min() == 255
 
 
+@functools.lru_cache(maxsize=1)
 def _both_in_closed_form():
-    """The kernel's area of the pixel inside two edges, callable from Python (it is inlined where used)."""
+    """The kernel's area of the pixel inside two edges, callable from Python (it is inlined where used),
+    compiled once for the tests that call it (not cached on disk: the kernel it inlines may change)."""
     from numba import njit
 
     from tweenrender.raster import _stroke_kernel as kernel

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from ..browser import chromium, open_page, page_url
-from ..helpers import SCENES, decode, read_png, run_module
+from ..helpers import SCENES, decode, read_png, run_main
 
 METHODS = "linear,arap,intrinsic,jointed"
 
@@ -17,7 +17,7 @@ METHODS = "linear,arap,intrinsic,jointed"
 @pytest.fixture(scope="module")
 def report(tmp_path_factory: pytest.TempPathFactory) -> Path:
     folder = tmp_path_factory.mktemp("report") / "hinge-report"
-    done = run_module("report", SCENES / "hinge.toml", "--compare", METHODS, "-o", folder, "-q")
+    done = run_main("report", SCENES / "hinge.toml", "--compare", METHODS, "-o", folder, "-q")
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == str(folder / "index.html")
     return folder
@@ -83,7 +83,7 @@ def test_a_stranger_folder_is_never_replaced(tmp_path: Path) -> None:
     folder = tmp_path / "mine"
     folder.mkdir()
     (folder / "notes.txt").write_text("keep me")
-    done = run_module("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
+    done = run_main("report", SCENES / "square.toml", "--compare", "linear", "-o", folder, "-q")
     assert done.returncode == 2
     assert "'notes.txt'" in done.stderr and "Traceback" not in done.stderr
     assert [p.name for p in folder.iterdir()] == ["notes.txt"]
@@ -92,9 +92,9 @@ def test_a_stranger_folder_is_never_replaced(tmp_path: Path) -> None:
 
 def test_an_earlier_report_is_replaced_whole(tmp_path: Path) -> None:
     folder = tmp_path / "square-report"
-    assert run_module("report", SCENES / "square.toml", "--compare", "linear,rigid", "-o", folder, "-q").returncode == 0
+    assert run_main("report", SCENES / "square.toml", "--compare", "linear,rigid", "-o", folder, "-q").returncode == 0
     assert (folder / "rigid.webm").is_file()
-    assert run_module("report", SCENES / "square.toml", "--compare", "arap", "-o", folder, "-q").returncode == 0
+    assert run_main("report", SCENES / "square.toml", "--compare", "arap", "-o", folder, "-q").returncode == 0
     assert sorted(p.name for p in folder.glob("*.webm")) == ["arap.webm"]
     assert read_png(folder / "metrics.png").shape[1] == 960
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
@@ -104,6 +104,6 @@ def test_a_report_of_every_method_can_be_written_again(tmp_path: Path) -> None:
     # every method's video is a file the report wrote, whatever characters its name has
     folder = tmp_path / "square-report"
     for _ in range(2):
-        done = run_module("report", SCENES / "square.toml", "--compare", "intrinsic-length", "-o", folder, "-q")
+        done = run_main("report", SCENES / "square.toml", "--compare", "intrinsic-length", "-o", folder, "-q")
         assert done.returncode == 0, done.stderr
     assert sorted(p.name for p in folder.glob("*.webm")) == ["intrinsic-length.webm"]

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from tests.core.exact_tangles import tangled
-from tests.helpers import run_module
+from tests.helpers import run_main
 from tweenrender.core.tangles import SWEEP
 
 SCENE = """
@@ -37,7 +37,7 @@ contours = [[[0, 0], [6, 0], [6, 6], [0, 6]], [[4, 4], [4, 5], [5, 5], [5, 4]]]
 def test_crossings_per_method_match_an_exact_brute_force(tmp_path: Path) -> None:
     scene = tmp_path / "flap.toml"
     scene.write_text(SCENE)
-    done = run_module("stats", scene, "--json")
+    done = run_main("stats", scene, "--json")
     assert done.returncode == 0, done.stderr
     shapes = {s["name"]: s for s in json.loads(done.stdout)["shapes"]}
     flap = shapes["flap"]["methods"]

@@ -8,6 +8,7 @@ where any channel differs from white by more than 32/255; *coverage IoU* is |ink
 
 from __future__ import annotations
 
+import functools
 import itertools
 import os
 import subprocess
@@ -59,12 +60,20 @@ PAIRS = ALL_PAIRS if os.environ.get("TWEENRENDER_ALL_PAIRS") else _sample(ALL_PA
 
 
 def reference(svg: Path, size: int = SIZE) -> np.ndarray:
-    """librsvg's picture of ``svg`` over white: RGB floats ``(size, size, 3)`` in [0, 255]."""
+    """librsvg's picture of ``svg`` over white: RGB floats ``(size, size, 3)`` in [0, 255] (a fresh copy of
+    the one drawn the first time: an icon takes part in several pairs)."""
+    return _librsvg_picture(svg, svg.read_bytes(), size).astype(float)
+
+
+@functools.lru_cache(maxsize=256)
+def _librsvg_picture(svg: Path, text: bytes, size: int) -> np.ndarray:
+    """librsvg's picture of ``svg`` (whose content is ``text``, the key with its path): RGB ``(size, size, 3)``
+    uint8."""
     import imageio.v3 as iio
 
     done = subprocess.run([RSVG, "-w", str(size), "-h", str(size), "-b", "white", str(svg)], capture_output=True,
                           check=True)
-    return iio.imread(done.stdout)[..., :3].astype(float)
+    return iio.imread(done.stdout)[..., :3]
 
 
 def measures(ours: np.ndarray, theirs: np.ndarray) -> tuple[float, float]:

@@ -12,7 +12,7 @@ import pytest
 
 import tweenrender as tr
 from tweenrender.api import frame_count
-from tests.helpers import run_module
+from tests.helpers import run_main
 from tests.vector_players import IOU, COLOUR, measures, over, rlottie_frames, thorvg_frames
 from tweenrender.errors import SceneError
 
@@ -188,7 +188,7 @@ def test_keyframed_transform_is_sampled_at_every_frame(tmp_path: Path) -> None:
 
 def _refusal(document: dict, folder: Path) -> tuple[int, str, str]:
     path = _write(folder, document)
-    done = run_module("render", path, "-o", folder / "out.mp4", "-q")
+    done = run_main("render", path, "-o", folder / "out.mp4", "-q")
     return done.returncode, done.stdout, done.stderr
 
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import tweenrender as tr
-from tests.helpers import run_module
+from tests.helpers import run_main
 from tests.scenefile.test_icons import needs_rsvg
 from tests.scenefile.test_key_frames import measures, reference
 from tweenrender.core.mask_motion import box_map, carried, masks_at
@@ -146,7 +146,7 @@ def test_a_masked_drawing_is_refused_by_the_vector_formats_in_one_line(tmp_path:
     with pytest.raises(OptionError, match="mask"):
         tr.write(tr.load_scene([a, b]), tmp_path / "x.json")
     for target in (tmp_path / "x.json", tmp_path / "x.svg"):
-        done = run_module("render", a, b, "-o", target, "-q", cwd=tmp_path)
+        done = run_main("render", a, b, "-o", target, "-q", cwd=tmp_path)
         lines = done.stderr.strip().splitlines()
         assert done.returncode == 2 and len(lines) == 1 and "mask" in lines[0] and "Traceback" not in done.stderr
         assert not target.exists()

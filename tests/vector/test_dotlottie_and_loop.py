@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 import tweenrender as tr
-from tests.helpers import DATA, run_module, write_scene
+from tests.helpers import DATA, run_main, write_scene
 from tests.vector.test_vector_output import ROUND, TURN
 from tests.vector_players import check_pictures, chromium_svg_frames, rlottie_frames
 
@@ -54,7 +54,7 @@ def test_dotlottie_animation_plays_in_rlottie(tmp_path: Path) -> None:
 
 def test_format_flag_and_odd_names(tmp_path: Path) -> None:
     scene_file = write_scene(tmp_path, ROUND.format(method="linear"))
-    done = run_module("render", scene_file, "--format", "dotlottie", "-o", tmp_path / "out.lottie", "-q")
+    done = run_main("render", scene_file, "--format", "dotlottie", "-o", tmp_path / "out.lottie", "-q")
     assert done.returncode == 0, done.stderr
     with zipfile.ZipFile(tmp_path / "out.lottie") as opened:
         assert "animations/out.json" in opened.namelist()
@@ -68,7 +68,7 @@ def test_loop_on_a_file_that_cannot_say_is_a_usage_error(tmp_path: Path) -> None
     scene_file = write_scene(tmp_path, TURN.format(method="rigid", ease="linear", rule="evenodd"))
     kept = tmp_path / "out.json"
     kept.write_text("mine")
-    done = run_module("render", scene_file, "--loop", "-o", kept, "-q")
+    done = run_main("render", scene_file, "--loop", "-o", kept, "-q")
     assert done.returncode == 2
     lines = done.stderr.strip().splitlines()
     assert len(lines) == 1 and "--loop" in lines[0] and "lottie" in lines[0]
@@ -79,7 +79,7 @@ def test_loop_on_a_file_that_cannot_say_is_a_usage_error(tmp_path: Path) -> None
         tr.write(tr.load_scene(scene_file), tmp_path / "x.mp4", loop=True)
     with pytest.raises(tr.OptionError, match="True or False"):
         tr.write(tr.load_scene(scene_file), tmp_path / "x.svg", loop="yes")
-    help_text = run_module("render", "--help").stdout
+    help_text = run_main("render", "--help").stdout
     assert "--loop" in help_text and "repeats indefinitely" in " ".join(help_text.split())
 
 

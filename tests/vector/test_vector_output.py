@@ -18,7 +18,7 @@ import pytest
 
 import tweenrender as tr
 from tweenrender.errors import OptionError
-from tests.helpers import run_module, write_scene
+from tests.helpers import run_main, write_scene
 from tests.vector_curves import distance, lottie_error, svg_path_points
 
 # 400 × 300 pixels over the view [0, 0, 40, 30]: 10 pixels a unit, pixel = (10 x, 300 - 10 y)
@@ -191,13 +191,13 @@ def test_cli_writes_what_the_library_writes(tmp_path: Path) -> None:
     scene_path = write_scene(tmp_path, TURN.format(method="rigid", ease="in-out", rule="evenodd"))
     for suffix, fmt in ((".json", "lottie"), (".svg", "svg")):
         by_cli = tmp_path / f"cli{suffix}"
-        done = run_module("render", scene_path, "--format", fmt, "-o", by_cli, "-q", cwd=tmp_path)
+        done = run_main("render", scene_path, "--format", fmt, "-o", by_cli, "-q", cwd=tmp_path)
         assert done.returncode == 0, done.stderr
         by_library = tr.write(tr.load_scene(scene_path), tmp_path / f"lib{suffix}")
         assert by_cli.read_text().replace("cli", "lib") == by_library.read_text()
-    done = run_module("render", scene_path, "--format", "lottie", "-q", cwd=tmp_path)
+    done = run_main("render", scene_path, "--format", "lottie", "-q", cwd=tmp_path)
     assert done.returncode == 0 and (tmp_path / "output" / "scene.json").is_file()
-    done = run_module("render", scene_path, "--format", "svg", "-q", cwd=tmp_path)
+    done = run_main("render", scene_path, "--format", "svg", "-q", cwd=tmp_path)
     assert done.returncode == 0 and (tmp_path / "output" / "scene.svg").is_file()
 
 
@@ -207,7 +207,7 @@ def test_cli_writes_what_the_library_writes(tmp_path: Path) -> None:
 def test_flags_a_vector_file_cannot_carry_are_usage_errors(tmp_path: Path, flag: list[str], suffix: str) -> None:
     scene_path = write_scene(tmp_path, TURN.format(method="rigid", ease="linear", rule="evenodd"))
     target = tmp_path / f"out{suffix}"
-    done = run_module("render", scene_path, "-o", target, "-q", *flag, cwd=tmp_path)
+    done = run_main("render", scene_path, "-o", target, "-q", *flag, cwd=tmp_path)
     assert done.returncode == 2
     lines = done.stderr.strip().splitlines()
     assert len(lines) == 1 and flag[0] in lines[0] and "Traceback" not in done.stderr
@@ -232,9 +232,9 @@ def test_library_refusals_name_the_option(tmp_path: Path) -> None:
 def test_max_error_flag_is_checked(tmp_path: Path) -> None:
     scene_path = write_scene(tmp_path, TURN.format(method="rigid", ease="linear", rule="evenodd"))
     for value in ("0", "-1", "nan", "x"):
-        done = run_module("render", scene_path, "-o", tmp_path / "x.json", "--max-error", value, cwd=tmp_path)
+        done = run_main("render", scene_path, "-o", tmp_path / "x.json", "--max-error", value, cwd=tmp_path)
         assert done.returncode == 2 and "--max-error" in done.stderr and len(done.stderr.strip().splitlines()) == 1
-    done = run_module("render", scene_path, "-o", tmp_path / "x.mp4", "--max-error", "1", cwd=tmp_path)
+    done = run_main("render", scene_path, "-o", tmp_path / "x.mp4", "--max-error", "1", cwd=tmp_path)
     assert done.returncode == 2 and "--max-error" in done.stderr
 
 
@@ -327,7 +327,7 @@ def test_svg_keytimes_played_by_hand_stay_within_the_bound(tmp_path: Path) -> No
 @pytest.mark.parametrize("suffix", [".json", ".svg"])
 def test_a_reel_to_a_vector_file_is_a_usage_error(tmp_path: Path, suffix: str) -> None:
     scene_path = write_scene(tmp_path, TURN.format(method="rigid", ease="linear", rule="evenodd"))
-    done = run_module("reel", scene_path, "-o", tmp_path / f"reel{suffix}", "-q", cwd=tmp_path)
+    done = run_main("reel", scene_path, "-o", tmp_path / f"reel{suffix}", "-q", cwd=tmp_path)
     assert done.returncode == 2 and "reel" in done.stderr and len(done.stderr.strip().splitlines()) == 1
     assert not (tmp_path / f"reel{suffix}").exists()
 
@@ -423,7 +423,7 @@ def test_what_lottie_cannot_carry_is_refused_naming_the_element(tmp_path: Path, 
     with pytest.raises(OptionError, match=f"'box'.*{what}"):
         tr.write(scene, tmp_path / "x.json")
     assert not (tmp_path / "x.json").exists()
-    done = run_module("render", tmp_path / "a.svg", tmp_path / "b.svg", "-o", tmp_path / "x.json", "-q", cwd=tmp_path)
+    done = run_main("render", tmp_path / "a.svg", tmp_path / "b.svg", "-o", tmp_path / "x.json", "-q", cwd=tmp_path)
     lines = done.stderr.strip().splitlines()
     assert done.returncode == 2 and len(lines) == 1 and "'box'" in lines[0] and what in lines[0]
     assert not (tmp_path / "x.json").exists()

@@ -614,14 +614,18 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
         if crowded:
             # joined where that tangles no more than growing late and the area changes no less evenly:
             # all of them, or only the pieces, or only the holes
-            best = _join_measures(pairs, first, last, method, shape.stagger)
+            plain = _join_measures(pairs, first, last, method, shape.stagger)
+            best: tuple[tuple[int, float], tuple[Pair, ...]] | None = None
             for part in _join_choices(crowded, first, last):
                 joined = _pairs(first, last, shape.fill_rule, matching, rule, balance, links,
                                 (shape.cap, shape.join), part)
                 found = _join_measures(joined, first, last, method, shape.stagger)
-                if found[0] <= best[0] and found[1] <= max(best[1], EVEN):
-                    pairs, best = joined, found
-                    break
+                if found[0] <= plain[0] and found[1] <= max(plain[1], EVEN) and (best is None or found < best[0]):
+                    best = found, joined
+                    if found[0] == 0 and found[1] <= EVEN:
+                        break
+            if best is not None:
+                pairs = best[1]
         anchors = _anchors(pairs, links)
         balanced_joints: tuple[tuple[int, int], ...] = ()
         if joints and len(pairs) == 1:

@@ -89,3 +89,19 @@ def test_the_report_says_where_the_paint_order_switches(tmp_path: Path) -> None:
                          tmp_path / "report", ["linear"])
     text = index.read_text()
     assert "Paint order" in text and "the paint order switches at" in text and "/32)" in text
+
+
+@pytest.mark.parametrize("a, b", [("twemoji/1f60e", "tabler/mood-smile"), ("simple-icons/github", "bootstrap/emoji-smile")])
+def test_the_correspondence_of_a_contour_joined_by_a_slit_is_reported_on_the_joined_contour(a: str, b: str) -> None:
+    """Where a contour without room is joined into its neighbour (maths §5.17), the pair's vertex pairs
+    index the joined contour: the report names its vertex counts and every pair stays within them (before,
+    the keys' own contours were read beside the joined one's pairs: a broadcast error, exit 1)."""
+    scene = tr.load_scene([DATA / "icons" / f"{a}.svg", DATA / "icons" / f"{b}.svg"], step=1.0)
+    report = correspond_dict(scene)
+    assert report["shapes"]
+    for entry in report["shapes"]:
+        pairs = np.asarray(entry["pairs"])
+        assert len(pairs) == entry["balanced"]
+        assert pairs[:, 0].max() < entry["counts"][0] and pairs[:, 1].max() < entry["counts"][1]
+        assert sorted(set(pairs[:, 0].tolist())) == list(range(entry["counts"][0]))  # every vertex paired
+        assert sorted(set(pairs[:, 1].tolist())) == list(range(entry["counts"][1]))

@@ -48,7 +48,9 @@ def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str,
     cost of the reported ``pairs`` under it (the sum of ``|A_i - B_j|`` after the
     alignment, or the S&G energy); ``minimal_work`` is the least cost any closed
     monotone path reaches. Where the drawn order is kept, ``minimal_pairs`` and
-    ``minimal_reversed`` give that least-cost path too (the renderer does not use it).
+    ``minimal_reversed`` give that least-cost path too (the renderer does not use it). Where a contour
+    without room was joined into the pair's by a slit (maths §5.17), ``joined_contours`` holds the two
+    contours as paired (``a``, ``b``: scene units), which ``counts`` and ``pairs`` refer to.
     """
     matching = matching or scene.matching
     shapes = []
@@ -56,6 +58,8 @@ def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str,
         index, (i, j) = entry.index, entry.pair.source
         a = entry.shape.keys[index].contours[i].points  # type: ignore[index]
         b = entry.shape.keys[index + 1].contours[j].points  # type: ignore[index]
+        if entry.pair.joined is not None:  # a contour without room joined into it: the pairs index these
+            a, b = entry.pair.joined
         closed = entry.pair.closed
         found = entry.pair.correspondence
         if len(a) < 2 or len(b) < 2:  # a single point pairs with every vertex of the other
@@ -86,6 +90,8 @@ def correspond_dict(scene: Scene, matching: Matching | None = None) -> dict[str,
             "pairs": pairs.tolist(),
             **extra,
         })
+        if entry.pair.joined is not None:
+            shapes[-1]["joined_contours"] = {"a": np.asarray(a).tolist(), "b": np.asarray(b).tolist()}
         hints = [{"letter": link.letter, "a": link.a[1], "b": link.b[1]}
                  for link in segment_links(entry.shape.keys[index].hints, entry.shape.keys[index + 1].hints)
                  if (link.a[0], link.b[0]) == (i, j)]
@@ -160,6 +166,8 @@ def report_panels(scene: Scene, report: dict[str, Any]) -> list[CPanel]:
         i, j = e.get("key_contours", (0, 0))
         a = np.asarray(keys[e["segment"]].contours[i].points)
         b = np.asarray(keys[e["segment"] + 1].contours[j].points)
+        if "joined_contours" in e:
+            a, b = np.asarray(e["joined_contours"]["a"]), np.asarray(e["joined_contours"]["b"])
         hints = tuple((h["letter"], h["a"], h["b"]) for h in e.get("hints", ()))
         if hints:
             words += f"; hints {', '.join(h[0] for h in hints)} pin their points"

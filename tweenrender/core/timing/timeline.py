@@ -95,6 +95,9 @@ class Pair:
     correspondence: Correspondence | None
     source: tuple[int | None, int | None]
     fades: bool = False
+    # the two contours ``(N, 2)``, ``(M, 2)`` as paired where they are not the keys' own: a contour without
+    # room was joined into one of them by a slit (:mod:`.bridges`); the correspondence indexes these
+    joined: tuple[Points, Points] | None = None
 
     @property
     def moving(self) -> bool:
@@ -840,7 +843,10 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
     pairs = []
     for i, j in partners:
         if i is not None and j is not None:
-            pairs.append(_balanced(a[i], b[j], (i, j), matching, balance, vertex_links(links, (i, j))))
+            pair = _balanced(a[i], b[j], (i, j), matching, balance, vertex_links(links, (i, j)))
+            if a[i] is not before.contours[i] or b[j] is not after.contours[j]:  # joined (or a stroke shut)
+                pair = replace(pair, joined=(a[i].points, b[j].points))
+            pairs.append(pair)
             continue
         # a contour without a partner: it fades, or shrinks to (i) or grows from (j) a point of the other key
         alone, others = (a[i], b) if i is not None else (b[j], a)  # type: ignore[index]

@@ -127,12 +127,17 @@ def _on_segment(point: np.ndarray, a: tuple, b: tuple) -> bool:
     return bool(np.linalg.norm(a_ + s * ab - point) < 1e-9)
 
 
-@pytest.mark.parametrize("rows, block", [(64, 1 << 18), (2, 16)])
-def test_the_point_given_is_on_the_lowest_pair_of_edges_that_meet(monkeypatch, rows: int, block: int) -> None:
+@pytest.mark.parametrize("loop, rows, block", [("compiled", 0, 0), ("numpy", 64, 1 << 18), ("numpy", 2, 16)])
+def test_the_point_given_is_on_the_lowest_pair_of_edges_that_meet(monkeypatch, loop: str, rows: int,
+                                                                   block: int) -> None:
     import tweenrender.core.crossings as crossings
 
-    monkeypatch.setattr(crossings, "_ROWS", rows)  # blocks of rows, down to two edges at a time
-    monkeypatch.setattr(crossings, "_BLOCK", block)
+    if loop == "numpy":  # blocks of rows, down to two edges at a time
+        monkeypatch.setattr(crossings, "_first_meeting", crossings._first_meeting_numpy)
+        monkeypatch.setattr(crossings, "_ROWS", rows)
+        monkeypatch.setattr(crossings, "_BLOCK", block)
+    else:
+        monkeypatch.setattr(crossings, "_NUMPY_PAIRS", 0)
     rng = np.random.default_rng(11)
     checked = 0
     for _ in range(400):
@@ -165,3 +170,63 @@ def test_a_sweep_of_outlines_is_each_outline_checked() -> None:
         found = self_crossings(frames)
         assert [w is None for w in found] == [w is None for w in expected]
         assert all(w is None or np.array_equal(w, e) for w, e in zip(found, expected))
+
+
+def _float_pair_test(points: np.ndarray) -> tuple[int, int] | None:
+    """The lowest pair of edges, not neighbours, that the float orientation test says meet: each cross
+    product of the coordinate differences in Python floats (IEEE double, no fused multiply-add), one pair
+    at a time."""
+    n = len(points)
+    a = [tuple(map(float, p)) for p in points]
+    b = [a[(k + 1) % n] for k in range(n)]
+
+    def cross(ux, uy, vx, vy):
+        return ux * vy - uy * vx
+
+    def sign(x):
+        return (x > 0) - (x < 0)
+
+    for i in range(n - 2):
+        for j in range(i + 2, n):
+            if i == 0 and j == n - 1:
+                continue
+            ex, ey = b[j][0] - a[j][0], b[j][1] - a[j][1]
+            d1 = cross(ex, ey, a[i][0] - a[j][0], a[i][1] - a[j][1])
+            d2 = cross(ex, ey, b[i][0] - a[j][0], b[i][1] - a[j][1])
+            fx, fy = b[i][0] - a[i][0], b[i][1] - a[i][1]
+            d3 = cross(fx, fy, a[j][0] - a[i][0], a[j][1] - a[i][1])
+            d4 = cross(fx, fy, b[j][0] - a[i][0], b[j][1] - a[i][1])
+            if d1 == d2 == d3 == d4 == 0.0:
+                if all(max(min(a[i][c], b[i][c]), min(a[j][c], b[j][c])) <=
+                       min(max(a[i][c], b[i][c]), max(a[j][c], b[j][c])) for c in (0, 1)):
+                    return i, j
+            elif sign(d1) * sign(d2) <= 0 and sign(d3) * sign(d4) <= 0:
+                return i, j
+    return None
+
+
+@pytest.mark.parametrize("loop", ["compiled", "numpy"])
+def test_the_float_test_is_made_with_the_same_rounding_on_nearly_collinear_outlines(loop: str) -> None:
+    # points a hair off one line, far apart: the float signs of the products decide, rounding and all
+    from tweenrender.core import _crossing_kernel, crossings
+
+    def _first_meeting(a: np.ndarray, b: np.ndarray) -> tuple[int, int] | None:
+        if loop == "numpy":
+            return crossings._first_meeting_numpy(a, b)
+        i, j = _crossing_kernel.first_meeting(a[:, 0].copy(), a[:, 1].copy(), b[:, 0].copy(), b[:, 1].copy())
+        return None if i < 0 else (i, j)
+
+    rng = np.random.default_rng(3)
+    found = {None: 0, "pair": 0}
+    for _ in range(300):
+        n = int(rng.integers(4, 12))
+        s = np.sort(rng.uniform(-1e3, 1e3, n))
+        rng.shuffle(s)
+        points = np.column_stack([s, 0.1 * s + rng.normal(0, 1e-13, n) * rng.integers(0, 2, n)])
+        points = distinct_outline(points)
+        if len(points) < 4:
+            continue
+        expected = _float_pair_test(points)
+        assert _first_meeting(points, np.roll(points, -1, axis=0)) == expected, points.tolist()
+        found["pair" if expected else None] += 1
+    assert found["pair"] > 30

@@ -262,3 +262,27 @@ def test_auto_keeps_an_open_stroke_from_crossing_itself() -> None:
     segment = build_track(shape, Matching()).segments[0]
     frames = pair_paths(segment, T, "auto")[0]
     _check_never_tangles([k0], [k1], [False], [frames])
+
+
+def test_each_t_is_solved_once_whatever_set_of_t_asks_for_it(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A frame depends on its t alone: asked again within another set of t it is the same, bit for bit,
+    and its shape-keeping solve is not run again (counted)."""
+    from tweenrender.core.methods import bounded_distortion
+
+    solves: list[float] = []
+    original = bounded_distortion.ShapeKeepingSolve.__call__
+
+    def counted(self, s, convex):  # type: ignore[no-untyped-def]
+        solves.append(s)
+        return original(self, s, convex)
+
+    monkeypatch.setattr(bounded_distortion.ShapeKeepingSolve, "__call__", counted)
+    k0, k1 = _spiral_and_star()
+    k0, k1 = k0 * 1.0001, k1  # keys of their own: no earlier test's paths remembered
+    alone = injective(k0, k1, [0.5, 0.25])
+    assert sorted(solves) == [0.25, 0.5]
+    solves.clear()
+    sweep = injective(k0, k1, T)  # .05 … .95, 0.25 and 0.5 among them
+    assert sorted(solves) == sorted(set(T.tolist()) - {0.25, 0.5})
+    assert np.array_equal(sweep[list(T).index(0.5)], alone[0])
+    assert np.array_equal(sweep[list(T).index(0.25)], alone[1])

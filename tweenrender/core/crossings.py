@@ -13,6 +13,7 @@ check this against exact arithmetic.
 from __future__ import annotations
 
 import hashlib
+import sys
 from collections import OrderedDict
 
 import numpy as np
@@ -24,10 +25,12 @@ __all__ = ["distinct_outline", "self_crossing", "self_crossings"]
 
 Array = NDArray[np.float64]
 
-_BLOCK = 1 << 18  # edge pairs tested at once, to bound memory on large outlines
 _REMEMBERED = 256  # outlines' sweeps whose crossings are kept
 _found: OrderedDict[bytes, list[Array | None]] = OrderedDict()
+_BLOCK = 1 << 18  # edge pairs tested at once in numpy, to bound memory on large outlines
 _ROWS = 64  # edges tested at once against every later one: blocks narrow as the triangle of pairs does
+_NUMPY_PAIRS = 20_000_000  # pairs of edges a process tests in numpy (~0.3 s) before it loads the compiled loop
+_numpy_pairs = 0
 
 
 def distinct_outline(points: Array) -> Array:
@@ -89,6 +92,27 @@ def self_crossings(frames: Array) -> list[Array | None]:
 def _first_meeting(a: Array, b: Array) -> tuple[int, int] | None:
     """The lowest-numbered pair ``(i, j)``, ``i < j``, of edges ``a → b`` (``(N, 2)`` each, an outline's)
     that are not neighbours and that :func:`_segments_meet` says share a point, or None.
+
+    The same test, term for term (each cross product of the same differences, so the same rounding), made
+    pair by pair in a compiled loop that stops at the first pair that meets; while numba is not loaded
+    (it costs about half a second to load), outlines are tested in numpy until :data:`_NUMPY_PAIRS` pairs
+    of edges have been, the same answers.
+    """
+    global _numpy_pairs
+    n = len(a)
+    pairs = n * n // 2
+    if "numba" not in sys.modules and _numpy_pairs + pairs <= _NUMPY_PAIRS:
+        _numpy_pairs += pairs
+        return _first_meeting_numpy(a, b)
+    from ._crossing_kernel import first_meeting
+
+    i, j = first_meeting(np.ascontiguousarray(a[:, 0]), np.ascontiguousarray(a[:, 1]),
+                         np.ascontiguousarray(b[:, 0]), np.ascontiguousarray(b[:, 1]))
+    return None if i < 0 else (int(i), int(j))
+
+
+def _first_meeting_numpy(a: Array, b: Array) -> tuple[int, int] | None:
+    """:func:`_first_meeting` in numpy, for small outlines while numba is not loaded.
 
     The same test, term for term (each cross product of the same differences, so the same rounding), made
     on rows of edges against every later edge at once: first whether the ends of edge i lie on both sides

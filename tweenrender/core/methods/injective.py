@@ -58,6 +58,7 @@ _RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off 
 _cache: Remembered[tuple[Callable[[Array], list[Array]], str | None]] = Remembered(_CACHE)
 _EVALUATED = 32  # evaluations kept, by keys and t: a report asks for a method's sweep, and auto for the same
 _EVALUATED_BYTES = 32 << 20  # and at most this many bytes of them (a render's blocks of frames pass through)
+_FRAME_BYTES = 16 << 20  # a pair of keys' solved frames kept by their t, at most this many bytes
 _evaluated: Remembered[list[Array]] = Remembered(_EVALUATED, lambda v: sum(f.nbytes for f in v), _EVALUATED_BYTES)
 
 
@@ -132,6 +133,31 @@ class _Paths:
         self.cuts, self.closed = list(cuts), list(closed)
         self.areas = (self._area(a0), self._area(a1))
         self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed))
+        self._solved: dict[float, Array] = {}  # each t's frame before its turn, by t: the same for any other t
+
+    def _frame(self, s: float) -> Array:
+        """The centred, unturned frame ``(N, 2)`` at ``s`` in [0, 1] (it depends on ``s`` alone, so it is kept:
+        a report asks for its measures' t, the sweep and the clip's frames, which share some t)."""
+        found = self._solved.get(s)
+        if found is None:
+            from scipy.sparse import csc_matrix, identity
+            from scipy.sparse.linalg import splu
+
+            mesh, size = self.mesh, len(self.free)
+            r_in, c_in = self.slot[self.rows[self.inner]], self.slot[self.cols[self.inner]]
+            r_out = self.slot[self.rows[self.outer]]
+            boundary = mesh.p0[self.cols[self.outer]]
+            w = (1.0 - s) * self.w0 + s * self.w1
+            matrix = identity(size, format="csc") - csc_matrix((w[self.inner], (r_in, c_in)), shape=(size, size))
+            rhs = np.zeros((size, 2))
+            np.add.at(rhs, r_out, w[self.outer][:, None] * boundary)
+            convex = np.array(mesh.p0)
+            convex[self.free] = splu(matrix).solve(rhs)
+            kept = self.keeping(s, convex)[:self.n]
+            found = self._sized(kept - kept.mean(axis=0), s)  # its vertex mean on the straight path
+            if (len(self._solved) + 1) * found.nbytes <= _FRAME_BYTES:
+                self._solved[s] = found
+        return found
 
     def _area(self, points: Array) -> float:
         """Signed area of the closed contours of ``points (N, 2)`` together (holes wound the other way count less)."""
@@ -153,24 +179,9 @@ class _Paths:
         return middle + math.sqrt(goal / now) * (x - middle)
 
     def __call__(self, t: Array) -> Array:
-        from scipy.sparse import csc_matrix, identity
-        from scipy.sparse.linalg import splu
-
-        mesh, n = self.mesh, self.n
-        out = np.empty((len(t), n, 2))
-        size = len(self.free)
-        r_in, c_in = self.slot[self.rows[self.inner]], self.slot[self.cols[self.inner]]
-        r_out = self.slot[self.rows[self.outer]]
-        boundary = mesh.p0[self.cols[self.outer]]
+        out = np.empty((len(t), self.n, 2))
         for f, s in enumerate(np.clip(t, 0.0, 1.0).tolist()):
-            w = (1.0 - s) * self.w0 + s * self.w1
-            matrix = identity(size, format="csc") - csc_matrix((w[self.inner], (r_in, c_in)), shape=(size, size))
-            rhs = np.zeros((size, 2))
-            np.add.at(rhs, r_out, w[self.outer][:, None] * boundary)
-            convex = np.array(mesh.p0)
-            convex[self.free] = splu(matrix).solve(rhs)
-            kept = self.keeping(s, convex)[:n]
-            out[f] = self._sized(kept - kept.mean(axis=0), s)  # its vertex mean on the straight path
+            out[f] = self._frame(s)
         center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
         return self.scale * (center[:, None, :] + rotate(out, (t * self.phi)[:, None]))
 

@@ -565,7 +565,8 @@ def _flip_folds(p: Array, q: Array, triangles: Triangles, folded: NDArray[np.boo
                 continue
             d = [x for x in triangles[s].tolist() if x not in (u, v)][0]
             new = np.array([[w, u, d], [d, v, w]], dtype=np.intp)
-            if np.all(_doubled_areas(p, new) > 0) and np.all(_doubled_areas(q, new) > 0):
+            # both new triangles in p and in q, in one call (each determinant is the same taken alone)
+            if np.all(np.linalg.det(np.concatenate([edge_matrix(p, new), edge_matrix(q, new)])) > 0):
                 triangles[t], triangles[s] = new
                 for k, tri in ((t, new[0]), (s, new[1])):
                     x0, x1, x2 = tri.tolist()

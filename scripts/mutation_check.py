@@ -1,6 +1,7 @@
-"""Mutation check: do the tests catch plausible bugs in the core, timeline, encoders and atomic writes?
+"""Mutation check: do the tests catch plausible bugs in the core, timeline, encoders, atomic writes and more?
 
-    python scripts/mutation_check.py            # every mutant, one after another (about 15 minutes)
+    python scripts/mutation_check.py            # every mutant, one after another (about 25 minutes)
+    python scripts/mutation_check.py -k "server writer reader"   # the preview server, scene writer, SVG reader
     python scripts/mutation_check.py -k ease    # only mutants whose name contains "ease"
     python scripts/mutation_check.py -k "svg manifest"   # ... "svg" or "manifest"
     python scripts/mutation_check.py --list     # the mutants, without running anything
@@ -57,6 +58,27 @@ CLUSTER = tuple(_CLUSTER_TESTS + name for name in ("test_a_bad_address_is_refuse
                                                    "test_a_port_where_nothing_listens_is_one_line",
                                                    "test_an_http_server_is_not_taken_for_a_scheduler"))
 DRAWING = ("tests/scenefile/test_drawing_rules.py", "tests/scenefile/test_hostile_inputs.py")
+_SECURITY = "tests/preview/test_preview_security.py::"
+SERVER_ORIGIN = (_SECURITY + "test_cross_origin_method_post_is_refused_and_changes_nothing",
+                 _SECURITY + "test_a_cross_site_request_without_origin_is_refused",
+                 _SECURITY + "test_state_needs_the_token", _SECURITY + "test_own_origin_with_the_token_is_answered")
+SERVER_HOST = (_SECURITY + "test_a_foreign_host_is_refused_even_with_the_token",
+               _SECURITY + "test_own_origin_with_the_token_is_answered")
+SERVER_TOKEN = (_SECURITY + "test_state_needs_the_token",
+                _SECURITY + "test_edit_is_refused_across_origins_and_without_the_token",
+                _SECURITY + "test_the_page_carries_a_token_of_the_run",
+                _SECURITY + "test_a_body_too_long_is_refused_before_it_is_sent")
+SERVER_CONNECTIONS = ("tests/preview/test_preview_connections.py",)
+_EDITS_TESTS = "tests/scenefile/test_scene_edits.py::"
+INIT = ("tests/cli/test_init.py", _EDITS_TESTS + "test_the_scene_of_drawings_draws_what_the_command_line_draws",
+        _EDITS_TESTS + "test_the_scene_of_drawings_reads_back_its_names_and_times_exactly")
+EDITS = ("tests/scenefile/test_scene_edits.py",)
+PREVIEW_EDITS = ("tests/preview/test_preview_edits.py",)
+SVG_CSS = ("tests/scenefile/test_svg_css.py",)
+SVG_UNITS = ("tests/scenefile/test_svg_small_rules.py", "tests/scenefile/test_svg.py")
+SVG_VIEW = ("tests/scenefile/test_svg_viewports.py",
+            "tests/scenefile/test_svg_small_rules.py::test_a_nested_view_box_origin_moves_its_content")
+SVG_ERRORS = ("tests/scenefile/test_svg_error_rules.py",)
 STEERING = ("tests/core/test_steering.py", "tests/scenefile/test_steering_fields.py")
 
 MUTANTS = [
@@ -259,20 +281,20 @@ MUTANTS = [
            "if entry is None or not ours(name):", "if entry is not None and not ours(name):", OWNED),
     Mutant("report: a shape name left unescaped in the table", "tweenrender/reports/html_report.py",
            'where = _esc(entry["name"])', 'where = entry["name"]', ("tests/cli/test_names.py",)),
-    Mutant("svg: nested viewport scaled by max (slice) not min (meet)", "tweenrender/scenefile/svg_viewport.py",
+    Mutant("svg reader: nested viewport scaled by max (slice) not min (meet)", "tweenrender/scenefile/svg_viewport.py",
            'if words[1:2] == ["slice"] else min(sx, sy)', 'if words[1:2] == ["slice"] else max(sx, sy)', DRAWING),
-    Mutant("svg: display none drawn", "tweenrender/scenefile/svg_document.py",
+    Mutant("svg reader: display none drawn", "tweenrender/scenefile/svg_document.py",
            'if own.get("display", "").strip() == "none":', 'if own.get("display", "").strip() == "None":', DRAWING),
     Mutant("contours: size term of pairing zeroed", "tweenrender/core/contours.py",
            "+ _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))", "+ 0.0 * np.abs(sa[:, None] - sb[None]))",
            ("tests/core/test_contours.py",)),
-    Mutant("css: !important declarations not applied", "tweenrender/scenefile/svg_css.py",
+    Mutant("svg reader: css !important declarations not applied", "tweenrender/scenefile/svg_css.py",
            "    for important in (False, True):", "    for important in (False,):",
            ("tests/scenefile/test_svg_css.py",)),
-    Mutant("svg: a pipe not named as one", "tweenrender/scenefile/svg_document.py",
+    Mutant("svg reader: a pipe not named as one", "tweenrender/scenefile/svg_document.py",
            '(stat.S_ISFIFO, "a pipe (FIFO)"),', "",
            ("tests/scenefile/test_hostile_inputs.py",)),
-    Mutant("svg: an infinite transform number accepted", "tweenrender/scenefile/svg_document.py",
+    Mutant("svg reader: an infinite transform number accepted", "tweenrender/scenefile/svg_document.py",
            "        if not math.isfinite(float(number)):", "        if False:", ("tests/scenefile/test_hostile_inputs.py",)),
     Mutant("scene: key count not limited", "tweenrender/scenefile/scene_limits.py",
            "        if count > LIMITS[what]:", "        if count > 10 * LIMITS[what]:",
@@ -426,8 +448,6 @@ MUTANTS = [
     Mutant("steering: a breakdown at its time, not its favour", "tweenrender/core/timing/timeline.py",
            "f = np.array([float(key.breakdown)])",
            "f = np.array([(key.time - keys[k - 1].time) / (keys[end].time - keys[k - 1].time)])", STEERING),
-    Mutant("init: hold left out", "tweenrender/scenefile/scene_writer.py",
-           'lines.append(f"hold = {_number(hold)}")', "pass", ("tests/cli/test_init.py",)),
     Mutant("init: replaces an existing scene", "tweenrender/encode/atomic.py",
            "        os.link(temporary, target)", "        os.replace(temporary, target)", ("tests/cli/test_init.py",)),
     # -- limits and temporaries ---------------------------------------------------------------------
@@ -442,6 +462,118 @@ MUTANTS = [
            "first, second = float(np.hypot(*(corner - before))), float(np.hypot(*(after - corner)))",
            "first, second = float(np.linalg.norm(corner - before)), float(np.linalg.norm(after - corner))",
            ("tests/core/test_balance.py",)),
+    # -- the preview server: who may ask, how long and how many ----------------------------------------
+    Mutant("preview server: Origin not checked", "tweenrender/preview/server.py",
+           "(origin is None or origin in self.server.origins)", "True", SERVER_ORIGIN),
+    Mutant("preview server: Origin null taken for no page", "tweenrender/preview/server.py",
+           "(origin is None or origin in self.server.origins)",
+           "(origin in (None, \"null\") or origin in self.server.origins)", SERVER_ORIGIN),
+    Mutant("preview server: Sec-Fetch-Site not checked", "tweenrender/preview/server.py",
+           ' \\\n                and site in (None, "same-origin", "none"):', ":", SERVER_ORIGIN),
+    Mutant("preview server: Host not checked", "tweenrender/preview/server.py",
+           'headers.get("Host", "") in self.server.hosts and ', "", SERVER_HOST),
+    Mutant("preview server: Host taken without its port", "tweenrender/preview/server.py",
+           'self.hosts = {f"127.0.0.1:{port}", f"localhost:{port}"}',
+           'self.hosts = {f"127.0.0.1:{port}", f"localhost:{port}", "127.0.0.1", "localhost"}', SERVER_HOST),
+    Mutant("preview server: state answered without the token", "tweenrender/preview/server.py",
+           'if not self.server.token_matches(query.get("token", [None])[0]):', "if False:", SERVER_TOKEN),
+    Mutant("preview server: a POST's token not checked", "tweenrender/preview/server.py",
+           "if not isinstance(payload, dict) or not self.server.token_matches(payload.get(\"token\")):",
+           "if not isinstance(payload, dict):", SERVER_TOKEN),
+    Mutant("preview server: token compared as a prefix", "tweenrender/preview/server.py",
+           "hmac.compare_digest(given.encode(), self.token.encode())", "self.token.startswith(given)",
+           SERVER_TOKEN),
+    Mutant("preview server: one token for every run", "tweenrender/preview/server.py",
+           "self.token = secrets.token_urlsafe(24)", 'self.token = "tweenrender-preview-token-0"', SERVER_TOKEN),
+    Mutant("preview server: no timeout on a silent connection", "tweenrender/preview/server.py",
+           "timeout = REQUEST_SECONDS  # the socket's", "timeout = None  # the socket's", SERVER_CONNECTIONS),
+    Mutant("preview server: no cap on threads", "tweenrender/preview/server.py",
+           "if not self._slots.acquire(blocking=False):", "if False:", SERVER_CONNECTIONS),
+    Mutant("preview server: a connection's slot not given back", "tweenrender/preview/server.py",
+           "        finally:\n            self._slots.release()", "        finally:\n            pass",
+           SERVER_CONNECTIONS),
+    Mutant("preview server: a body of any length read", "tweenrender/preview/server.py",
+           "if not 0 <= length <= _MAX_BODY:", "if not 0 <= length:", SERVER_TOKEN),
+    # -- the scene writer: what init writes, the preview's edits ---------------------------------------
+    Mutant("scene writer: init's times without the hold", "tweenrender/scenefile/scene_writer.py",
+           "period = float(step) + float(hold)", "period = float(step)", INIT),
+    Mutant("scene writer: init's hold left out", "tweenrender/scenefile/scene_writer.py",
+           'lines.append(f"hold = {_number(hold)}")', "pass", INIT),
+    Mutant("scene writer: init's ease left out", "tweenrender/scenefile/scene_writer.py",
+           'lines.append(f"ease = {_string(ease)}")', "pass", INIT),
+    Mutant("scene writer: init's stagger left out", "tweenrender/scenefile/scene_writer.py",
+           'lines.append(f"stagger = {_number(stagger)}")', "pass", INIT),
+    Mutant("scene writer: init's file names absolute", "tweenrender/scenefile/scene_writer.py",
+           "names = [os.path.relpath(Path(p).absolute(), folder.absolute()) for p in drawings]",
+           "names = [str(Path(p).absolute()) for p in drawings]", INIT),
+    Mutant("scene writer: init's file names unescaped", "tweenrender/scenefile/scene_writer.py",
+           "return json.dumps(text, ensure_ascii=False)", "return f'\"{text}\"'", INIT),
+    Mutant("scene writer: init's times to six digits", "tweenrender/scenefile/scene_writer.py",
+           "return repr(float(value))", 'return f"{float(value):g}"', INIT),
+    Mutant("scene writer: an edit drops the comments", "tweenrender/scenefile/scene_edits.py",
+           "    return tomlkit.dumps(document)\n\n\ndef written_tables",
+           "    return tomlkit.dumps(document.unwrap())\n\n\ndef written_tables", EDITS),
+    Mutant("scene writer: unhint leaves its arc", "tweenrender/scenefile/scene_edits.py",
+           "        if arcs is not None and letter in arcs:  # an arc belongs to its hint",
+           "        if False:  # an arc belongs to its hint", EDITS),
+    Mutant("scene writer: an ease kept beside a spacing chart", "tweenrender/scenefile/scene_edits.py",
+           'if "spacing" in table:  # a key has', "if False:  # a key has", EDITS),
+    Mutant("scene writer: a key index one past the end accepted", "tweenrender/scenefile/scene_edits.py",
+           "if not 0 <= self.index < len(keys):", "if not 0 <= self.index <= len(keys):", EDITS),
+    Mutant("scene writer: a negative key index counted from the end", "tweenrender/scenefile/scene_edits.py",
+           "if not 0 <= self.index < len(keys):", "if not -len(keys) <= self.index < len(keys):", EDITS),
+    Mutant("scene writer: a hint letter of several letters", "tweenrender/scenefile/scene_edits.py",
+           '_LETTER = re.compile(r"[a-z]")', '_LETTER = re.compile(r"[a-z]+")', EDITS),
+    Mutant("scene writer: a breakdown inserted before its key", "tweenrender/scenefile/scene_edits.py",
+           "keys.insert(self.index + 1, entry)", "keys.insert(self.index, entry)", EDITS),
+    Mutant("scene writer: a baked hint at the key before's place", "tweenrender/scenefile/scene_edits.py",
+           "nearest_point((1.0 - f) * a + f * b,", "nearest_point(a,", EDITS),
+    Mutant("scene writer: undo over the user's own save", "tweenrender/preview/edits.py",
+           "            if now != self._written:", "            if False:", PREVIEW_EDITS),
+    Mutant("scene writer: drawings' scene written over an existing file", "tweenrender/preview/edits.py",
+           "        if not os.path.lexists(path):", "        if True:", PREVIEW_EDITS),
+    Mutant("scene writer: the scene saved for drawings not announced", "tweenrender/preview/edits.py",
+           "                    self.announce(str(path))", "                    pass", PREVIEW_EDITS),
+    # -- the SVG reader: units, cascade, viewports, error rules ----------------------------------------
+    Mutant("svg reader: Q read as a millimetre", "tweenrender/scenefile/svg_lengths.py",
+           "return number * 96.0 / 25.4 / 4.0", "return number * 96.0 / 25.4", SVG_UNITS),
+    Mutant("svg reader: ex a whole em", "tweenrender/scenefile/svg_lengths.py",
+           '_PER_UNIT = {"em": 1.0, "ex": 0.5, "ch": 0.5}', '_PER_UNIT = {"em": 1.0, "ex": 1.0, "ch": 0.5}',
+           SVG_UNITS),
+    Mutant("svg reader: vmin the larger side", "tweenrender/scenefile/svg_lengths.py",
+           '"vmin": min(width, height)', '"vmin": max(width, height)', SVG_UNITS),
+    Mutant("svg reader: rem read as em", "tweenrender/scenefile/svg_lengths.py",
+           'value = number * (rem if unit == "rem" else', 'value = number * (em if unit == "rem" else', SVG_UNITS),
+    Mutant("svg reader: inline style below the sheets", "tweenrender/scenefile/svg_css.py",
+           "layers = (*sheet, inline)", "layers = (inline, *sheet)", SVG_CSS),
+    Mutant("svg reader: presentation attributes over the sheets", "tweenrender/scenefile/svg_css.py",
+           "if strong is important and name in wanted)",
+           "if strong is important and name in wanted and name not in presentation)", SVG_CSS),
+    Mutant("svg reader: rules inside @media left out", "tweenrender/scenefile/svg_css.py",
+           '_APPLIED_AT_RULES = ("media", "supports")', '_APPLIED_AT_RULES = ("supports",)', SVG_CSS),
+    Mutant("svg reader: a sheet of another type read as CSS", "tweenrender/scenefile/svg_css.py",
+           'return kind in ("", "text/css")', "return True", SVG_CSS),
+    Mutant("svg reader: xMax aligned as xMid", "tweenrender/scenefile/svg_viewport.py",
+           'where = {"Min": 0.0, "Mid": 0.5, "Max": 1.0}', 'where = {"Min": 0.0, "Mid": 0.5, "Max": 0.5}',
+           SVG_VIEW),
+    Mutant("svg reader: preserveAspectRatio none kept uniform", "tweenrender/scenefile/svg_viewport.py",
+           'if align != "none":', "if True:", SVG_VIEW),
+    Mutant("svg reader: the viewBox's origin ignored", "tweenrender/scenefile/svg_viewport.py",
+           "-x * sx + (width - w * sx) * fx", "(width - w * sx) * fx", SVG_VIEW),
+    Mutant("svg reader: overflow visible still clipped", "tweenrender/scenefile/svg_viewport.py",
+           'clipped = overflow.strip().lower() not in ("visible", "auto")', "clipped = True", SVG_VIEW),
+    Mutant("svg reader: a viewBox of zero width accepted", "tweenrender/scenefile/svg_viewport.py",
+           "or w <= 0 or h <= 0:", "or w < 0 or h < 0:", SVG_VIEW),
+    Mutant("svg reader: a comma between a command's numbers refused", "tweenrender/scenefile/svg_pathdata.py",
+           "position = (_SEPARATORS if k else _SPACE).match(", "position = _SPACE.match(", SVG_ERRORS),
+    Mutant("svg reader: arc flags read as numbers", "tweenrender/scenefile/svg_pathdata.py",
+           "if arc and k in (3, 4):", "if False:", SVG_ERRORS),
+    Mutant("svg reader: numbers after a moveto repeat it", "tweenrender/scenefile/svg_pathdata.py",
+           '            command = "L" if command == "M" else "l"', "            pass", SVG_ERRORS),
+    Mutant("svg reader: a path not starting with a moveto drawn", "tweenrender/scenefile/svg_pathdata.py",
+           'if not out and command not in "Mm":', "if False:", SVG_ERRORS),
+    Mutant("svg reader: T read with four numbers, as Q", "tweenrender/scenefile/svg_pathdata.py",
+           '"T": 2,', '"T": 4,', SVG_ERRORS),
 ]
 
 

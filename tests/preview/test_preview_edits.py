@@ -157,3 +157,24 @@ def test_timing_flags_are_taken_for_drawings_and_refused_for_a_scene_file(tmp_pa
         assert state["take"]["total"] == 2 * 24 + 1
     finally:
         stop(preview)
+
+
+def test_the_first_edit_of_drawings_never_replaces_a_file_of_that_name(tmp_path: Path) -> None:
+    """Where ``a-b.toml`` is already the user's, the first edit of drawings ``a`` and ``b`` saves
+    ``a-b-2.toml``; the user's file keeps its bytes."""
+    from types import SimpleNamespace
+
+    from tweenrender.preview.edits import SceneEditor
+
+    svgs = sorted((SCENES / "svg").glob("*.svg"))[:2]
+    mine = tmp_path / f"{svgs[0].stem}-{svgs[1].stem}.toml"
+    mine.write_bytes(b"# mine\n")
+    previewer = SimpleNamespace(inputs=list(svgs), timing={}, step=1.0, changed=lambda: None)
+    previewer.use_scene_file = lambda path: setattr(previewer, "inputs", [path])
+    announced: list[str] = []
+    editor = SceneEditor(previewer, announced.append, folder=tmp_path)  # type: ignore[arg-type]
+    reply = editor.apply([{"op": "ease", "shape": "any", "key": 0, "ease": "in-out"}])
+    assert reply == {"ok": True}, reply
+    written = tmp_path / f"{svgs[0].stem}-{svgs[1].stem}-2.toml"
+    assert announced == [str(written)] and mine.read_bytes() == b"# mine\n"
+    assert tomllib.loads(written.read_text())["drawing"][0]["ease"] == "in-out"

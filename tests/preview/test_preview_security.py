@@ -19,6 +19,7 @@ import pytest
 
 from tests.browser import live_page
 from tests.preview.test_preview import Preview, needs_chromium, start_preview, stop, SCENE
+from tweenrender.preview.server import REQUEST_SECONDS
 
 RED = "#d03030"
 
@@ -98,6 +99,32 @@ def test_state_needs_the_token(preview: Preview) -> None:
     status, body = _request(preview, "GET", f"/state?token={preview.token}")
     assert status == 200 and json.loads(body)["take"] is not None
     assert _request(preview, "GET", f"/state?token={preview.token}", Origin="http://evil.example")[0] == 403
+
+
+
+def test_a_cross_site_request_without_origin_is_refused(preview: Preview) -> None:
+    """A browser marks every request a page of another site makes ``Sec-Fetch-Site: cross-site`` (Fetch
+    Metadata), a GET without ``Origin`` too: refused even with the token; the page's own are answered."""
+    for site in ("cross-site", "same-site"):
+        assert _request(preview, "GET", f"/state?token={preview.token}", **{"Sec-Fetch-Site": site})[0] == 403
+        body = json.dumps({"token": preview.token, "method": "injective"}).encode()
+        assert _request(preview, "POST", "/method", body, **{"Sec-Fetch-Site": site})[0] == 403
+    assert _request(preview, "GET", f"/state?token={preview.token}", **{"Sec-Fetch-Site": "same-origin"})[0] == 200
+    assert _method_now(preview) is None
+
+
+def test_a_body_too_long_is_refused_before_it_is_sent(preview: Preview) -> None:
+    """A request announcing a 2 GB body is answered at once (not read, not waited for)."""
+    port = int(preview.url.rsplit(":", 1)[1].rstrip("/"))
+    connection = http.client.HTTPConnection("127.0.0.1", port, timeout=REQUEST_SECONDS + 5)
+    try:
+        connection.putrequest("POST", "/edit")
+        connection.putheader("Content-Length", str(2 << 30))
+        connection.endheaders()
+        reply = connection.getresponse()
+        assert reply.status == 400
+    finally:
+        connection.close()
 
 
 def test_own_origin_with_the_token_is_answered(preview: Preview) -> None:

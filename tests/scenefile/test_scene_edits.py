@@ -103,6 +103,17 @@ def test_unhint_takes_back_exactly_what_hint_wrote() -> None:
     assert removed == text
 
 
+
+def test_unhint_takes_its_arc_with_it(tmp_path: Path) -> None:
+    """An arc belongs to its hint (DESIGN, "The preview edits"): unhinting the letter leaves no arc of it."""
+    hinted = "hints = {a = [4, 0], b = [0, 4]}\narcs = {a = [6, 3]}\n"
+    text, path = _squares(tmp_path, extra0=hinted, extra1="hints = {a = [12, 0], b = [8, 4]}\n")
+    edited = api.edit_scene_text(text, path, [{"op": "unhint", "shape": "box", "key": k, "letter": "a"}
+                                              for k in (0, 1)])
+    first, second = tomllib.loads(edited)["shape"][0]["key"]
+    assert first["hints"] == {"b": [0, 4]} and second["hints"] == {"b": [8, 4]} and "arcs" not in first
+
+
 def test_moving_a_hint_rewrites_its_point_only() -> None:
     text = ARROW.read_text()
     moved = api.edit_scene_text(text, ARROW, [{"op": "hint", "shape": "arrow", "key": 0, "letter": "a",
@@ -178,7 +189,10 @@ def test_the_steering_fields_are_written_as_design_names_them(tmp_path: Path) ->
     ({"op": "hint", "shape": 3, "key": 0}, "ops[0].shape"),
     ({"op": "hint", "shape": "box", "key": "0"}, "ops[0].key"),
     ({"op": "hint", "shape": "box", "key": 9, "letter": "a", "point": [0, 0]}, "ops[0].key"),
+    ({"op": "hint", "shape": "box", "key": 2, "letter": "a", "point": [0, 0]}, "ops[0].key"),  # keys 0 and 1
+    ({"op": "hint", "shape": "box", "key": -1, "letter": "a", "point": [0, 0]}, "ops[0].key"),
     ({"op": "hint", "shape": "box", "key": 0, "letter": "A", "point": [0, 0]}, "ops[0].letter"),
+    ({"op": "hint", "shape": "box", "key": 0, "letter": "ab", "point": [0, 0]}, "ops[0].letter"),
     ({"op": "hint", "shape": "box", "key": 0, "letter": "a", "point": [0, float("nan")]}, "ops[0].point"),
     ({"op": "unhint", "shape": "box", "key": 0, "letter": "z"}, "ops[0].letter"),
     ({"op": "turn", "shape": "box", "key": 0, "turn": "left"}, "ops[0].turn"),
@@ -202,6 +216,21 @@ def test_no_ops_and_json_scenes_are_refused(tmp_path: Path) -> None:
             api.edit_scene_text(text, path, ops)
     with pytest.raises(SceneError, match="JSON"):
         api.edit_scene_text("{}", tmp_path / "scene.json", [{"op": "ease"}])
+
+
+
+def test_the_scene_of_drawings_reads_back_its_names_and_times_exactly(tmp_path: Path) -> None:
+    """The names ``init`` writes are read back by TOML as the files' own (quotes and backslashes
+    included), relative to the scene's folder; the times are i × (step + hold) to the last bit."""
+    folder = tmp_path / "art"
+    folder.mkdir()
+    names = ['say "hi".svg', "back\\slash.svg", "plain.svg"]
+    svgs = [folder / name for name in names]
+    step, hold = 1.0 / 3.0, 0.1
+    data = tomllib.loads(api.drawings_scene_text(svgs, tmp_path, step, hold=hold))
+    assert [d["svg"] for d in data["drawing"]] == [f"art/{name}" for name in names]
+    assert [d["time"] for d in data["drawing"]] == [i * (step + hold) for i in range(3)]
+    assert [d["hold"] for d in data["drawing"]] == [hold] * 3
 
 
 def test_the_scene_of_drawings_draws_what_the_command_line_draws(tmp_path: Path) -> None:

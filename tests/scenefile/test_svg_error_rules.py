@@ -25,6 +25,7 @@ from tweenrender.scenefile.svg_pathdata import path_prefix, points_prefix
     ("M 100 100 a 25 25 0 -1 0 25 -25 z", ("M 100 100", False)),                   # a flag is 0 or 1
     ("M 0 0 L ,10 10", ("M 0 0", False)),
     ("M 0 0 L 1 1, 2 2", ("M 0 0 L 1 1 L 2 2", True)),
+    ("M 0 0 Q 5 5 10 0 T 20 0 30 0", ("M 0 0 Q 5 5 10 0 T 20 0 T 30 0", True)),  # T takes one point
 ])
 def test_path_data_is_read_up_to_its_first_error(data: str, expected: tuple[str, bool]) -> None:
     assert path_prefix(data) == expected

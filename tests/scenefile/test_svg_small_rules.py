@@ -139,6 +139,54 @@ def test_ch_is_half_an_em(tmp_path: Path) -> None:
     assert (columns.min(), columns.max(), rows.min(), rows.max()) == (10, 39, 5, 24)
 
 
+
+def test_ex_is_half_an_em(tmp_path: Path) -> None:
+    """Without the font's x-height ``ex`` is half an ``em`` (CSS Values 4 §6.1.1): at font-size 10 the same
+    rectangle as above, 10 to 40 across and 5 to 25 down."""
+    svg = tmp_path / "ex.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="50" height="50" viewBox="0 0 50 50" '
+                   'font-size="10"><rect x="2ex" y="1ex" width="6ex" height="4ex" fill="green"/></svg>')
+    ink = (tr.frame(tr.load_scene(svg), 0.0, size=(50, 50), background="#ffffff")[..., :3] != 255).any(axis=-1)
+    rows, columns = np.nonzero(ink)
+    assert (columns.min(), columns.max(), rows.min(), rows.max()) == (10, 39, 5, 24)
+
+
+def test_q_is_a_quarter_millimetre(tmp_path: Path) -> None:
+    """``1Q`` is a quarter of a millimetre (CSS Values 3 §6.2), 96 px to 25.4 mm: 127Q = 31.75 mm = 1.25 in
+    = 120 px, and 63.5Q = 60 px."""
+    svg = tmp_path / "q.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200" viewBox="0 0 200 200">'
+                   '<rect x="0" y="0" width="127Q" height="63.5Q" fill="green"/></svg>')
+    ink = (tr.frame(tr.load_scene(svg), 0.0, size=(200, 200), background="#ffffff")[..., :3] != 255).any(axis=-1)
+    rows, columns = np.nonzero(ink)
+    assert (columns.min(), columns.max(), rows.min(), rows.max()) == (0, 119, 0, 59)
+
+
+
+def test_rem_is_the_root_elements_font_size(tmp_path: Path) -> None:
+    """``rem`` is the root element's ``font-size`` wherever it is written (CSS Values 3 §6.1.1), ``em`` the
+    element's own: inside a group at font-size 20 under a root at 10, 1rem = 10 and 1em = 20."""
+    svg = tmp_path / "rem.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="50" height="50" viewBox="0 0 50 50" '
+                   'font-size="10"><g font-size="20"><rect x="1rem" y="0.5em" width="3rem" height="1em" '
+                   'fill="green"/></g></svg>')
+    ink = (tr.frame(tr.load_scene(svg), 0.0, size=(50, 50), background="#ffffff")[..., :3] != 255).any(axis=-1)
+    rows, columns = np.nonzero(ink)
+    assert (columns.min(), columns.max(), rows.min(), rows.max()) == (10, 39, 10, 29)
+
+
+def test_a_nested_view_box_origin_moves_its_content(tmp_path: Path) -> None:
+    """A nested ``<svg>``'s ``viewBox="50 50 100 100"`` in a 50 × 50 viewport at (10, 20) maps user point
+    (50, 50) to (10, 20) at scale 1/2 (SVG 1.1 §7.7): a square from 50 to 150 lands on 10–60 × 20–70."""
+    svg = tmp_path / "nested.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 100 100">'
+                   '<svg x="10" y="20" width="50" height="50" viewBox="50 50 100 100">'
+                   '<rect x="50" y="50" width="100" height="100" fill="green"/></svg></svg>')
+    ink = (tr.frame(tr.load_scene(svg), 0.0, size=(100, 100), background="#ffffff")[..., :3] != 255).any(axis=-1)
+    rows, columns = np.nonzero(ink)
+    assert (columns.min(), columns.max(), rows.min(), rows.max()) == (10, 59, 20, 69)
+
+
 def _winding(contours: list[np.ndarray], points: np.ndarray) -> np.ndarray:
     """Winding numbers of ``points (P, 2)`` about closed ``contours`` (each ``(N, 2)``), by crossings of a ray."""
     total = np.zeros(len(points), dtype=int)

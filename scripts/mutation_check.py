@@ -322,7 +322,7 @@ MUTANTS = [
     Mutant("keyframes: a fitted end taken off its room", "tweenrender/vector/keyframes.py",
            "offset = np.clip(room.least[0], room.lo[0], room.hi[0])", "offset = room.least[0]", VECTOR),
     Mutant("keyframes: a timed span held to the whole tolerance", "tweenrender/vector/keyframes.py",
-           "found = _eased(values, a, start, b, limit * EASED_SHARE)", "found = _eased(values, a, start, b, limit)",
+           "lambda b: _eased(values, a, start, b, limit * EASED_SHARE)", "lambda b: _eased(values, a, start, b, limit)",
            VECTOR),
     Mutant("keyframes: the last fitted keyframe not exact", "tweenrender/vector/keyframes.py",
            "    if b == len(values) - 1:\n        return values[b]", "    if False:\n        return values[b]", VECTOR),

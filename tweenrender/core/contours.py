@@ -23,7 +23,7 @@ from .geometry import bounding_boxes, boxes_holding, signed_area
 from .tangles import _relation, proper_crossings
 
 __all__ = ["ROLES", "inside", "roles", "pair_contours", "keep_nesting", "nearest_point", "anchor",
-           "centre_of_area", "contour_size"]
+           "anchors", "centre_of_area", "contour_size"]
 
 Array = NDArray[np.float64]
 ROLES = ("outer", "hole", "open")
@@ -277,17 +277,33 @@ def anchor(contour: Array, partner: Sequence[Array], partner_closed: Sequence[bo
     """Where a contour ``(N, 2)`` without a partner grows from or shrinks to: the point of the partner
     key's drawing nearest its centre of area (:func:`centre_of_area`) — that centre if it lies in the
     partner key's filled region, else the nearest point of the partner's outlines: ``(2,)``."""
-    centre = centre_of_area([contour], [closed])
-    shut = [p for p, c in zip(partner, partner_closed) if c and len(p) >= 3]
-    if shut:
-        hits = np.array([int(inside(centre[None], p)[0]) for p in shut])
+    return anchors([contour], [closed], partner, partner_closed, fill_rule)[0]
+
+
+def anchors(contours: Sequence[Array], closed: Sequence[bool], partner: Sequence[Array],
+            partner_closed: Sequence[bool], fill_rule: str) -> Array:
+    """:func:`anchor` of each of ``contours (N_i, 2)`` against one partner key: ``(K, 2)``. The partner's
+    contours are boxed once; a centre is tested only against the contours whose boxes hold it, and its
+    nearest point sought only among those whose boxes lie no farther than some contour's first vertex."""
+    out = np.zeros((len(contours), 2))
+    shut = [np.asarray(p, dtype=np.float64) for p, c in zip(partner, partner_closed) if c and len(p) >= 3]
+    shut_boxes = bounding_boxes(shut)
+    boxes = bounding_boxes(partner)
+    firsts = np.array([p[0] if len(p) else (np.inf, np.inf) for p in partner], dtype=np.float64).reshape(-1, 2)
+    winding: dict[int, float] = {}
+    for k, (contour, shut_k) in enumerate(zip(contours, closed)):
+        centre = centre_of_area([contour], [shut_k])
+        out[k] = centre
+        near = boxes_holding(centre, shut_boxes).tolist()  # outside every other box: inside none
+        hits = [k2 for k2 in near if inside(centre[None], shut[k2])[0]]
         if fill_rule == "evenodd":
-            filled = hits.sum() % 2 == 1
+            filled = len(hits) % 2 == 1
         else:
-            winding = np.array([np.sign(signed_area(p)) for p in shut])
-            filled = (hits * winding).sum() != 0
-        if filled:
-            return centre
-    if not partner:
-        return centre
-    return nearest_point(centre, partner, partner_closed)
+            filled = sum(winding.setdefault(h, float(np.sign(signed_area(shut[h])))) for h in hits) != 0
+        if filled or not partner:
+            continue
+        gap = np.hypot(*np.maximum(0.0, np.maximum(boxes[:, :2] - centre, centre - boxes[:, 2:])).T)  # to each box
+        reach = float(np.min(np.hypot(*(firsts - centre).T)))  # the nearest point is no farther
+        chosen = np.flatnonzero(gap <= reach).tolist()
+        out[k] = nearest_point(centre, [partner[c] for c in chosen], [partner_closed[c] for c in chosen])
+    return out

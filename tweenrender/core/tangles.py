@@ -33,10 +33,11 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from .geometry import bounding_boxes, boxes_holding
 from .memo import Remembered
 
 __all__ = ["SWEEP", "parents", "tangles", "tangled_times", "proper_crossings", "crossing_pairs", "linear_tangles",
-           "point_states", "Apart", "apart_in_keys", "contact_times"]
+           "point_states", "held_pairs", "Apart", "apart_in_keys", "contact_times"]
 
 Array = NDArray[np.float64]
 
@@ -203,16 +204,41 @@ def _area(polygon: Array) -> float:
 def parents(contours: Sequence[Array], closed: Sequence[bool]) -> list[int | None]:
     """Each contour's parent: the smallest other closed contour around its first vertex (None for none,
     and for a contour that is one point: growing from it, it is no hole yet; where it comes to lie is
-    what :func:`contact_times` checks of contours apart in both keys)."""
+    what :func:`contact_times` checks of contours apart in both keys). Only the contours whose bounding
+    boxes hold the vertex are tested."""
     shut = [c for c, (p, s) in enumerate(zip(contours, closed)) if s and len(p) >= 3]
+    boxes = bounding_boxes([contours[c] for c in shut])
     areas = {c: _area(np.asarray(contours[c], dtype=np.float64)) for c in shut}
     out: list[int | None] = []
     for c, points in enumerate(contours):
-        flat = len(points) == 0 or not np.any(np.asarray(points) != np.asarray(points)[:1])
-        around = [d for d in shut if d != c and not flat and
-                  _inside(np.asarray(points, dtype=np.float64)[0], np.asarray(contours[d], dtype=np.float64))]
+        points = np.asarray(points, dtype=np.float64)
+        flat = len(points) == 0 or not np.any(points != points[:1])
+        near = [] if flat else [shut[k] for k in boxes_holding(points[0], boxes).tolist()]
+        around = [d for d in near if d != c and _inside(points[0], np.asarray(contours[d], dtype=np.float64))]
         out.append(min(around, key=lambda d: areas[d]) if around else None)
     return out
+
+
+def held_pairs(boxes: Array) -> tuple[Indices, Indices]:
+    """The index pairs ``(p, q)``, ``p != q``, of ``boxes (C, 4)`` (``[xmin, ymin, xmax, ymax]``) where box ``q``
+    lies within box ``p``, edges included: ``(K,)`` each. Each box is set only against the boxes whose left
+    edge falls within its x range (a sweep over the boxes sorted by left edge), so the work follows the
+    pairs whose x ranges nest, not every pair. An empty box (``[inf, inf, -inf, -inf]``) is in no pair."""
+    none = np.zeros(0, dtype=np.intp)
+    usable = np.flatnonzero(boxes[:, 0] <= boxes[:, 2])
+    if len(usable) < 2:
+        return none, none
+    order = usable[np.argsort(boxes[usable, 0], kind="stable")]
+    left = boxes[order, 0]
+    start = np.searchsorted(left, left, side="left")
+    end = np.searchsorted(left, boxes[order, 2], side="right")
+    counts = end - start
+    first = np.repeat(np.arange(len(order)), counts)
+    offset = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
+    p, q = order[first], order[np.repeat(start, counts) + offset]
+    keep = ((p != q) & (boxes[q, 1] >= boxes[p, 1]) & (boxes[q, 2] <= boxes[p, 2])
+            & (boxes[q, 3] <= boxes[p, 3]))
+    return p[keep], q[keep]
 
 
 def tangles(contours: Sequence[Array], closed: Sequence[bool], parent: Sequence[int | None]) -> bool:
@@ -306,14 +332,16 @@ def _shut(contour: Array, closed: bool) -> bool:
 class Apart:
     """What two keys of one shape say about its contours (indices into them).
 
-    ``nested``: ``(c, d, relation)`` for closed contours ``c < d`` apart in both keys, ``relation`` their
-    nesting in both (1: c inside d, -1: d inside c, 0: neither); ``strokes``: pairs ``(c, d)``, one open
-    at least, apart in both keys; ``parent``: each contour's parent in the first key (:func:`parents`), None
-    where the two meet in either key.
+    ``nested``: ``(c, d, relation)`` for closed contours ``c < d`` apart in both keys and one inside the
+    other in both alike (1: c inside d, -1: d inside c); ``joined``: the pairs ``(c, d)``, ``c < d``, not
+    apart in both keys — they meet (share a point) in either key, or (closed) are nested differently.
+    Every other pair of non-empty contours is apart in both keys, side by side (closed) or one open at
+    least. ``parent``: each contour's parent in the first key (:func:`parents`), None where the two meet
+    in either key.
     """
 
     nested: tuple[tuple[int, int, int], ...]
-    strokes: tuple[tuple[int, int], ...]
+    joined: frozenset[tuple[int, int]]
     parent: tuple[int | None, ...]
 
 
@@ -333,21 +361,23 @@ def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[b
 def _apart_in_keys(k0s: list[Array], k1s: list[Array], closed: Sequence[bool]) -> Apart:
     shut = [_shut(k, c) for k, c in zip(k0s, closed)]
     meeting = set(proper_crossings(k0s, shut, touching=True)) | set(proper_crossings(k1s, shut, touching=True))
-    nested, strokes = [], []
-    for c in range(len(k0s)):
-        for d in range(c + 1, len(k0s)):
-            if (c, d) in meeting or min(len(k0s[c]), len(k0s[d])) == 0:
-                continue
-            if not (shut[c] and shut[d]):
-                strokes.append((c, d))
-                continue
-            first = int(_relation(k0s[c][None], k0s[d][None])[0])
-            if first == int(_relation(k1s[c][None], k1s[d][None])[0]):
-                nested.append((c, d, first))
+    ids = [c for c in range(len(k0s)) if shut[c]]
+    # one inside the other in a key needs its box within the other's there: every other pair is side by side
+    boxed: set[tuple[int, int]] = set()
+    for keys in (k0s, k1s):
+        p, q = held_pairs(bounding_boxes([keys[c] for c in ids]))
+        boxed.update((min(ids[x], ids[y]), max(ids[x], ids[y])) for x, y in zip(p.tolist(), q.tolist()))
+    nested, joined = [], set(meeting)
+    for c, d in sorted(boxed - meeting):
+        first = int(_relation(k0s[c][None], k0s[d][None])[0])
+        if first != int(_relation(k1s[c][None], k1s[d][None])[0]):
+            joined.add((c, d))
+        elif first:
+            nested.append((c, d, first))
     # a contour that meets the one around it in a key is no hole of it there (the keys already cross)
     parent = [p if p is None or (min(c, p), max(c, p)) not in meeting else None
               for c, p in enumerate(parents(k0s, shut))]
-    return Apart(tuple(nested), tuple(strokes), tuple(parent))
+    return Apart(tuple(nested), frozenset(joined), tuple(parent))
 
 
 def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
@@ -371,6 +401,8 @@ def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
     tangled = np.zeros(len(t), dtype=bool)
     stroked = np.zeros(len(t), dtype=bool)
     crossed: list[set[tuple[int, int]]] = []
+    filled = [c for c in range(len(frames)) if shut[c] and frames[c].shape[1] > 0]
+    inside_pairs = {(c, d) for c, d, _ in keys.nested}
     for k in range(len(t)):
         found = crossing_pairs([f[k] for f in frames], shut)
         crossed.append(found)
@@ -380,7 +412,10 @@ def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
                 stroked[k] |= not shut[c]
             elif shut[c] and shut[d] and (keys.parent[c] == d or keys.parent[d] == c):
                 tangled[k] = True
-        stroked[k] |= any(pair in found for pair in keys.strokes)
+            elif (c, d) not in keys.joined and (c, d) not in inside_pairs:
+                # apart in both keys: strokes meet where they cross, closed contours side by side too
+                tangled[k] |= shut[c] and shut[d]
+                stroked[k] |= not (shut[c] and shut[d])
     for c, p in enumerate(keys.parent):
         if shut[c] and p is not None:  # wholly outside: no vertex inside (partly outside shows as a crossing)
             rest = np.flatnonzero(~tangled)
@@ -393,4 +428,25 @@ def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
         rest = np.flatnonzero(~met & ~tangled)
         if len(rest):
             tangled[rest] |= _relation(frames[c][rest], frames[d][rest]) != relation
+    tangled |= _side_by_side_nest(frames, filled, tangled, keys.joined | inside_pairs)
     return [float(x) for x in t[tangled]], [float(x) for x in t[stroked]]
+
+
+def _side_by_side_nest(frames: Sequence[Array], filled: Sequence[int], done: NDArray[np.bool_],
+                       not_side_by_side: frozenset[tuple[int, int]] | set[tuple[int, int]]) -> NDArray[np.bool_]:
+    """Frames ``(T,)`` not ``done`` at which two of the closed contours ``filled`` (indices into ``frames``,
+    ``(T, L_i, 2)`` each), side by side in both keys (no pair of ``not_side_by_side``), lie one inside the
+    other: only the pairs whose boxes lie one within the other at that frame are tested."""
+    out = np.zeros(len(done), dtype=bool)
+    if len(filled) < 2:
+        return out
+    lows = np.stack([frames[c].min(axis=1) for c in filled], axis=1)  # (T, C, 2)
+    highs = np.stack([frames[c].max(axis=1) for c in filled], axis=1)
+    for k in np.flatnonzero(~done).tolist():
+        p, q = held_pairs(np.concatenate([lows[k], highs[k]], axis=1))
+        for x, y in zip(p.tolist(), q.tolist()):
+            c, d = min(filled[x], filled[y]), max(filled[x], filled[y])
+            if (c, d) not in not_side_by_side and _relation(frames[c][k:k + 1], frames[d][k:k + 1])[0] != 0:
+                out[k] = True
+                break
+    return out

@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..contours import centre_of_area, inside
-from ..geometry import signed_area
+from ..geometry import bounding_boxes, signed_area
 from ..memo import Remembered
 from ..tangles import _relation, proper_crossings
 
@@ -109,11 +109,15 @@ def _groups(shapes: Sequence[Array], closed: Sequence[bool], grows: Sequence[boo
     """The contours without a partner in groups that come and go together: each outermost one with the
     ones (coming or going the same way) inside it in its key; largest groups first."""
     area = [abs(signed_area(s)) if c and len(s) >= 3 else 0.0 for s, c in zip(shapes, closed)]
+    boxes = bounding_boxes(shapes)
     holder: list[int] = list(range(len(shapes)))
     for j, inner in enumerate(shapes):
-        around = [i for i, outer in enumerate(shapes)
+        # inside another needs its box within the other's
+        boxed = np.flatnonzero(np.all(boxes[:, :2] <= boxes[j, :2], axis=1)
+                               & np.all(boxes[j, 2:] <= boxes[:, 2:], axis=1))
+        around = [i for i in boxed.tolist()
                   if i != j and closed[i] and grows[i] == grows[j] and area[i] > area[j]
-                  and len(outer) >= 3 and bool(np.all(inside(inner, outer)))]
+                  and len(shapes[i]) >= 3 and bool(np.all(inside(inner, shapes[i])))]
         if around:
             holder[j] = max(around, key=lambda i: area[i])
     roots = sorted({holder[j] for j in range(len(shapes))}, key=lambda i: -area[i])
@@ -200,6 +204,9 @@ def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence
     stuck: set[int] = set()
     done_frames: list[Array] = []  # (G, L, 2) of the groups placed so far
     done_closed: list[bool] = []
+    done_lo: list[Array] = []  # (G, 2): their boxes at each grid time
+    done_hi: list[Array] = []
+    fixed = _Around.of(list(others), [bool(c) for c in others_closed])  # boxed once for every group
     for group in groups:
         root = group[0]
         forward = grows[root]
@@ -207,10 +214,10 @@ def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence
         member_closed = [bool(closed[m]) and len(shapes[m]) >= 3 for m in group]
         # search in the direction of growth: a shrinking group's times run backwards
         seen = [f if forward else f[::-1] for f in list(others) + done_frames]
-        around = _Around.of(seen, [bool(c) for c in list(others_closed) + done_closed])
-        final = np.array([[int(_relation(m[None], o[-1][None])[0]) if mc and oc else 0
-                           for o, oc in zip(seen, around.closed)] for m, mc in zip(members, member_closed)],
-                         dtype=np.int8).reshape(len(members), len(seen))
+        lo = np.concatenate([fixed.lo, np.stack(done_lo, axis=1)], axis=1) if done_lo else fixed.lo
+        hi = np.concatenate([fixed.hi, np.stack(done_hi, axis=1)], axis=1) if done_hi else fixed.hi
+        around = _Around(seen, fixed.closed + done_closed, lo if forward else lo[::-1], hi if forward else hi[::-1])
+        final = _final_relations(members, member_closed, around)
         candidates = [np.asarray(anchors[root], dtype=np.float64)]
         if member_closed[0]:
             candidates += [deepest_point(members[0]), centre_of_area([members[0]], [True])]
@@ -237,7 +244,27 @@ def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence
             placed[m] = growth
             done_frames.append(point + scale * (member - point))
             done_closed.append(bool(closed[m]) and len(member) >= 3)
+            done_lo.append(done_frames[-1].min(axis=1))
+            done_hi.append(done_frames[-1].max(axis=1))
     return placed, stuck  # type: ignore[return-value]
+
+
+def _final_relations(members: list[Array], member_closed: list[bool], around: _Around) -> NDArray[np.int8]:
+    """How each of closed ``members (L_m, 2)`` lies against each closed contour ``around`` at the last grid
+    time (1 member inside, -1 other inside member, 0 neither, or either one open): ``(M, O)``. Only the
+    pairs with one box within the other are tested."""
+    out = np.zeros((len(members), len(around.frames)), dtype=np.int8)
+    lo, hi = around.lo[-1], around.hi[-1]  # (O, 2)
+    shut = np.array(around.closed, dtype=bool)
+    for m, (member, member_shut) in enumerate(zip(members, member_closed)):
+        if not member_shut or not len(member):
+            continue
+        m_lo, m_hi = member.min(axis=0), member.max(axis=0)
+        within = (np.all(m_lo >= lo, axis=1) & np.all(m_hi <= hi, axis=1)) | \
+            (np.all(lo >= m_lo, axis=1) & np.all(hi <= m_hi, axis=1))
+        for o in np.flatnonzero(within & shut).tolist():
+            out[m, o] = _relation(member[None], around.frames[o][-1][None])[0]
+    return out
 
 
 def _earliest(point: Array, members: list[Array], member_closed: list[bool], around: _Around,

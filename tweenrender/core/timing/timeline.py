@@ -29,7 +29,7 @@ from numpy.typing import NDArray
 
 from ...errors import GeometryError
 from ...model import Contour, Key, Matching, Paint, Points, Scene, Shape
-from ..contours import anchor, keep_nesting, pair_contours, roles
+from ..contours import anchors, keep_nesting, pair_contours, roles
 from ..tangles import contact_times
 from ..correspondence.correspond import Correspondence, correspond, correspond_open
 from ..balance import spread
@@ -840,6 +840,8 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
     if join and unmatched != "fade" and not links and not _stroked(before) and not _stroked(after):
         # a piece or hole without room to grow joins a neighbour by a slit and morphs with it (§5.17)
         a, b, partners = _joined(a, b, partners, before.fill_rule or fill_rule, after.fill_rule or fill_rule, join)
+    anchored = {} if unmatched == "fade" else \
+        _anchor_points(a, b, partners, before.fill_rule or fill_rule, after.fill_rule or fill_rule)
     pairs = []
     for i, j in partners:
         if i is not None and j is not None:
@@ -849,17 +851,29 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
             pairs.append(pair)
             continue
         # a contour without a partner: it fades, or shrinks to (i) or grows from (j) a point of the other key
-        alone, others = (a[i], b) if i is not None else (b[j], a)  # type: ignore[index]
+        alone = a[i] if i is not None else b[j]  # type: ignore[index]
         n = len(alone.points)
         if unmatched == "fade":
             pairs.append(Pair(alone.points, alone.points, alone.closed, (n, n), None, (i, j), fades=True))
             continue
-        rule = (after if i is not None else before).fill_rule or fill_rule  # the partner key's own
-        point = anchor(alone.points, [c.points for c in others], [c.closed for c in others], rule, alone.closed)
-        collapsed = np.broadcast_to(point, alone.points.shape)
+        collapsed = np.broadcast_to(anchored[i, j], alone.points.shape)
         k0, k1 = (alone.points, collapsed) if i is not None else (collapsed, alone.points)
         pairs.append(Pair(_frozen(k0), _frozen(k1), alone.closed, (n, n), None, (i, j)))
     return tuple(pairs)
+
+
+def _anchor_points(a: Sequence[Contour], b: Sequence[Contour], partners: Sequence[tuple[int | None, int | None]],
+                   rule_a: str, rule_b: str) -> dict[tuple[int | None, int | None], Array]:
+    """Where each contour without a partner shrinks to (in key b) or grows from (in key a), by its pair:
+    ``(2,)`` each (:func:`.contours.anchors`, each key's own fill rule)."""
+    out: dict[tuple[int | None, int | None], Array] = {}
+    for lonely, others, rule in (([p for p in partners if p[1] is None], b, rule_b),
+                                 ([p for p in partners if p[0] is None], a, rule_a)):
+        alone = [a[i] if i is not None else b[j] for i, j in lonely]  # type: ignore[index]
+        found = anchors([c.points for c in alone], [c.closed for c in alone], [c.points for c in others],
+                        [c.closed for c in others], rule)
+        out.update(zip(lonely, found))
+    return out
 
 
 def _stroked(key: Key) -> bool:

@@ -20,7 +20,7 @@ def unslit(points: Array) -> list[Array]:
     """Closed contour ``points (N, 2)`` split at every edge it walks there and back (exactly, the
     same two vertices), into the loops it joins: a list of ``(N_k, 2)`` arrays; ``[points]`` unchanged
     where it has none."""
-    if len(points) < 4:
+    if len(points) < 8:  # two loops of three joined by a slit walked both ways take eight
         return [points]
     keep = np.any(points != np.roll(points, 1, axis=0), axis=1)  # repeated vertices once
     distinct = points[keep] if keep.any() else points[:1]

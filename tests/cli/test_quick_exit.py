@@ -49,7 +49,8 @@ def test_without_numba_or_with_a_thread_to_wait_for_python_exits_as_usual() -> N
     assert plain.returncode == 0 and json.loads(plain.stdout)
     assert {"atexit", "teardown"} <= set(plain.stderr.splitlines())
     waiting = _run("import numba", ["check", str(ROOT / "scenes" / "square.toml")],
-                   thread="threading.Thread(target=lambda: (__import__('time').sleep(0.5), "
+                   # the thread must still run when the command is done: long enough for a machine under load
+                   thread="threading.Thread(target=lambda: (__import__('time').sleep(8), "
                           "os.write(2, b'thread done\\n'))).start()")
     said = waiting.stderr.splitlines()
     assert waiting.returncode == 0 and {"thread done", "atexit", "teardown"} <= set(said)

@@ -612,7 +612,8 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
         links = tuple(segment_links(first.hints, last.hints))
         pairs = _pairs(first, last, shape.fill_rule, matching, rule, balance, links, (shape.cap, shape.join))
         crowded = None
-        if method is not None and not joints and not easing_of(first).overshoots:  # a slit would turn inside out
+        if method is not None and not joints and _joinable(first, last, rule, links) \
+                and not easing_of(first).overshoots:  # a slit would turn inside out
             crowded = _crowded(pairs, first, last, method, shape.stagger)
         if crowded:
             # joined where that tangles no more than growing late and the area changes no less evenly:
@@ -837,7 +838,7 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
             partners, a, b = closing, shut_a, shut_b
     partners = keep_nesting(partners, [c.points for c in a], [c.closed for c in a], [c.points for c in b],
                             [c.closed for c in b], forced)
-    if join and unmatched != "fade" and not links and not _stroked(before) and not _stroked(after):
+    if join and _joinable(before, after, unmatched, links):
         # a piece or hole without room to grow joins a neighbour by a slit and morphs with it (§5.17)
         a, b, partners = _joined(a, b, partners, before.fill_rule or fill_rule, after.fill_rule or fill_rule, join)
     anchored = {} if unmatched == "fade" else \
@@ -874,6 +875,12 @@ def _anchor_points(a: Sequence[Contour], b: Sequence[Contour], partners: Sequenc
                         [c.closed for c in others], rule)
         out.update(zip(lonely, found))
     return out
+
+
+def _joinable(before: Key, after: Key, unmatched: str, links: tuple[Link, ...]) -> bool:
+    """Whether contours without a partner may be joined to a neighbour between these keys (:mod:`.bridges`):
+    they grow (not fade), no shape hint numbers the vertices, and neither key is stroked (a slit would show)."""
+    return unmatched != "fade" and not links and not _stroked(before) and not _stroked(after)
 
 
 def _stroked(key: Key) -> bool:

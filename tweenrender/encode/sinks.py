@@ -98,8 +98,32 @@ def ffmpeg_exe() -> str:
                 _why_ffmpeg_cannot_start()
                 # it starts now: the search failed while file descriptors or memory were short for a moment
                 # (another thread held them), so search again, once
-                _FOUND.append(imageio_ffmpeg.get_ffmpeg_exe())
+                try:
+                    _FOUND.append(imageio_ffmpeg.get_ffmpeg_exe())
+                except RuntimeError:
+                    _short_of_descriptors()
+                    raise
         return _FOUND[0]
+
+
+def _short_of_descriptors() -> None:
+    """Raise ``OSError(EMFILE)`` where this process's limit of open files (``ulimit -n``) leaves no room to
+    start a program (its standard streams and the pipe that reports its start): imageio-ffmpeg calls an
+    ffmpeg it could not start that way "not found"."""
+    import errno
+    import resource
+
+    limit = resource.getrlimit(resource.RLIMIT_NOFILE)[0]
+    if limit == resource.RLIM_INFINITY:
+        return
+    try:
+        used = len(os.listdir("/proc/self/fd")) - 1  # the listing holds one itself
+    except OSError as error:
+        if error.errno in (errno.EMFILE, errno.ENFILE):
+            raise
+        return
+    if used + 4 > limit:
+        raise OSError(errno.EMFILE, f"too many open files to start ffmpeg ({used} open, at most {limit})")
 
 
 def _why_ffmpeg_cannot_start() -> None:

@@ -451,3 +451,18 @@ def _wait_for(browser: object, session: str, condition: str, seconds: float = 20
             return
         time.sleep(0.05)
     raise TimeoutError(f"the page never met {condition}")
+
+
+def module_browser() -> Iterator[PlayerBrowser | None]:
+    """A test module's fixture body: one headless Chromium for every picture its browser players take, closed
+    after the module (None where there is no chromium)."""
+    from tests.browser import chromium
+
+    if chromium() is None:
+        yield None
+        return
+    kept = PlayerBrowser()
+    try:
+        yield kept
+    finally:
+        kept.close()

@@ -24,7 +24,7 @@ import pytest
 
 import tweenrender as tr
 from tests.helpers import DATA
-from tests.vector_players import Clip, PlayerBrowser
+from tests.vector_players import Clip, PlayerBrowser, module_browser
 
 EMOJI = [("fluent-emoji/red-circle.svg", "fluent-emoji/egg.svg"),
          ("fluent-emoji/chestnut.svg", "fluent-emoji/drop-of-blood.svg"),
@@ -108,16 +108,7 @@ def clip(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactor
 @pytest.fixture(scope="module")
 def browser() -> Iterator[PlayerBrowser | None]:
     """One headless Chromium for every animated SVG of the module (None: no chromium here)."""
-    from tests.browser import chromium
-
-    if chromium() is None:
-        yield None
-        return
-    kept = PlayerBrowser()
-    try:
-        yield kept
-    finally:
-        kept.close()
+    yield from module_browser()
 
 
 @pytest.fixture

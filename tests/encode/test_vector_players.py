@@ -28,6 +28,7 @@ from tests.helpers import DATA, SCENES, write_scene
 from tests.vector_players import (
     Clip,
     PlayerBrowser,
+    module_browser,
     lottie_web_missing,
     skottie_missing,
 )
@@ -145,16 +146,7 @@ def clip(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactor
 @pytest.fixture(scope="module")
 def browser() -> Iterator[PlayerBrowser | None]:
     """One headless Chromium for every picture of the module's browser players (None: no chromium here)."""
-    from tests.browser import chromium
-
-    if chromium() is None:
-        yield None
-        return
-    kept = PlayerBrowser()
-    try:
-        yield kept
-    finally:
-        kept.close()
+    yield from module_browser()
 
 
 @pytest.fixture(autouse=True)

@@ -131,6 +131,28 @@ def test_dragging_a_handle_of_the_timing_graph_writes_the_ease(arrow: Path) -> N
 
 
 @needs_chromium
+def test_the_curve_picker_names_the_scenes_curves_when_the_first_state_had_none(arrow: Path) -> None:
+    """The first state the page sees may come before the take's keys are known (no shapes, no easings): the
+    picker must still offer the named curves once they arrive (it once kept only "hold", and picking
+    "ease-out" then sent nothing)."""
+    preview = start_preview(str(arrow), cwd=arrow.parent)
+    try:
+        with live_page(preview.url) as page:
+            _ready(preview, page)
+            names = page.evaluate("""(() => {
+                const known = state;
+                document.getElementById('curve').replaceChildren();
+                apply({...known, shapes: [], easings: {}, to_page: null});
+                apply(known);
+                return Array.from(document.getElementById('curve').options).map(o => o.value);
+            })()""")
+            assert {"ease-in", "ease-out", "ease-in-out", "hold"} <= set(names), names
+            assert page.exceptions() == []
+    finally:
+        stop(preview)
+
+
+@needs_chromium
 def test_a_letter_in_the_scene_shows_as_text_never_as_markup(tmp_path: Path) -> None:
     """The page shows the loader's line (which quotes the file) as text: markup in a scene runs nothing."""
     scene = tmp_path / "x.toml"

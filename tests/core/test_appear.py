@@ -348,3 +348,28 @@ def test_a_filled_elements_hole_without_room_to_grow_opens_from_its_outline(tmp_
     steps = np.abs(np.diff(areas))
     assert steps.max() <= 3.0 * np.median(steps)
     assert areas[-1] == pytest.approx(16 * 10 - 16 - area(np.array(ELL)))
+
+
+def test_a_piece_an_outline_sweeps_over_at_once_is_joined_to_it_not_crossed(tmp_path: Path) -> None:
+    """A piece (key 0 only) that the growing outline reaches in the first tenth of the segment has no room to
+    shrink at any start the search tries; it was left at its anchor over the whole segment and the outline's
+    edge crossed it. Joined to the outline by a slit, it is carried with it: checked with shapely, no
+    in-between's contours meet, and the drawn area (shoelace) changes evenly."""
+    import shapely
+
+    outline0 = [[0.0, 0.0], [1.0, 0.0], [1.0, 4.0], [0.0, 4.0]]
+    piece = [[1.2, 1.5], [2.0, 1.5], [2.0, 2.5], [1.2, 2.5]]
+    outline1 = [[0.0, 0.0], [10.0, 0.0], [10.0, 4.0], [0.0, 4.0]]
+    scene = shape_scene(tmp_path, [outline0, piece], [outline1])
+    areas = []
+    for t in np.linspace(0.0, 1.0, 25):
+        (at,) = drawn(scene, float(t))
+        rings = [np.asarray(c) for c in at.contours if len(c) >= 3 and area(np.asarray(c)) > 1e-12]
+        if 0.0 < t < 1.0:
+            for i, j in itertools.combinations(range(len(rings)), 2):
+                a, b = shapely.LinearRing(rings[i]), shapely.LinearRing(rings[j])
+                assert not a.intersects(b), (t, i, j)
+        areas.append(sum(area(r) for r in rings))
+    steps = np.abs(np.diff(areas))
+    assert steps.max() <= 3.0 * np.median(steps)
+    assert areas[0] == pytest.approx(4.8) and areas[-1] == pytest.approx(40.0)

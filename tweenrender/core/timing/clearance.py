@@ -46,8 +46,8 @@ grows over all of it."""
 _PROBE_CELLS = 24  # grid cells across a contour's box when looking for its deepest point
 _FAR_POINTS = 512  # the other contours' points a farthest point is measured from, at most (evenly picked)
 BUDGET = 200_000
-"""The work a placement may do in all, in vertices checked (a group and every contour it is checked
-against, at one grid time, for each check); the groups left when it is spent come from their anchors
+"""The work a placement may do in all, in vertices checked (a group and the contours whose boxes meet
+its box, at one grid time, for each check); the groups left when it is spent come from their anchors
 over the whole segment, so a drawing of many pieces costs a bounded time."""
 
 
@@ -60,6 +60,7 @@ class Growth:
     grows: bool
     start: float = 0.0
     stop: float = 1.0
+    stuck: bool = False  # searched, and no start up to LATEST is clear: it meets another contour as it comes
 
 
 def growth_scale(growth: Growth, t: Array) -> Array:
@@ -235,10 +236,12 @@ def _place_in(groups: list[list[int]], shapes: Sequence[Array], closed: Sequence
                 best = (start, point)
             if best is not None and best[0] == 0.0:
                 break
+        searched = budget[0] > 0  # else the search was cut short: whether it would meet one is not known
         if best is None:
             stuck.add(root)
         start, point = best if best is not None else (0.0, candidates[0])
-        growth = Growth(point, forward, start, 1.0) if forward else Growth(point, False, 0.0, 1.0 - start)
+        met = best is None and searched
+        growth = Growth(point, forward, start, 1.0, met) if forward else Growth(point, False, 0.0, 1.0 - start, met)
         scale = growth_scale(growth, GRID)[:, None, None]
         for m, member in zip(group, members):
             placed[m] = growth
@@ -273,7 +276,8 @@ def _earliest(point: Array, members: list[Array], member_closed: list[bool], aro
     stay clear of the contours ``around``, or None (also once ``budget[0]`` checks are spent, counting
     down). The grid time at which a start failed is tried first for the next one (where one start
     meets a contour, the next mostly does too)."""
-    cost = sum(len(m) for m in members) + sum(f.shape[1] for f in around.frames)
+    own = sum(len(m) for m in members)
+    sizes = np.array([f.shape[1] for f in around.frames], dtype=np.int64)
     lo = np.array([m.min(axis=0) for m in members])  # (M, 2): a scaled contour's box is its box scaled
     hi = np.array([m.max(axis=0) for m in members])
     failed: list[int] = []
@@ -283,11 +287,11 @@ def _earliest(point: Array, members: list[Array], member_closed: list[bool], aro
         for k in order:
             if budget[0] <= 0:
                 return None
-            budget[0] -= cost
             s = np.sqrt((GRID[k] - start) / (1.0 - start))
             now_lo, now_hi = point + s * (lo - point), point + s * (hi - point)
             meets = (np.all(now_lo[:, None] <= around.hi[k][None], axis=2)
                      & np.all(around.lo[k][None] <= now_hi[:, None], axis=2))
+            budget[0] -= own + int(sizes[meets.any(axis=0)].sum())  # the contours whose boxes meet are tested
             if not _clear([point + s * (m - point) for m in members], member_closed, around, k, meets, final):
                 failed = [k]
                 break

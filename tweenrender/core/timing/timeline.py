@@ -731,12 +731,12 @@ def _join_choices(crowded: frozenset[tuple[int, int]], first: Key, last: Key) ->
 def _crowded(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float
              ) -> frozenset[tuple[int, int]]:
     """The contours without a partner that :func:`growths_of` finds no room to grow (shrink) over the
-    whole segment from ``first`` to ``last`` under ``method``, as (key 0 or 1, index)."""
+    whole segment from ``first`` to ``last`` under ``method`` (or no room at all), as (key 0 or 1, index)."""
     if all(p.moving or p.fades for p in pairs):
         return frozenset()
     out = set()
     for pair, growth in zip(pairs, growths_of(_probe(pairs, first, last, stagger), method)):
-        if growth is not None and (growth.start > 0.0 or growth.stop < 1.0):
+        if growth is not None and (growth.start > 0.0 or growth.stop < 1.0 or growth.stuck):
             out.add((1, pair.source[1]) if growth.grows else (0, pair.source[0]))
     return frozenset(out)  # type: ignore[arg-type]
 

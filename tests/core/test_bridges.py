@@ -87,3 +87,22 @@ def test_a_slit_is_taken_out_before_drawing() -> None:
     np.testing.assert_array_equal(windings(loops), windings([outer, hole]))
     plain = square(0, 0, 3)
     assert unslit(plain)[0] is plain
+
+
+def test_a_joined_contour_is_not_triangulated_to_learn_it_has_no_injective_paths() -> None:
+    """A slit walks its ends twice, so a joined contour's key has coincident vertices and no compatible
+    triangulation; saying so needs no Delaunay triangulation (whose library import alone cost a two-icon
+    morph most of a second). Counted in a fresh interpreter: scipy.spatial is never imported."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "import numpy as np\n"
+        "from tweenrender.core.methods.injective import injective_fallback\n"
+        "slit = np.array([[0, 0], [4, 0], [4, 2], [6, 2], [6, 3], [7, 3], [6, 2], [4, 2], [4, 4], [0, 4]], float)\n"
+        "print(injective_fallback([slit], [slit * 1.5], [True]))\n"
+        "print('scipy.spatial' in sys.modules)\n"
+    )
+    found = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split("\n")
+    assert found[:2] == ["the key has coincident vertices", "False"], found

@@ -329,6 +329,8 @@ def compatible_triangulation(k0: Array, k1: Array, cuts: Sequence[int], closed: 
     for start, end, shut in zip(cuts, cuts[1:], closed):
         if shut and np.sign(_winding(k0[start:end])) != np.sign(_winding(k1[start:end])):
             raise CompatibleError("a contour winds the other way round in the second key")
+    if len(np.unique(k0, axis=0)) < n or len(np.unique(k1, axis=0)) < n:  # as the triangulation would say
+        raise CompatibleError("the key has coincident vertices")  # (a joined contour's slit), at no cost
     if radius is None:
         radius = _FRAME_SCALE * max(float(np.abs(k0).max(initial=0.0)), float(np.abs(k1).max(initial=0.0)),
                                     1e-300) * math.sqrt(2.0)

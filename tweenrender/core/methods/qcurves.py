@@ -322,16 +322,25 @@ def _quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array]
              ) -> tuple[int, float]:
     """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included) and the largest
     stray, the reach 12 % of the larger side of both keys together (a segment does not know the view)."""
+    return _tangled(frames, k0s, k1s, closed), _stray(frames, k0s, k1s, closed)
+
+
+def _tangled(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> int:
+    """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included)."""
     tangled, stroked = contact_times(frames, closed, QUALITY_T, k0s, k1s)
-    tangled = sorted(set(tangled) | set(stroked))
+    return len(set(tangled) | set(stroked))
+
+
+def _stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> float:
+    """The largest stray of ``frames`` at :data:`QUALITY_T`, the reach 12 % of the larger side of both keys."""
     filled = [len(k) >= 3 and shut for k, shut in zip(k0s, closed)]
     points = np.concatenate([*k0s, *k1s])
     reach = STRAY_REACH * float(np.ptp(points, axis=0).max(initial=0.0))
     if not any(filled) or not reach > 0:
-        return len(tangled), 0.0
+        return 0.0
     areas = [([f[k] for f, keep in zip(frames, filled) if keep], "evenodd") for k in range(len(QUALITY_T))]
     keys = [([k for k, keep in zip(key, filled) if keep], "evenodd") for key in (k0s, k1s)]
-    return len(tangled), float(stray_shares(areas, keys[0], keys[1], reach).max(initial=0.0))
+    return float(stray_shares(areas, keys[0], keys[1], reach).max(initial=0.0))
 
 
 def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> AutoChoice:
@@ -356,8 +365,19 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     straight_choice = first if first.method == "linear" else AutoChoice("linear", first.why, ("linear",))
     candidates = ([first] if first.method == "nonlinear" else []) + [straight_choice]
     candidates.append(AutoChoice("injective", first.why, ("injective",)))
-    measured = {c.method: _quality(_candidate_paths(c.method, k0s, k1s, closed, QUALITY_T), k0s, k1s, closed)
-                for c in candidates if c.method != "injective"}
+    # the first candidate passes on no tangle alone (straight paths' stray is the limit itself, a rigid
+    # turn's arc no stray): where it does not tangle, no stray is measured
+    measured: dict[str, tuple[int, float]] = {}
+    if first.method in ("linear", "nonlinear"):
+        frames = _candidate_paths(first.method, k0s, k1s, closed, QUALITY_T)
+        crossed = _tangled(frames, k0s, k1s, closed)
+        if crossed == 0:
+            _remember(key, first)
+            return first
+        measured[first.method] = (crossed, _stray(frames, k0s, k1s, closed))
+    for c in candidates:
+        if c.method not in measured and c.method != "injective":
+            measured[c.method] = _quality(_candidate_paths(c.method, k0s, k1s, closed, QUALITY_T), k0s, k1s, closed)
     # straight paths sweep what the motion itself sweeps: a method strays where it goes past that
     limit = STRAY_LIMIT + measured["linear"][1]
     scores: list[tuple[int, float, int, AutoChoice]] = []
@@ -376,10 +396,14 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
         kept = [s for s in scores if s[1] <= limit + _DETOUR or s[3].method == "nonlinear"]
         best = min(kept, key=lambda s: (s[0], s[2]))[3]
         chosen = replace(best, why=f"{first.why}; {_measures(scores)}; {best.method} the least tangled without sweeping far")
+    _remember(key, chosen)
+    return chosen
+
+
+def _remember(key: bytes, chosen: AutoChoice) -> None:
     _measured_cache[key] = chosen
     while len(_measured_cache) > _CACHED:
         _measured_cache.popitem(last=False)
-    return chosen
 
 
 def _measures(scores: Sequence[tuple[int, float, int, AutoChoice]]) -> str:

@@ -198,6 +198,9 @@ class Key:
     arcs: tuple[tuple[str, tuple[float, float]], ...] = ()
     breakdown: float | None = None
     masks: tuple[Mask, ...] = ()  # SVG masks, every one multiplied into what the key draws
+    # the SVG groups with an opacity it is drawn in, outermost first: (group number, opacity); the elements
+    # of one group are composited together, then drawn at its opacity (as SVG's group opacity)
+    groups: tuple[tuple[int, float], ...] = ()
 
     @property
     def points(self) -> Points:

@@ -12,6 +12,7 @@ from numpy.typing import NDArray
 from ..core.dashes import starting_at, without_repeats
 from ..core.timing.timeline import ShapeAt
 from ..model import Color, Scene, Shape
+from .groups import GroupLayers
 from .round_stroke import worth_compiling
 from .surface import Raster, StrokeStyle, contours_path, dashed
 from ..core.view import Box, Viewport
@@ -85,8 +86,13 @@ class Composer:
     def draw_shapes(self, shapes: Sequence[ShapeAt], alpha: float = 1.0, order: Sequence[int] | None = None) -> None:
         """Every shape of the scene as it is at one time, in paint order (``order``: shape indices,
         first painted first; default the scene's)."""
+        layers = GroupLayers(self.raster.canvas)
         for index in order if order is not None else range(len(shapes)):
-            draw_shape(self.raster, self.viewport, self.scene.shapes[index], shapes[index], alpha)
+            at = shapes[index]
+            if at.visible:  # the groups with an opacity it is drawn in, each composited as one
+                layers.enter(at.key.groups if at.key is not None else ())
+            draw_shape(self.raster, self.viewport, self.scene.shapes[index], at, alpha)
+        layers.enter(())
 
     def draw_label(self, label: str, time: float) -> None:
         size = label_size(self.height)

@@ -380,7 +380,8 @@ def _shape(chain: list[tuple[int, int]], name: str, drawings: Sequence[Drawing],
         # a stroke becoming a fill: its band of ink is what becomes the filled shape
         elements = [outlined(e) if stroke_only(e.paint) else e for e in elements]
     out = [Key(keys[k].time, e.contours, keys[k].ease, e.paint, fill_rule=e.fill_rule, cap=e.cap, join=e.join,
-               miter_limit=e.miter_limit, layer=index, clips=e.clips, masks=e.masks, easing=keys[k].easing,
+               miter_limit=e.miter_limit, layer=index, clips=e.clips, masks=e.masks, groups=e.groups,
+               easing=keys[k].easing,
                hints=hints[k].get(index, ()), delay=delays.get(k, 0.0), turn=keys[k].turn, turns=keys[k].turns,
                arcs=tuple((h.letter, arcs[k][h.letter]) for h in hints[k].get(index, ())
                           if arcs and h.letter in arcs[k]))
@@ -399,13 +400,13 @@ def _hidden(element: Element, at: DrawingKey, unmatched: str) -> Key:
     if unmatched == "fade":
         return Key(at.time, element.contours, at.ease, replace(element.paint, opacity=0.0), hidden=True,
                    fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
-                   clips=element.clips, masks=element.masks, easing=at.easing)
+                   clips=element.clips, masks=element.masks, groups=element.groups, easing=at.easing)
     centre = centre_of_area([c.points for c in element.contours], [c.closed for c in element.contours])
     contours = tuple(Contour(frozen_points(np.broadcast_to(centre, c.points.shape)), c.closed)
                      for c in element.contours)
     return Key(at.time, contours, at.ease, replace(element.paint, stroke_width=0.0), hidden=True,
                fill_rule=element.fill_rule, cap=element.cap, join=element.join, miter_limit=element.miter_limit,
-               clips=element.clips, masks=element.masks, easing=at.easing)
+               clips=element.clips, masks=element.masks, groups=element.groups, easing=at.easing)
 
 
 def _world(drawing: Drawing, points: dict[str, tuple[float, float]]) -> dict[str, tuple[float, float]]:

@@ -14,8 +14,8 @@ A whole drawing (:func:`read_drawing`) gives every visible shape element —
 paint as an SVG renderer resolves it (:mod:`.svg_document`). Invisible
 elements (no fill and no stroke, ``display:none``, ``visibility:hidden``, zero
 opacity) are left out. Linear and radial gradient fills are kept
-(:mod:`.svg_gradients`), clip paths as clip regions (``Element.clips``), and masks (``Element.masks``,
-:mod:`.svg_mask`). SVG's
+(:mod:`.svg_gradients`), clip paths as clip regions (``Element.clips``), masks (``Element.masks``,
+:mod:`.svg_mask`), and the groups with an opacity each element is in (``Element.groups``, :mod:`.svg_groups`). SVG's
 error rules apply (:mod:`.svg_pathdata`): bad data is drawn up to its first error, an
 element of negative size or a ``<use>`` loop is left out. Dashes are read into the stroke's paint
 (:mod:`.svg_dashes`); markers become elements of their own after their element (:mod:`.svg_markers`). Not
@@ -34,12 +34,14 @@ from numpy.typing import NDArray
 
 from ..errors import SceneError, did_you_mean
 from ..model import Color, Contour, Dash, Mask, MaskShape, Paint, frozen_points
+from .svg_basic_shapes import PREFIX as BASIC_SHAPE
 from .svg_document import SHAPES, Document, Drawn, Node, compose, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
 from .svg_color import parse_color
 from .svg_dashes import read_dash
 from .svg_marker_style import MARKER_PROPERTIES
 from .svg_gradients import stop_color
+from .svg_groups import fold_lone_groups
 from .svg_paint_order import in_paint_order
 from .svg_pathdata import path_prefix, points_prefix, smooth_controls
 from .svg_viewport import aspect_matrix
@@ -105,6 +107,7 @@ class Element:
     miter_limit: float
     clips: tuple[tuple[Contour, ...], ...] = ()  # clip regions (world units, nonzero), all of them intersected
     masks: tuple[Mask, ...] = ()  # masks (world units), all of them multiplied (:mod:`.svg_mask`)
+    groups: tuple[tuple[int, float], ...] = ()  # the groups with an opacity it is in (:mod:`.svg_groups`)
 
 
 @dataclass(frozen=True, slots=True)
@@ -247,7 +250,7 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
     try:
         document = parse(read(Path(svg_path)))
         box, placed = _root_viewport(document)
-        drawn = [d for d in walk(document) if d.visible]
+        drawn = [d for d in walk(document, layered=True) if d.visible]
         if box is None:  # no viewBox and no size: the elements' own extent
             box = _extent(drawn)
         x, y, w, h = box
@@ -275,7 +278,7 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
                 elements += in_paint_order(element, d.style.get("paint-order", ""))
             if any(d.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
                 elements += _marker_elements(d, to_world, scale, tol, budget)
-        return Drawing(Path(svg_path), world_box, tuple(elements), to_world)
+        return Drawing(Path(svg_path), world_box, fold_lone_groups(elements), to_world)
     except Refusal as refusal:
         raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
 
@@ -317,11 +320,11 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     if not contours:
         return None
     paint = _with_gradient(paint, d, to_world, contours)
-    clips = tuple(region for ident, space in d.clips for region in _clip_regions(ident, space, d, to_world, tol,
-                                                                                   budget))
+    clips = tuple(region for ref in d.clips for region in _clip_regions(ref[0], ref[1], d, to_world, tol, budget,
+                                                                          owner=getattr(ref, "owner", None)))
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
                    tuple(Contour(frozen_points(p), closed) for p, closed in contours), paint, fill_rule, cap, join,
-                   miter, tuple(c for c in clips if c is not None), masks)
+                   miter, tuple(c for c in clips if c is not None), masks, d.groups)
 
 
 def _marker_elements(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, budget: Budget,
@@ -345,7 +348,7 @@ def _marker_elements(d: Drawn, to_world: NDArray[np.float64], scale: float, tol:
                 continue
             element = _element(inner, to_world, scale, tol, budget)
             if element is not None:
-                out.append(replace(element, id=f"{base}:marker-{placed.kind}{placed.index}.{k}"))
+                out.append(replace(element, id=f"{base}:marker-{placed.kind}{placed.index}.{k}", groups=d.groups))
             if any(inner.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
                 out += _marker_elements(inner, to_world, scale, tol, budget, chain + (id(placed.marker),))
     return out
@@ -369,29 +372,78 @@ def _masks(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, bu
 
 
 def _clip_regions(ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,
-                  budget: Budget, seen: tuple[str, ...] = ()) -> list[tuple[Contour, ...]]:
+                  budget: Budget, seen: tuple[str, ...] = (), owner: Node | None = None) -> list[tuple[Contour, ...]]:
     """The regions of ``<clipPath id=ident>`` in world units (each its shapes' closed contours, nonzero), to be
     intersected: its own, and those of the clip path on it (SVG 1.1 §14.3.5), applied in the user ``space``
     of the element that names it; none when ``ident`` is no clip path. A clip-path that leads back into
     the chain is ignored."""
     from .svg_document import own_style
 
+    if ident.startswith(BASIC_SHAPE):
+        return _basic_shape_region(ident.removeprefix(BASIC_SHAPE), space, d, to_world, tol, budget, owner)
     nodes = d.document.ids.get(ident)
     if not nodes or nodes[0].tag != "clipPath":
         return []
     if ident in seen:
         return []  # a clip path's clip-path in a loop is ignored
-    regions = [_clip_region(nodes[0], ident, space, d, to_world, tol, budget)]
+    regions = [_clip_region(nodes[0], ident, space, d, to_world, tol, budget, seen + (ident,), owner)]
     reference = own_style(nodes[0], d.document).get("clip-path", "none").strip()
     if reference.startswith("url("):
         target = reference[4:].partition(")")[0].strip().strip("'\"")
-        regions += _clip_regions(target.removeprefix("#"), space, d, to_world, tol, budget, seen + (ident,))
+        regions += _clip_regions(target.removeprefix("#"), space, d, to_world, tol, budget, seen + (ident,), owner)
     return regions
 
 
+def _basic_shape_region(value: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64],
+                        tol: float, budget: Budget, owner: Node | None = None) -> list[tuple[Contour, ...]]:
+    """The region of ``clip-path: circle(…)`` named by ``owner`` (``d`` or a group around it) in world units
+    (:mod:`.svg_basic_shapes`); none when the value is not one that is read."""
+    from .svg_basic_shapes import circle_outline
+    from .svg_viewport import root_size
+
+    x0, y0, w, h = _owner_box(owner, space, d, to_world, tol, budget)
+    if d.viewport is not None:
+        view = (0.0, 0.0, *d.viewport)
+    else:
+        view = view_box(d.document) or (0.0, 0.0, *root_size(d.document.root))
+    stroked = d.style.get("stroke", "none").strip() not in ("none", "")
+    scale = math.sqrt(abs(_determinant(to_world @ space))) or 1.0
+    outline = circle_outline(value, (x0, y0, w, h), _stroke_width(d.style.get("stroke-width", "1"), d)
+                             if stroked and owner in (None, d.node) else 0.0, view, tol / scale)
+    if outline is None:
+        return []
+    placed = (to_world @ space @ np.column_stack([outline, np.ones(len(outline))]).T)[:2].T
+    return [(Contour(frozen_points(placed), True),)] if len(placed) >= 3 else [()]
+
+
+def _owner_box(owner: Node | None, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64], tol: float,
+               budget: Budget) -> tuple[float, float, float, float]:
+    """The bounding box ``(x, y, width, height)`` of what ``owner`` draws (``d`` itself when None) in its user
+    ``space`` (strokes left out); ``(0, 0, 0, 0)`` when it draws nothing."""
+    if owner is None or owner is d.node:
+        every = np.concatenate([p for p, _ in _contours(d, np.eye(3), tol, budget, True)] or [np.zeros((1, 2))])
+        (x0, y0), (x1, y1) = every.min(axis=0), every.max(axis=0)
+        return (float(x0), float(y0), float(x1 - x0), float(y1 - y0))
+    from .svg_mask import Reading, _box
+
+    def outline(drawn: Drawn, placed: NDArray[np.float64]) -> list[NDArray[np.float64]]:
+        return [p for p, _ in _contours(drawn, placed, tol, Budget(MAX_VERTICES, tol), True)]
+
+    key = ("clip box", id(owner), space.tobytes())
+    if key not in budget.memo:
+        box = view_box(d.document) or (0.0, 0.0, 100.0, 100.0)
+        budget.memo[key] = _box(owner, space, d.document, Reading(to_world, (box[2], box[3]), lambda *_: None,
+                                                                   outline), budget)
+    found = budget.memo[key]
+    return found if found is not None else (0.0, 0.0, 0.0, 0.0)  # type: ignore[return-value]
+
+
 def _clip_region(clip: Node, ident: str, space: NDArray[np.float64], d: Drawn, to_world: NDArray[np.float64],
-                 tol: float, budget: Budget) -> tuple[Contour, ...]:
-    """The region of one ``<clipPath>`` in world units (its shapes' closed contours, nonzero)."""
+                 tol: float, budget: Budget, seen: tuple[str, ...] = (), owner: Node | None = None
+                 ) -> tuple[Contour, ...]:
+    """The region of one ``<clipPath>`` in world units (its shapes' closed contours, nonzero), each child
+    cut by its own clip path (``seen``: the clip paths being read around it, ignored when met again)."""
+    from .svg_clip_children import intersection, valid_clip_child
     from .svg_clip_rule import inherited_clip_rule, union_by_rule
     from .svg_document import _Walk, own_style
     from .svg_transform_origin import about_origin, parse_origin
@@ -399,17 +451,15 @@ def _clip_region(clip: Node, ident: str, space: NDArray[np.float64], d: Drawn, t
 
     units = clip.attrs.get("clipPathUnits", "userSpaceOnUse").strip()
     if units == "objectBoundingBox":
-        if space is not d.ctm:
-            raise Refusal(f"expected clipPathUnits=\"userSpaceOnUse\" on a group's clip path, found "
-                          f"objectBoundingBox (clipPath {ident!r}, line {clip.line}): not drawn yet")
-        every = np.concatenate([p for p, _ in _contours(d, np.eye(3), tol, budget, True)] or [np.zeros((1, 2))])
-        (x0, y0), (x1, y1) = every.min(axis=0), every.max(axis=0)
-        space = space @ np.array([[x1 - x0, 0.0, x0], [0.0, y1 - y0, y0], [0.0, 0.0, 1.0]])
-    if "transform" in clip.attrs:
-        box = (1.0, 1.0) if units == "objectBoundingBox" else d.viewport or root_size(d.document.root)
+        x0, y0, w, h = _owner_box(owner, space, d, to_world, tol, budget)
+        on_box = np.array([[w, 0.0, x0], [0.0, h, y0], [0.0, 0.0, 1.0]])
+    if "transform" in clip.attrs:  # in the user space, around the bounding box's units (as browsers do)
+        box = d.viewport or root_size(d.document.root)
         step = about_origin(matrix(clip.attrs["transform"], clip.line), parse_origin(
             clip.attrs.get("transform-origin", ""), box, clip.font, clip.view))
         space = compose(space, step, clip, f"transform {clip.attrs['transform'].strip()[:80]!r}")
+    if units == "objectBoundingBox":
+        space = space @ on_box
     walker = _Walk(d.document, False)
 
     def own_rule(node: Node) -> str | None:  # the cascade only where a clip-rule may be written
@@ -419,10 +469,21 @@ def _clip_region(clip: Node, ident: str, space: NDArray[np.float64], d: Drawn, t
         return None
 
     rule = inherited_clip_rule(clip, d.document, own_rule)
-    children = [(shape.style.get("clip-rule", "nonzero").strip(), [p for p, _ in _contours(
-                 shape, to_world @ shape.ctm, tol, budget, True) if len(p) >= 3])
-                for child in clip.children for shape in walker.visit(child, {"clip-rule": rule}, space, 1.0, True)
-                if shape.visible]
+    children = []
+    for child in clip.children:
+        if not valid_clip_child(child, d.document.ids):
+            continue
+        for shape in walker.visit(child, {"clip-rule": rule}, space, 1.0, True):
+            if not shape.visible:
+                continue
+            shape_rule = shape.style.get("clip-rule", "nonzero").strip()
+            contours = [p for p, _ in _contours(shape, to_world @ shape.ctm, tol, budget, True) if len(p) >= 3]
+            if shape.clips:  # the child's own clip path
+                own = [[c.points for c in r] for ref in shape.clips if ref[0] not in seen
+                       for r in _clip_regions(ref[0], ref[1], shape, to_world, tol, budget, seen,
+                                              getattr(ref, "owner", None))]
+                contours, shape_rule = intersection(contours, shape_rule, own), "nonzero"
+            children.append((shape_rule, contours))
     return tuple(Contour(frozen_points(p), True) for p in union_by_rule(children))
 
 

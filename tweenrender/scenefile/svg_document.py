@@ -26,6 +26,7 @@ import numpy as np
 from numpy.typing import NDArray
 from svgelements import Matrix
 
+from .svg_basic_shapes import PREFIX as BASIC_SHAPE, is_basic_shape
 from .svg_conditions import conditions_hold, switch_choice
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_entities import UNSAFE, check_entities, safe_declaration
@@ -93,6 +94,19 @@ class Document:
     sheet: dict[int, tuple[Declarations, ...]] = field(default_factory=dict)
 
 
+class ClipRef(tuple):  # type: ignore[type-arg]
+    """A clip path on an element, ``(id of the <clipPath>, the user space it is in, 3x3)``, that knows
+    ``owner``: the element that names it (whose bounding box ``objectBoundingBox`` units are of)."""
+
+    owner: Node | None = None
+
+    @classmethod
+    def of(cls, ident: str, space: NDArray[np.float64], owner: Node) -> ClipRef:
+        ref = cls((ident, space))
+        ref.owner = owner
+        return ref
+
+
 Masking = tuple[str, NDArray[np.float64], "Node"]
 """A mask on an element: the ``<mask>``'s id, the element's user space (3x3), the element (whose box it may use)."""
 
@@ -113,6 +127,9 @@ class Drawn:
     viewport: tuple[float, float] | None = None
     # the masks on it and its ancestors: (id of the <mask>, the user space it is in, the element that names it)
     masks: tuple[Masking, ...] = ()
+    # with a layered walk: the groups with an opacity it is in, outermost first, (number, opacity), whose
+    # opacity is then left out of ``opacity`` (:mod:`.svg_groups`)
+    groups: tuple[tuple[int, float], ...] = ()
 
 
 def read(path: Path) -> bytes:
@@ -300,9 +317,12 @@ def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -
 class _Walk:
     """One walk of the tree: counts every element visited (``<use>`` copies included)."""
 
-    def __init__(self, document: Document, keep_hidden: bool) -> None:
+    def __init__(self, document: Document, keep_hidden: bool, layered: bool = False) -> None:
         self.document = document
         self.keep_hidden = keep_hidden
+        self.layered = layered  # a container's opacity makes a group (``Drawn.groups``), not a factor
+        self.groups: tuple[tuple[int, float], ...] = ()
+        self.group_count = 0
         self.visited = 0
         self.using: list[str] = []
         self.looping: dict[str, bool] = {}  # id → whether a <use> of it leads back to itself
@@ -321,17 +341,28 @@ class _Walk:
         own = own_style(node, self.document)
         if "marker" in own:  # the shorthand: of style sheets only
             own = marker_longhands(own, node, self.document.sheet.get(id(node), ()))
-        style = {k: parent[k] for k in _INHERITED if k in parent}
-        style.update((k, v) for k, v in own.items() if v != "inherit")
         if own.get("display", "").strip() == "none":
             if not self.keep_hidden:
                 return
             shown = False
-        try:
-            alpha = float(own.get("opacity", "1"))
-        except ValueError:
-            alpha = 1.0
-        opacity *= min(max(alpha, 0.0), 1.0)
+        alpha = opacity_value(own.get("opacity", "1"))
+        if self.layered and 0.0 < alpha < 1.0 and node.tag not in SHAPES:
+            self.group_count += 1
+            saved_groups, self.groups = self.groups, self.groups + ((self.group_count, alpha),)
+            try:
+                yield from self.visit_inside(node, own, parent, ctm, opacity, shown, clips, masks, instance)
+            finally:
+                self.groups = saved_groups
+            return
+        opacity *= alpha
+        yield from self.visit_inside(node, own, parent, ctm, opacity, shown, clips, masks, instance)
+
+    def visit_inside(self, node: Node, own: dict[str, str], parent: dict[str, str], ctm: NDArray[np.float64],
+                     opacity: float, shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...],
+                     masks: tuple[Masking, ...], instance: Node | None) -> Iterator[Drawn]:
+        """:meth:`visit` once the node's own style and opacity are read."""
+        style = {k: parent[k] for k in _INHERITED if k in parent}
+        style.update((k, v) for k, v in own.items() if v != "inherit")
         if node is not self.document.root and "transform" in own and node.tag != "symbol":  # SVG 1.1: none on symbols
             step = matrix(own["transform"], node.line)
             if "transform-origin" in own:
@@ -345,10 +376,13 @@ class _Walk:
         reference = own.get("clip-path", "none").strip()
         if reference.startswith("url(") and shown:
             target = reference[4:].partition(")")[0].strip().strip("'\"")
-            clips = clips + ((target[1:] if target.startswith("#") else target, ctm),)
+            clips = clips + (ClipRef.of(target[1:] if target.startswith("#") else target, ctm, node),)
+        elif is_basic_shape(reference) and shown:  # clip-path: circle(…) (:mod:`.svg_basic_shapes`)
+            clips = clips + (ClipRef.of(BASIC_SHAPE + reference, ctm, node),)
         if node.tag in SHAPES:
             visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
-            yield Drawn(node, style, ctm, opacity, visible, self.document, clips, viewport=self.viewport, masks=masks)
+            yield Drawn(node, style, ctm, opacity, visible, self.document, clips, viewport=self.viewport, masks=masks,
+                        groups=self.groups)
         elif node.tag == "use":
             yield from self.use(node, style, ctm, opacity, shown, clips, masks)
         elif node.tag in ("svg", "symbol") and node is not self.document.root:
@@ -435,9 +469,19 @@ class _Walk:
             self.using.pop()
 
 
-def walk(document: Document, keep_hidden: bool = False) -> Iterator[Drawn]:
+def opacity_value(text: str) -> float:
+    """An ``opacity``: a number or a percentage (CSS Color 4), clamped to [0, 1]; 1 when unreadable."""
+    text = text.strip()
+    try:
+        value = float(text[:-1]) / 100.0 if text.endswith("%") else float(text)
+    except ValueError:
+        return 1.0
+    return min(max(value, 0.0), 1.0) if math.isfinite(value) else 1.0
+
+
+def walk(document: Document, keep_hidden: bool = False, layered: bool = False) -> Iterator[Drawn]:
     """Every shape element of the drawing in paint order, with its style and transform.
 
     ``keep_hidden`` walks into ``display:none`` too (the elements come with ``visible`` False).
     """
-    return _Walk(document, keep_hidden).visit(document.root, {}, np.eye(3), 1.0, True)
+    return _Walk(document, keep_hidden, layered).visit(document.root, {}, np.eye(3), 1.0, True)

@@ -167,10 +167,14 @@ def _windings(shape: Shape, at: ShapeAt) -> tuple[bool, ...]:
 
 
 def _refuse_uncarried(shape: Shape, at: ShapeAt) -> None:
-    """A vector file cannot carry cross-fading contours nor masks: refuse, naming the element."""
+    """A vector file cannot carry cross-fading contours, masks nor group opacity: refuse, naming the element."""
     if at.fade is not None:
         raise OptionError(f"element {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which the "
                           "vector formats do not carry; render a video or PNG frames", "format")
+    if at.key is not None and at.key.groups:
+        raise OptionError(f"element {shape.name!r}: it is drawn in a group with an opacity (an SVG <g opacity>) "
+                          "composited as one, which the vector formats do not carry yet; render a video or PNG "
+                          "frames, or put the opacity on each element in the drawing", "format")
     if at.masks:
         raise OptionError(f"element {shape.name!r}: it is masked (an SVG <mask>), which the vector formats do not "
                           "carry; render a video or PNG frames, or use a clip-path in the drawing", "format")

@@ -67,7 +67,8 @@ class Contour:
 class Gradient:
     """A linear or radial gradient fill, as SVG defines it, in world units.
 
-    ``geometry`` is ``(x1, y1, x2, y2)`` (linear) or ``(cx, cy, r, fx, fy)`` (radial) in the gradient's
+    ``geometry`` is ``(x1, y1, x2, y2)`` (linear) or ``(cx, cy, r, fx, fy)`` (radial, with the focal radius
+    ``fr`` after them when it is not 0) in the gradient's
     own space; ``matrix`` ``(a, b, c, d, e, f)`` maps that space to the world (``x' = a·x + c·y + e``,
     ``y' = b·x + d·y + f``: the element's transforms, its bounding box for ``objectBoundingBox``
     units, and ``gradientTransform``). ``stops`` are ``(offset in [0, 1], straight RGBA)`` in order;
@@ -98,7 +99,9 @@ class Paint:
 
     ``stroke_width`` is in pixels, or in world units for shapes whose ``stroke_scales``
     (drawings: widths scale with the view, as in the SVG). ``opacity`` multiplies both.
-    ``gradient``, when set, fills instead of ``fill`` (which then holds its stops' mean colour).
+    ``gradient``, when set, fills instead of ``fill`` (which then holds its stops' mean colour);
+    ``stroke_gradient`` likewise strokes instead of ``stroke``; ``pattern`` and ``stroke_pattern`` (a tile of
+    shapes repeated) fill and stroke instead of both, ``fill`` and ``stroke`` then holding the tile's mean colour.
     ``dash``, when set, dashes the stroke (``None``: a solid stroke).
     """
 
@@ -108,6 +111,9 @@ class Paint:
     opacity: float = 1.0
     gradient: Gradient | None = None
     dash: Dash | None = None
+    stroke_gradient: Gradient | None = None
+    pattern: Pattern | None = None
+    stroke_pattern: Pattern | None = None
 
     @property
     def visible(self) -> bool:
@@ -130,6 +136,20 @@ class MaskShape:
     miter_limit: float = 4.0
     clips: tuple[tuple[Contour, ...], ...] = ()
     masks: tuple[Mask, ...] = ()
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Pattern:
+    """A pattern paint, as SVG's ``<pattern>``: ``shapes`` (contours in the pattern's own units, y down) drawn
+    within the tile ``(x, y, width, height)`` (what lies outside it is cut off), the tile repeated over the
+    plane; ``matrix`` ``(a, b, c, d, e, f)`` maps the pattern's units to the world (as a gradient's), and
+    ``opacity`` multiplies the whole tile (``fill-opacity`` or ``stroke-opacity``). Patterns are equal only
+    to themselves (their shapes hold arrays)."""
+
+    tile: tuple[float, float, float, float]
+    matrix: tuple[float, float, float, float, float, float]
+    shapes: tuple[MaskShape, ...]
+    opacity: float = 1.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -295,7 +315,7 @@ class Scene:
     @property
     def duration(self) -> float:
         """Seconds from time 0 to the last key of any shape, and its hold."""
-        return max(shape.keys[-1].time for shape in self.shapes) + self.end_hold
+        return max((shape.keys[-1].time for shape in self.shapes), default=0.0) + self.end_hold
 
     def method_of(self, shape: Shape) -> str:
         return shape.method or self.method

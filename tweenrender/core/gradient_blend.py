@@ -5,7 +5,8 @@ A key's gradient is re-expressed relative to its element's bounding box at that 
 blend of the two keys' relative gradients through its own bounding box, so the gradient moves,
 turns and stretches with the element and is each key's own gradient at its key. A plain colour
 blends as a gradient of that one colour; gradients of different kinds (linear, radial) or spreads
-take the nearer key's.
+take the nearer key's. Gradient strokes blend the same way, with the stroke's colour as a key's plain colour.
+A pattern is the nearer key's (a key without one: its plain colour), carried by the element's box likewise.
 """
 
 from __future__ import annotations
@@ -13,10 +14,10 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from ..model import Color, Gradient, Paint
+from ..model import Color, Gradient, Paint, Pattern
 from .paint import blend_color_rows
 
-__all__ = ["Box", "box_of", "blend_gradient", "color_at", "colors_at"]
+__all__ = ["Box", "box_of", "blend_gradient", "blend_stroke_gradient", "carry_pattern", "color_at", "colors_at"]
 
 Box = tuple[float, float, float, float]
 """``(xmin, ymin, xmax, ymax)`` in world units."""
@@ -96,3 +97,29 @@ def blend_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: floa
     return Gradient(near.kind, geometry,
                     (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
                      float(placed[0, 2]), float(placed[1, 2])), stops, near.spread)  # type: ignore[arg-type]
+
+
+def blend_stroke_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: float) -> Gradient | None:
+    """The gradient stroke at eased ``t`` between keys painted ``p0`` and ``p1``, as :func:`blend_gradient`
+    blends fills; None when neither key strokes with a gradient."""
+    if p0.stroke_gradient is None and p1.stroke_gradient is None:
+        return None
+    return blend_gradient(Paint(p0.stroke, None, gradient=p0.stroke_gradient),
+                          Paint(p1.stroke, None, gradient=p1.stroke_gradient), box0, box1, box, t)
+
+
+def carry_pattern(pattern0: Pattern | None, pattern1: Pattern | None, box0: Box, box1: Box, box: Box, t: float
+                  ) -> Pattern | None:
+    """The pattern at eased ``t`` between keys painted with ``pattern0`` (element's box ``box0``) and
+    ``pattern1`` (``box1``), for an inbetween whose box is ``box``: the nearer key's, placed relative to the
+    inbetween's box as it was to that key's; None when the nearer key has none."""
+    near, near_box = (pattern0, box0) if t < 0.5 else (pattern1, box1)
+    if near is None:
+        return None
+    frames = _frame(near_box), _frame(box)
+    if frames[0] is None or frames[1] is None:
+        return near
+    a, b, c, d, e, f = near.matrix
+    placed = frames[1] @ np.linalg.solve(frames[0], np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]]))
+    return Pattern(near.tile, (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
+                               float(placed[0, 2]), float(placed[1, 2])), near.shapes, near.opacity)

@@ -36,10 +36,11 @@ def gradient_shader(gradient: Gradient, viewport: Viewport) -> skia.Shader | Non
             return skia.Shaders.Color(colours[-1])
         return skia.GradientShader.MakeLinear([skia.Point(x1, y1), skia.Point(x2, y2)], colours, offsets, tile, 0,
                                               matrix)
-    cx, cy, r, fx, fy = gradient.geometry
+    cx, cy, r, fx, fy = gradient.geometry[:5]
+    fr = gradient.geometry[5] if len(gradient.geometry) > 5 else 0.0  # the focal radius
     if r <= 0:
         return skia.Shaders.Color(colours[-1])
-    if (fx, fy) == (cx, cy):
+    if (fx, fy) == (cx, cy) and fr == 0:
         return skia.GradientShader.MakeRadial(skia.Point(cx, cy), r, colours, offsets, tile, 0, matrix)
-    return skia.GradientShader.MakeTwoPointConical(skia.Point(fx, fy), 0.0, skia.Point(cx, cy), r, colours, offsets,
+    return skia.GradientShader.MakeTwoPointConical(skia.Point(fx, fy), fr, skia.Point(cx, cy), r, colours, offsets,
                                                    tile, 0, matrix)

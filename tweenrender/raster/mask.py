@@ -102,17 +102,16 @@ def _shape(raster: Raster, viewport: Viewport, shape: MaskShape) -> None:
     paint = shape.paint
 
     def draw() -> None:
-        if paint.gradient is not None and paint.fill is not None:
-            from .gradients import gradient_shader
+        from .patterns import paint_shaders
 
-            raster.fill_shader = gradient_shader(paint.gradient, viewport)
+        raster.fill_shader, raster.stroke_shader = paint_shaders(paint, viewport)
         try:
             raster.draw_contours([p for p, _ in kept], [c for _, c in kept], shape.fill_rule, paint.fill,
                                  paint.stroke, paint.stroke_width * viewport.scale,
                                  dashed(StrokeStyle(shape.cap, shape.join, shape.miter_limit), paint.dash,
                                         viewport.scale), paint.opacity)
         finally:
-            raster.fill_shader = None
+            raster.fill_shader = raster.stroke_shader = None
 
     canvas = raster.canvas
     canvas.save()

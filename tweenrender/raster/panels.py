@@ -160,14 +160,14 @@ def _fill_and_draw(raster: Raster, viewport: Viewport, shape: Shape, at: ShapeAt
                     skia.Rect.MakeLTRB(x0, y0, max(x0, x1), max(y0, y1)))
         return
     paint = at.paint
-    if paint.gradient is not None and paint.fill is not None:
-        from .gradients import gradient_shader
+    if paint.gradient or paint.stroke_gradient or paint.pattern or paint.stroke_pattern:
+        from .patterns import paint_shaders
 
-        raster.fill_shader = gradient_shader(paint.gradient, viewport)
+        raster.fill_shader, raster.stroke_shader = paint_shaders(paint, viewport)
         try:
             _draw_kept(raster, viewport, shape, at, alpha, pixels, kept)
         finally:
-            raster.fill_shader = None
+            raster.fill_shader = raster.stroke_shader = None
         return
     _draw_kept(raster, viewport, shape, at, alpha, pixels, kept)
 

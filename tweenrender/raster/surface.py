@@ -202,6 +202,7 @@ class Raster:
         self._restyled = False  # the stroke paint has other caps or joins than round ones
         self._address = self._pixels.ctypes.data
         self.fill_shader: skia.Shader | None = None  # set while a gradient fills (see raster.gradients)
+        self.stroke_shader: skia.Shader | None = None  # set while a gradient strokes
 
     def clear(self, color: Color) -> None:
         self.canvas.clear(paint_color(color))
@@ -252,6 +253,10 @@ class Raster:
         if stroke is not None:
             stroke_paint = self._stroke
             stroke_paint.setColor(paint_color(stroke, alpha))
+            if self.stroke_shader is not None:  # a gradient: the shader's colours at the stroke's opacity
+                stroke_paint = skia.Paint(stroke_paint)
+                stroke_paint.setShader(self.stroke_shader)
+                stroke_paint.setAlphaf(alpha)
             stroke_paint.setStrokeWidth(stroke_width)
             if style != _ROUND:
                 stroke_paint.setStrokeCap(_CAPS[style.cap])
@@ -280,7 +285,8 @@ class Raster:
         contours, closed = clipped_contours(contours, closed)
         placed = None
         if (self.round_strokes and strokes and opacity > 0 and not (opacity < 1.0 and fills)
-                and style.join == "round" and (style.cap == "round" or all(closed)) and not style.dash):
+                and style.join == "round" and (style.cap == "round" or all(closed)) and not style.dash
+                and self.stroke_shader is None):
             placed = draws_on(self.canvas, self._address)
         if placed is None or placed[0] * stroke_width < MIN_WIDTH:
             self.draw_path(_path_of(contours, closed, fill_rule), fill, stroke, stroke_width, style, opacity)

@@ -97,9 +97,7 @@ def drawings_scene(paths: Sequence[Path], step: float = 1.0, ease: str = "linear
     keys = [DrawingKey(path, i * period, easing.text, easing=easing, stagger=float(stagger), hold=float(hold))
             for i, path in enumerate(paths)]
     drawings, box = read_drawings(keys)
-    shapes = tuple(drawing_shapes(drawings, keys, "grow", _drawing_fail(paths)))
-    if not shapes:
-        raise SceneError(paths[0], None, "expected at least one visible shape in the drawings, found none")
+    shapes = tuple(drawing_shapes(drawings, keys, "grow", _drawing_fail(paths)))  # none: drawings of nothing
     scene = Scene(shapes=shapes, size=fitted_size(box), view=box, method="auto", path=paths[0],
                   sources=tuple(dict.fromkeys(paths)), end_hold=float(hold) if len(paths) > 1 else 0.0)
 

@@ -12,11 +12,15 @@ with the stroke's colour. At its key it draws what the stroke drew.
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
 
 from ..model import Contour, Paint, frozen_points
-from .svg import Element
+
+Element = Any
+"""A :class:`.svg.Element` (not imported: :mod:`.svg` draws strokes under a non-uniform transform with
+:func:`outlined`)."""
 
 __all__ = ["stroke_only", "fill_only", "outlined"]
 
@@ -73,5 +77,7 @@ def outlined(element: Element) -> Element:
                 contours.append(Contour(frozen_points(points), True))
     if not contours:
         return element
-    paint = replace(element.paint, fill=element.paint.stroke, stroke=None, stroke_width=0.0)
+    paint = replace(element.paint, fill=element.paint.stroke, stroke=None, stroke_width=0.0,
+                    gradient=element.paint.stroke_gradient, stroke_gradient=None,
+                    pattern=element.paint.stroke_pattern, stroke_pattern=None)
     return replace(element, contours=tuple(contours), paint=paint, fill_rule="nonzero")

@@ -13,13 +13,14 @@ A whole drawing (:func:`read_drawing`) gives every visible shape element —
 ``polygon``, inside groups, ``<use>`` copies and nested transforms — with its
 paint as an SVG renderer resolves it (:mod:`.svg_document`). Invisible
 elements (no fill and no stroke, ``display:none``, ``visibility:hidden``, zero
-opacity) are left out. Linear and radial gradient fills are kept
-(:mod:`.svg_gradients`), clip paths as clip regions (``Element.clips``), masks (``Element.masks``,
-:mod:`.svg_mask`), and the groups with an opacity each element is in (``Element.groups``, :mod:`.svg_groups`). SVG's
+opacity) are left out. Linear and radial gradient fills and strokes are kept
+(:mod:`.svg_gradients`, :mod:`.svg_gradient_paint`), and patterns (:mod:`.svg_patterns`), clip paths
+as clip regions (``Element.clips``), masks (``Element.masks``, :mod:`.svg_mask`), and the groups with an
+opacity each element is in (``Element.groups``, :mod:`.svg_groups`). SVG's
 error rules apply (:mod:`.svg_pathdata`): bad data is drawn up to its first error, an
 element of negative size or a ``<use>`` loop is left out. Dashes are read into the stroke's paint
 (:mod:`.svg_dashes`); markers become elements of their own after their element (:mod:`.svg_markers`). Not
-drawn: filters; gradient strokes and patterns are painted with the average colour of their stops.
+drawn: filters.
 """
 
 from __future__ import annotations
@@ -36,15 +37,18 @@ from ..errors import SceneError, did_you_mean
 from ..model import Color, Contour, Dash, Mask, MaskShape, Paint, frozen_points
 from .svg_basic_shapes import PREFIX as BASIC_SHAPE
 from .svg_document import SHAPES, Document, Drawn, Node, compose, length, matrix, parse, read, walk
-from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths
+from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths, zero_length_segment
 from .svg_color import parse_color
 from .svg_dashes import read_dash
 from .svg_marker_style import MARKER_PROPERTIES
 from .svg_gradients import stop_color
 from .svg_groups import fold_lone_groups
+from .svg_gradient_paint import with_gradients
 from .svg_paint_order import in_paint_order
+from .svg_patterns import pattern_content
+from .svg_stroke_space import clipped_miters, in_stroke_space
 from .svg_pathdata import path_prefix, points_prefix, smooth_controls
-from .svg_viewport import aspect_matrix
+from .svg_viewport import aspect_matrix, renders
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
            "load_svg_contours", "read_drawing", "view_box"]
@@ -250,7 +254,7 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
     try:
         document = parse(read(Path(svg_path)))
         box, placed = _root_viewport(document)
-        drawn = [d for d in walk(document, layered=True) if d.visible]
+        drawn = [d for d in walk(document, layered=True) if d.visible] if renders(document.root) else []
         if box is None:  # no viewBox and no size: the elements' own extent
             box = _extent(drawn)
         x, y, w, h = box
@@ -275,7 +279,8 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
         for d in drawn:
             element = _element(d, to_world, scale, tol, budget)
             if element is not None:
-                elements += in_paint_order(element, d.style.get("paint-order", ""))
+                elements += [part for ordered in in_paint_order(element, d.style.get("paint-order", ""))
+                             for part in in_stroke_space(ordered, to_world @ d.ctm, clipped_miters(d.style))]
             if any(d.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
                 elements += _marker_elements(d, to_world, scale, tol, budget)
         return Drawing(Path(svg_path), world_box, fold_lone_groups(elements), to_world)
@@ -316,10 +321,15 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     if masks is None:
         return None
     unstroked = paint.stroke is None or paint.stroke[3] == 0 or paint.stroke_width <= 0
-    contours = _contours(d, to_world @ d.ctm, tol, budget, unstroked)
+    contours = _contours(d, to_world @ d.ctm, tol, budget, unstroked, dots=not unstroked and cap != "butt",
+                         open_ends=not unstroked and cap != "round")
     if not contours:
         return None
-    paint = _with_gradient(paint, d, to_world, contours)
+    box = view_box(d.document) or (0.0, 0.0, 100.0, 100.0)
+    tile_tol = tol / max(math.sqrt(abs(_determinant(to_world @ d.ctm))), 1e-300)
+    paint = with_gradients(paint, d.style, d.document, to_world @ d.ctm, contours, (box[2], box[3]),
+                           lambda node, ctm: pattern_content(node, ctm, d.document, budget, lambda inner: _element(
+                               inner, np.eye(3), 1.0, tile_tol, budget)))
     clips = tuple(region for ref in d.clips for region in _clip_regions(ref[0], ref[1], d, to_world, tol, budget,
                                                                           owner=getattr(ref, "owner", None)))
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
@@ -490,26 +500,6 @@ def _clip_region(clip: Node, ident: str, space: NDArray[np.float64], d: Drawn, t
 # -- paint ---------------------------------------------------------------------------------------------
 
 
-def _with_gradient(paint: Paint, d: Drawn, to_world: NDArray[np.float64],
-                   contours: list[tuple[NDArray[np.float64], bool]]) -> Paint:
-    """``paint`` with its fill's gradient, when the fill is ``url(#…)`` of a linear or radial gradient."""
-    from dataclasses import replace
-
-    from .svg_gradients import gradient_ref, read_gradient
-
-    ident = gradient_ref(d.style.get("fill", ""))
-    if ident is None or paint.fill is None:
-        return paint
-    placed = to_world @ d.ctm
-    every = np.concatenate([points for points, _ in contours])
-    user = (np.linalg.inv(placed) @ np.column_stack([every, np.ones(len(every))]).T)[:2].T
-    (x0, y0), (x1, y1) = user.min(axis=0), user.max(axis=0)
-    box = view_box(d.document) or (0.0, 0.0, 100.0, 100.0)
-    gradient = read_gradient(ident, d.document, (float(x0), float(y0), float(x1 - x0), float(y1 - y0)), placed,
-                             (box[2], box[3]), _number(d.style.get("fill-opacity"), 1.0))
-    return paint if gradient is None else replace(paint, gradient=gradient)
-
-
 def _determinant(matrix: np.ndarray) -> float:
     """The determinant of the linear part of an affine ``matrix (3, 3)``, in closed form on Python floats:
     numpy's LU route warns (divide by zero) on subnormal entries, and float overflow gives inf or nan
@@ -619,6 +609,10 @@ def _gradient_color(ident: str, document: Document, depth: int = 0) -> Color | N
     if not nodes or depth > 8:
         return None
     node = nodes[0]
+    if node.tag == "pattern":
+        return (128, 128, 128, 255)  # its tile's mean colour once read (.svg_gradient_paint)
+    if node.tag not in ("linearGradient", "radialGradient"):
+        return None  # stops are taken from gradients only
     stops = [c for c in node.children if c.tag == "stop"]
     if not stops:
         href = node.attrs.get("href", node.attrs.get("xlink:href", ""))
@@ -636,15 +630,18 @@ def _gradient_color(ident: str, document: Document, depth: int = 0) -> Color | N
 
 
 def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budget, unstroked: bool = False,
-              lenient: bool = True) -> list[tuple[NDArray[np.float64], bool]]:
+              lenient: bool = True, dots: bool = False, open_ends: bool = False
+              ) -> list[tuple[NDArray[np.float64], bool]]:
     """The element's subpaths flattened into world contours, without degenerate ones.
 
     ``lenient``: SVG's error rules (bad data drawn up to its first error, a negative size not drawn);
     else such an element is refused (one element asked for by id).
 
-    A subpath is closed when it ends in Z, or ends where it starts; with ``unstroked`` (an
+    A subpath is closed when it ends in Z, or ends where it starts (unless ``open_ends``: a stroke whose
+    butt or square caps show there, as SVG strokes such a subpath open); with ``unstroked`` (an
     element drawn without a stroke, whose fill closes every subpath anyway) every subpath of
-    three vertices or more is.
+    three vertices or more is. With ``dots`` (a stroke with round or square caps), a subpath of zero length
+    is kept as a segment ``tol`` long along the user x axis, which its caps draw as a dot (SVG 1.1 §11.4).
     """
     if not np.all(np.isfinite(to_world)) or abs(_determinant(to_world)) == 0:
         return []  # a transform that collapses the element: nothing is drawn (as in SVG)
@@ -656,11 +653,15 @@ def _contours(d: Drawn, to_world: NDArray[np.float64], tol: float, budget: Budge
     except Exception as error:  # a third-party parser on arbitrary input: report, do not crash
         raise Refusal(_why_not_drawn(d.node)) from error
     out = []
-    for segments, closed in subpaths(segments_all):
+    for segments, closed in subpaths(segments_all, dots):
         points = distinct(flatten(segments, to_world, tol, budget), False)
+        if len(points) == 1:
+            if dots:
+                out.append((zero_length_segment(points[0], to_world, tol), False))
+            continue
         returns = len(points) > 2 and bool(np.allclose(points[0], points[-1], rtol=0.0,
                                                        atol=1e-9 * float(np.ptp(points, axis=0).max())))
-        closed = closed or returns or unstroked
+        closed = closed or (returns and not open_ends) or unstroked
         points = distinct(points, closed)
         if len(points) >= 2:
             out.append((points, closed and len(points) >= 3))

@@ -28,10 +28,11 @@ from svgelements import Matrix
 
 from .svg_basic_shapes import PREFIX as BASIC_SHAPE, is_basic_shape
 from .svg_conditions import conditions_hold, switch_choice
+from .svg_context_paint import NO_CONTEXT, context_of, in_context
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_entities import UNSAFE, check_entities, safe_declaration
 from .svg_flatten import Refusal
-from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_relative, font_size
+from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_relative, font_size, is_length
 from .svg_marker_style import marker_longhands
 from .svg_transform_origin import about_origin, parse_origin
 from .svg_viewport import nested_viewport, outermost_size, root_size
@@ -298,7 +299,7 @@ def compose(ctm: NDArray[np.float64], step: NDArray[np.float64], node: Node, wha
 
 def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -> float:
     """A length attribute in user units (units at 96 per inch, percentages of ``relative``, ``em``, ``rem``,
-    ``ex`` of the element's font: :mod:`.svg_lengths`)."""
+    ``ex`` of the element's font: :mod:`.svg_lengths`); ``default`` when it is not a length."""
     from svgelements import Length
 
     text = node.attrs.get(name)
@@ -307,6 +308,8 @@ def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -
     relative_to_font = font_relative(text, *node.font, node.view)
     if relative_to_font is not None:
         return relative_to_font
+    if not is_length(text):
+        return default  # a length in error: the attribute's initial value, as renderers take it
     try:
         value = Length(text.strip()).value(ppi=96.0, relative_length=relative)
         return float(value)
@@ -327,6 +330,7 @@ class _Walk:
         self.using: list[str] = []
         self.looping: dict[str, bool] = {}  # id → whether a <use> of it leads back to itself
         self.viewport: tuple[float, float] | None = None  # the nested viewport's size; None: the root's
+        self.context = NO_CONTEXT  # the fill and stroke of the <use> around (context-fill, context-stroke)
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
               shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = (),
@@ -380,6 +384,9 @@ class _Walk:
         elif is_basic_shape(reference) and shown:  # clip-path: circle(…) (:mod:`.svg_basic_shapes`)
             clips = clips + (ClipRef.of(BASIC_SHAPE + reference, ctm, node),)
         if node.tag in SHAPES:
+            for name in ("fill", "stroke"):
+                if name in style:
+                    style[name] = in_context(style[name], self.context)
             visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
             yield Drawn(node, style, ctm, opacity, visible, self.document, clips, viewport=self.viewport, masks=masks,
                         groups=self.groups)
@@ -463,10 +470,12 @@ class _Walk:
                           [0.0, 0.0, 1.0]])
         placed = compose(ctm, shift, node, "the <use> element's x, y transform")
         self.using.append(href)
+        saved, self.context = self.context, context_of(style, self.context)
         try:
             yield from self.visit(target[0], style, placed, opacity, shown, clips, masks, instance=node)
         finally:
             self.using.pop()
+            self.context = saved
 
 
 def opacity_value(text: str) -> float:

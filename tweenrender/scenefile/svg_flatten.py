@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 from svgelements import Arc, Close, CubicBezier, Line, Move, QuadraticBezier
 
-__all__ = ["Refusal", "Budget", "MAX_DEPTH", "subpaths", "flatten", "distinct"]
+__all__ = ["Refusal", "Budget", "MAX_DEPTH", "subpaths", "flatten", "distinct", "zero_length_segment"]
 
 MAX_DEPTH = 48  # Bézier halvings; the flatness bound shrinks 4x per halving
 MAX_COORDINATE = 1e9
@@ -38,8 +38,9 @@ class Budget:
             raise Refusal(f"expected at most {self.limit} vertices, found more at tolerance {self.tolerance:g}")
 
 
-def subpaths(segments: list[object]) -> list[tuple[list[object], bool]]:
-    """The subpaths that draw something, each with whether it is closed (ends in Z)."""
+def subpaths(segments: list[object], dots: bool = False) -> list[tuple[list[object], bool]]:
+    """The subpaths that draw something, each with whether it is closed (ends in Z); with ``dots``, those of
+    zero length too (``M x y L x y``, ``M x y Z``: where round and square caps draw a dot)."""
     out: list[tuple[list[object], bool]] = []
     current: list[object] | None = None
     for segment in segments:
@@ -53,7 +54,7 @@ def subpaths(segments: list[object]) -> list[tuple[list[object], bool]]:
         if isinstance(segment, Close):
             out[-1] = (current, True)
             current = None  # a command after Z starts a new subpath at the same point
-    return [(s, closed) for s, closed in out if any(_draws(segment) for segment in s)]
+    return [(s, closed) for s, closed in out if dots or any(_draws(segment) for segment in s)]
 
 
 def _draws(segment: object) -> bool:
@@ -206,3 +207,12 @@ def distinct(points: NDArray[np.float64], closed: bool = True) -> NDArray[np.flo
             last -= 1
         kept = kept[:last]
     return np.array(kept, dtype=np.float64)
+
+
+def zero_length_segment(point: NDArray[np.float64], to_world: NDArray[np.float64], tol: float) -> NDArray[np.float64]:
+    """A zero-length subpath at world ``point (2,)`` as a segment ``(2, 2)`` of length ``tol`` centred on it along
+    the user x axis (mapped by ``to_world``, 3x3): the direction SVG gives its square caps; within the tolerance."""
+    axis = np.asarray(to_world, dtype=np.float64)[:2, 0]
+    norm = float(np.hypot(*axis))
+    step = axis / norm * tol if norm > 0 and np.isfinite(norm) else np.array([tol, 0.0])
+    return np.array([point - 0.5 * step, point + 0.5 * step], dtype=np.float64)

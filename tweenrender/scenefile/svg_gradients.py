@@ -22,6 +22,7 @@ from .svg_transform_origin import about_origin, parse_origin
 __all__ = ["read_gradient", "gradient_ref", "stop_color"]
 
 _DEPTH = 8  # href links followed at most
+_SHARED = ("gradientUnits", "gradientTransform", "spreadMethod", "transform-origin")  # taken across kinds
 # percentages: of the bounding box's unit square, or of the viewport in userSpaceOnUse
 _DEFAULTS = {"linearGradient": {"x1": "0%", "y1": "0%", "x2": "100%", "y2": "0%"},
              "radialGradient": {"cx": "50%", "cy": "50%", "r": "50%"}}
@@ -138,8 +139,9 @@ def read_gradient(ident: str, document: Document, user_box: tuple[float, float, 
     kind = chain[0].tag
 
     def attribute(name: str, default: str | None = None) -> str | None:
+        own = name not in _SHARED  # geometry: from gradients of the same kind only
         for node in chain:
-            if name in node.attrs:
+            if name in node.attrs and not (own and node.tag != kind):
                 return node.attrs[name]
         return default
 
@@ -153,7 +155,8 @@ def read_gradient(ident: str, document: Document, user_box: tuple[float, float, 
     across, down = (1.0, 1.0) if bounding else viewport
     relative = {"x1": across, "x2": across, "cx": across, "fx": across, "y1": down, "y2": down, "cy": down,
                 "fy": down, "r": 1.0 if bounding else math.hypot(across, down) / math.sqrt(2)}
-    names = ("x1", "y1", "x2", "y2") if kind == "linearGradient" else ("cx", "cy", "r", "fx", "fy")
+    relative["fr"] = relative["r"]
+    names = ("x1", "y1", "x2", "y2") if kind == "linearGradient" else ("cx", "cy", "r", "fx", "fy", "fr")
     values = []
     for name in names:
         if name in ("fx", "fy"):  # the focus defaults to the centre
@@ -163,6 +166,8 @@ def read_gradient(ident: str, document: Document, user_box: tuple[float, float, 
         values.append(_number(text or "0", relative[name]))
     if not all(math.isfinite(v) for v in values):
         return None
+    if kind == "radialGradient" and values[5] <= 0:  # no focal radius (a negative one is an error: none)
+        values.pop()
     own = about_origin(matrix(attribute("gradientTransform", "") or ""), parse_origin(
         chain[0].attrs.get("transform-origin", ""), (across, down), chain[0].font, chain[0].view))
     if bounding:

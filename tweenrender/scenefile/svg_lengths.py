@@ -15,13 +15,15 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["DEFAULT_FONT_SIZE", "DEFAULT_VIEW", "font_relative", "font_size"]
+__all__ = ["DEFAULT_FONT_SIZE", "DEFAULT_VIEW", "font_relative", "font_size", "is_length"]
 
 DEFAULT_FONT_SIZE = 16.0
 """``medium``, the initial ``font-size`` (CSS px, = user units)."""
 
 _LENGTH = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(rem|em|ex|ch|q|vw|vh|vmin|vmax)\s*$",
                      re.IGNORECASE)
+_ABSOLUTE = re.compile(r"^\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(?:px|pt|pc|mm|cm|in|%)?\s*$",
+                       re.IGNORECASE)
 _KEYWORDS = {"xx-small": 9.0, "x-small": 10.0, "small": 13.0, "medium": 16.0, "large": 18.0, "x-large": 24.0,
              "xx-large": 32.0, "xxx-large": 48.0}
 _PER_UNIT = {"em": 1.0, "ex": 0.5, "ch": 0.5}
@@ -76,3 +78,9 @@ def font_size(text: str | None, parent: float, root: float, view: tuple[float, f
             except (ValueError, TypeError):
                 return parent
     return found if math.isfinite(found) and found >= 0 else parent
+
+
+def is_length(text: str) -> bool:
+    """Whether ``text`` is a number with an absolute unit, a percentage or no unit (CSS's grammar): what
+    is not (``44mmx``, ``auto``) is in error, and the attribute takes its initial value."""
+    return _ABSOLUTE.match(text) is not None

@@ -250,8 +250,10 @@ def marker_content(d: Drawn, placed: Placed, memo: dict[object, object]) -> Iter
     """The shapes of one placed marker, as drawn (with ``d``'s opacity and clip paths, and the marker's
     viewport clip)."""
     from .svg_document import _Walk
+    from .svg_context_paint import NO_CONTEXT, context_of
 
     walker = _Walk(d.document, False)
+    walker.context = context_of(d.style, NO_CONTEXT)  # context-fill, context-stroke: the marked element's
     clips = d.clips
     if placed.rect is not None:
         clips = clips + ((walker.viewport_clip(placed.rect), placed.viewport),)

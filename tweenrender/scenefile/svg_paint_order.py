@@ -36,6 +36,8 @@ def in_paint_order(element: _Element, value: str) -> list[_Element]:
     strokes = paint.stroke is not None and paint.stroke[3] > 0 and paint.stroke_width > 0
     if not (fills and strokes and stroke_first(value)):
         return [element]
-    stroke = replace(element, id=None, paint=replace(paint, fill=None, gradient=None))  # type: ignore[type-var]
-    fill = replace(element, paint=replace(paint, stroke=None))  # type: ignore[type-var]
+    stroke_alone = replace(paint, fill=None, gradient=None, pattern=None)
+    fill_alone = replace(paint, stroke=None, stroke_gradient=None, stroke_pattern=None)
+    stroke = replace(element, id=None, paint=stroke_alone)  # type: ignore[type-var]
+    fill = replace(element, paint=fill_alone)  # type: ignore[type-var]
     return [stroke, fill]

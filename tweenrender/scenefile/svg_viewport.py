@@ -17,7 +17,7 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["Viewport", "aspect_matrix", "nested_viewport", "outermost_size", "parse_view_box", "root_size"]
+__all__ = ["Viewport", "aspect_matrix", "nested_viewport", "outermost_size", "parse_view_box", "renders", "root_size"]
 
 
 class Node(Protocol):
@@ -93,6 +93,19 @@ def _length(text: str | None, relative: float, default: float, font: tuple[float
     except (ValueError, TypeError):
         return default
     return value if math.isfinite(value) else default
+
+
+def renders(root: Node) -> bool:
+    """Whether the root ``<svg>`` draws anything: a ``width`` or ``height`` of zero or less disables its
+    rendering (SVG 1.1 §7.2; a negative one is in error, and renderers draw nothing either)."""
+    from .svg_lengths import font_relative, is_length
+
+    for name in ("width", "height"):
+        text = root.attrs.get(name, "").strip()
+        readable = is_length(text) or font_relative(text, *root.font) is not None
+        if readable and _length(text, 1.0, 1.0, root.font) <= 0:
+            return False
+    return True
 
 
 def root_size(root: Node) -> tuple[float, float]:

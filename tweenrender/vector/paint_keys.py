@@ -229,7 +229,7 @@ def _radial(placed: Array, geometry: tuple[float, ...], previous: tuple[float, f
     """A radial gradient's centre ``(2,)``, the angle (radians) of its first axis, its two radii and its focal
     point in its own frame ``(2,)``; of the equivalent frames, the one nearest ``previous``
     ``(angle, radius, radius)``, so the values move smoothly from frame to frame."""
-    cx, cy, r, fx, fy = geometry
+    cx, cy, r, fx, fy = geometry[:5]  # a focal radius (a sixth value) is not written
     centre = placed[:2, :2] @ np.array([cx, cy]) + placed[:2, 2]
     u, sigma, _ = np.linalg.svd(placed[:2, :2] * r)
     theta = float(np.arctan2(u[1, 0], u[0, 0]))

@@ -40,7 +40,7 @@ from .easing import LINEAR, Easing, parse_easing
 from ..geometry import best_fit_rotation, signed_area
 from ..clip_motion import clips_at
 from ..mask_motion import MaskBlend, carried, masks_at, masks_at_key
-from ..gradient_blend import blend_gradient, box_of
+from ..gradient_blend import blend_gradient, blend_stroke_gradient, box_of, carry_pattern
 from ..correspondence.hint_search import correspond_hinted, correspond_hinted_open
 from ..correspondence.hints import Link, forced_contour_pairs, segment_links, vertex_links
 
@@ -464,7 +464,9 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
     c0, c1 = (segment.ends[0].clips, segment.ends[1].clips) if segment.ends is not None else ((), ())
     m0, m1 = (segment.ends[0].masks, segment.ends[1].masks) if segment.ends is not None else ((), ())
     boxes = None
-    if (p0.gradient is not None or p1.gradient is not None or c0 or c1 or m0 or m1) and pairs:
+    strokes = p0.stroke_gradient is not None or p1.stroke_gradient is not None
+    patterns = any(p is not None for p in (p0.pattern, p1.pattern, p0.stroke_pattern, p1.stroke_pattern))
+    if (p0.gradient is not None or p1.gradient is not None or strokes or patterns or c0 or c1 or m0 or m1) and pairs:
         boxes = box_of([p.k0 for p in pairs]), box_of([p.k1 for p in pairs])
     out = []
     for k, (x, paint) in enumerate(zip(t.tolist(), paints)):
@@ -479,6 +481,11 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
             box = box_of(list(contours))
             if p0.gradient is not None or p1.gradient is not None:
                 paint = replace(paint, gradient=blend_gradient(p0, p1, *boxes, box, x))
+            if strokes:
+                paint = replace(paint, stroke_gradient=blend_stroke_gradient(p0, p1, *boxes, box, x))
+            if patterns:
+                paint = replace(paint, pattern=carry_pattern(p0.pattern, p1.pattern, *boxes, box, x),
+                                stroke_pattern=carry_pattern(p0.stroke_pattern, p1.stroke_pattern, *boxes, box, x))
             clips = clips_at(c0, c1, *boxes, box, x)
             if m0 or m1:
                 now = np.concatenate(contours)

@@ -1,0 +1,85 @@
+"""Pattern paints as skia shaders: a :class:`~tweenrender.model.Pattern`'s tile recorded as a picture, repeated,
+placed through a viewport; and the shaders an element's paint fills and strokes with."""
+
+from __future__ import annotations
+
+import numpy as np
+import skia
+
+from ..core.view import Viewport
+from ..model import Paint, Pattern
+from .surface import paint_color
+
+__all__ = ["pattern_shader", "paint_shaders"]
+
+_CAPS = {"butt": skia.Paint.kButt_Cap, "round": skia.Paint.kRound_Cap, "square": skia.Paint.kSquare_Cap}
+_JOINS = {"miter": skia.Paint.kMiter_Join, "round": skia.Paint.kRound_Join, "bevel": skia.Paint.kBevel_Join}
+
+
+def pattern_shader(pattern: Pattern, viewport: Viewport) -> skia.Shader | None:
+    """The shader that paints ``pattern`` on a canvas drawn through ``viewport``; None where it cannot be
+    placed (an empty tile, a flat matrix, non-finite numbers)."""
+    x, y, w, h = pattern.tile
+    a, b, c, d, e, f = pattern.matrix
+    # the tile recorded from its own corner: pattern units → pixels, through the tile's corner
+    full = viewport.matrix @ np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]]) @ np.array(
+        [[1.0, 0.0, x], [0.0, 1.0, y], [0.0, 0.0, 1.0]])
+    if not (w > 0 and h > 0 and np.all(np.isfinite(full)) and np.all(np.isfinite(pattern.tile))):
+        return None
+    matrix = skia.Matrix.MakeAll(*(float(v) for v in full[0]), *(float(v) for v in full[1]), 0.0, 0.0, 1.0)
+    if not matrix.invert(skia.Matrix()):
+        return None
+    tile = skia.Rect.MakeWH(w, h)
+    recorder = skia.PictureRecorder()
+    canvas = recorder.beginRecording(tile)
+    canvas.clipRect(tile)
+    canvas.translate(-x, -y)
+    layered = pattern.opacity < 1.0
+    if layered:
+        canvas.saveLayerAlpha(None, int(round(255 * max(pattern.opacity, 0.0))))
+    for shape in pattern.shapes:
+        _draw(canvas, shape)
+    if layered:
+        canvas.restore()
+    picture = recorder.finishRecordingAsPicture()
+    return picture.makeShader(skia.TileMode.kRepeat, skia.TileMode.kRepeat, skia.FilterMode.kLinear, matrix, tile)
+
+
+def _draw(canvas: skia.Canvas, shape: object) -> None:
+    """One shape of a tile (a :class:`~tweenrender.model.MaskShape`, the pattern's units) in its plain colours."""
+    paint = shape.paint  # type: ignore[attr-defined]
+    path = skia.Path()
+    for contour in shape.contours:  # type: ignore[attr-defined]
+        points = np.asarray(contour.points, dtype=np.float64)
+        if len(points) >= 2 and np.all(np.isfinite(points)):
+            path.addPoly([skia.Point(float(px), float(py)) for px, py in points], bool(contour.closed))
+    even = shape.fill_rule == "evenodd"  # type: ignore[attr-defined]
+    path.setFillType(skia.PathFillType.kEvenOdd if even else skia.PathFillType.kWinding)
+    opacity = max(min(paint.opacity, 1.0), 0.0)
+    if paint.fill is not None and paint.fill[3] > 0:
+        canvas.drawPath(path, skia.Paint(AntiAlias=True, Color=paint_color(paint.fill, opacity)))
+    if paint.stroke is not None and paint.stroke[3] > 0 and paint.stroke_width > 0:
+        stroke = skia.Paint(AntiAlias=True, Style=skia.Paint.kStroke_Style, Color=paint_color(paint.stroke, opacity),
+                            StrokeWidth=float(paint.stroke_width))
+        stroke.setStrokeCap(_CAPS.get(shape.cap, skia.Paint.kButt_Cap))  # type: ignore[attr-defined]
+        stroke.setStrokeJoin(_JOINS.get(shape.join, skia.Paint.kMiter_Join))  # type: ignore[attr-defined]
+        stroke.setStrokeMiter(float(shape.miter_limit))  # type: ignore[attr-defined]
+        canvas.drawPath(path, stroke)
+
+
+def paint_shaders(paint: Paint, viewport: Viewport) -> tuple[skia.Shader | None, skia.Shader | None]:
+    """The shaders ``paint`` fills and strokes with (a gradient's or a pattern's), None for a plain colour."""
+    from .gradients import gradient_shader
+
+    fill = stroke = None
+    if paint.fill is not None:
+        if paint.pattern is not None:
+            fill = pattern_shader(paint.pattern, viewport)
+        elif paint.gradient is not None:
+            fill = gradient_shader(paint.gradient, viewport)
+    if paint.stroke is not None:
+        if paint.stroke_pattern is not None:
+            stroke = pattern_shader(paint.stroke_pattern, viewport)
+        elif paint.stroke_gradient is not None:
+            stroke = gradient_shader(paint.stroke_gradient, viewport)
+    return fill, stroke

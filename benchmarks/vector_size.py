@@ -42,7 +42,8 @@ from tweenrender.vector.export import vector_clip  # noqa: E402
 from bench_inbetweens import sample_pairs, shipped_icons  # noqa: E402
 from tests.vector_players import bezier_timing  # noqa: E402
 
-_DRAWN = 32  # points of each cubic span the replay draws
+_DRAWN = 32  # points of each cubic span the replay draws, at least
+_STEP = 2.0  # pixels at most between them (by the longest span's control polygon): the drawing is the cubic's
 
 
 def _as_written(points: np.ndarray) -> np.ndarray:
@@ -60,7 +61,9 @@ def _draw(curve: np.ndarray, closed: bool) -> np.ndarray:
     ends = [(k, k + 1) for k in range(count - 1)] + ([(count - 1, 0)] if closed and count > 1 else [])
     if not ends:
         return curve[:, 1]
-    u = np.linspace(0.0, 1.0, _DRAWN)[:, None]
+    polygon = max(float(np.linalg.norm(np.diff(np.array([curve[a, 1], curve[a, 2], curve[b, 0], curve[b, 1]]), axis=0),
+                                       axis=1).sum()) for a, b in ends)
+    u = np.linspace(0.0, 1.0, max(_DRAWN, int(np.ceil(polygon / _STEP)) + 1))[:, None]
     return np.concatenate([(1 - u) ** 3 * curve[a, 1] + 3 * (1 - u) ** 2 * u * curve[a, 2]
                            + 3 * (1 - u) * u ** 2 * curve[b, 0] + u ** 3 * curve[b, 1] for a, b in ends])
 

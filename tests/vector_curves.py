@@ -11,7 +11,11 @@ import re
 import numpy as np
 import shapely
 
-_POINTS = 48  # points of each drawn cubic
+_POINTS = 48  # points of each drawn cubic, at least
+_STEP = 2.0
+"""Pixels at most between a drawn cubic's points (by its control polygon's length, which bounds the cubic's): the
+drawing strays from the cubic by at most the sagitta of such a chord (0.01 px on a 50 px radius), so the
+measure is of the cubic, not of a coarse drawing of a long one."""
 _DENSIFY = 0.1  # shapely splits each segment into 10 for the Hausdorff distance
 
 
@@ -30,7 +34,10 @@ def timing(x: float, handles: tuple[float, ...]) -> float:
 
 
 def cubic(p0: np.ndarray, p1: np.ndarray, p2: np.ndarray, p3: np.ndarray, count: int = _POINTS) -> np.ndarray:
-    """The cubic Bézier through control points ``(2,)`` each at ``count`` even parameters: ``(count, 2)``."""
+    """The cubic Bézier through control points ``(2,)`` each at ``count`` even parameters, or more where its control
+    polygon is longer than ``count`` steps of :data:`_STEP` pixels: ``(count', 2)``."""
+    polygon = float(np.linalg.norm(np.diff(np.array([p0, p1, p2, p3], dtype=np.float64), axis=0), axis=1).sum())
+    count = max(count, int(np.ceil(polygon / _STEP)) + 1) if np.isfinite(polygon) else count
     u = np.linspace(0.0, 1.0, count)[:, None]
     return (1 - u) ** 3 * p0 + 3 * (1 - u) ** 2 * u * p1 + 3 * (1 - u) * u ** 2 * p2 + u ** 3 * p3
 

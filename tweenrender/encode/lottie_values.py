@@ -27,11 +27,17 @@ def animated(frames: tuple[int, ...], values: list[Any], eases: tuple[Handles, .
     for index, (frame, value) in enumerate(zip(frames, values)):
         key: dict[str, Any] = {"t": frame, "s": value}
         if index < len(frames) - 1:
-            x1, y1, x2, y2 = eases[index] if eases else STRAIGHT
+            x1, y1, x2, y2 = (_short(h) for h in (eases[index] if eases else STRAIGHT))
             key["o"] = {"x": [x1], "y": [y1]}
             key["i"] = {"x": [x2], "y": [y2]}
         keys.append(key)
     return {"a": 1, "k": keys}
+
+
+def _short(value: float) -> float | int:
+    """A timing handle as written: a whole one as an integer (``0``, not ``0.0``), the same number in fewer
+    characters."""
+    return int(value) if float(value).is_integer() else float(value)
 
 
 def scalar(prop: dict[str, Any]) -> dict[str, Any]:

@@ -16,14 +16,23 @@ control points of a span that is one edge of the polyline: it is straight at eve
 interpolating vertices and tangents straight between keyframes draws the Bézier of the interpolated
 control points; as a Bézier point is a convex combination of its control points, control points within
 ``e`` of the fitted ones draw points within ``e`` of the fitted curve.
+
+A contour keyframed only at its two keys (it moves straight between them) is fitted as a :class:`Blend`: the
+cubics at the two keys alone, every frame's cubic their blend by the motion's progress, exactly what a player
+draws, measured against every frame. Each key's inner points are then refitted to where the cubic passes
+nearest to that key's polyline (:func:`_slid_keys`), rather than to the key's vertices at the shared
+parameters: a key's vertices need not lie where a cubic's parameter puts them (a vertex of one key matched to
+copies of the other's), and the measure of every frame says whether the in-betweens allow the slide.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["RIDGE", "STRAIGHT_RIDGE", "distance_to_polyline", "fit_curves", "free_points", "with_fixed_points", "curve_points", "curve_error", "CORNER_DEGREES"]
+__all__ = ["Blend", "RIDGE", "STRAIGHT_RIDGE", "distance_to_polyline", "fit_curves", "free_points", "with_fixed_points", "curve_points", "curve_error", "CORNER_DEGREES"]
 
 Array = NDArray[np.float64]
 
@@ -43,8 +52,25 @@ _MEASURED_SHARE = 0.97
 and a long span's cubic may stray a little farther between them."""
 _NEWTON_ROUNDS = 10
 """Newton steps on a span's parameters when the fit at mean chord length misses."""
+_SLIDES = 4
+"""Refits of a blend's key cubics to the nearest points of their polylines (:func:`_slid_keys`)."""
 _CHUNK = 1 << 20  # point-segment pairs measured at once
 _DENSE = 24  # points of the cubic measured per span, besides those at the vertices' parameters
+
+
+@dataclass(frozen=True)
+class Blend:
+    """Curves blended between two frames, as a player draws a path keyframed at them: frame ``f``'s control points
+    are ``(1 - s_f)·A + s_f·B``, A and B the cubics at frames ``first`` and ``last``, ``s = progress (F,)`` (0 at
+    ``first``, 1 at ``last``). :func:`fit_curves` then fits A and B alone and measures every frame's blend."""
+
+    first: int
+    last: int
+    progress: Array
+
+    def of(self, keys: Array) -> Array:
+        """Every frame's control points ``(F, 4, 2)`` from the two frames' ``keys (2, 4, 2)``."""
+        return keys[0] + self.progress[:, None, None] * (keys[1] - keys[0])
 
 
 def _bernstein(u: Array) -> Array:
@@ -70,6 +96,43 @@ def _fit_span(samples: Array, i0: int, i1: int, ridge: float = 0.0) -> tuple[Arr
     nearest point, Newton's way, was measured to save nothing on icon pairs.)"""
     u = _parameters(samples, i0, i1)
     return _solve(samples, i0, i1, u, ridge), u
+
+
+def _blend_fit(ring: Array, i0: int, i1: int, ridge: float, blend: Blend) -> tuple[Array, Array, Array]:
+    """The cubics over vertices ``i0..i1`` of ``ring (F, L', 2)`` at ``blend``'s two frames, at one set of parameters
+    (mean chord length over every frame) and then slid along their polylines (:func:`_slid_keys`), and every
+    frame's cubic blended between them: control points ``(F, 4, 2)``, the two frames' ``(2, 4, 2)`` and the
+    parameters ``(i1 - i0 + 1,)``."""
+    ends = ring[[blend.first, blend.last]]
+    u = _parameters(ring, i0, i1)
+    keys = _slid_keys(ends, i0, i1, u, ridge, _solve(ends, i0, i1, u, ridge))
+    return blend.of(keys), keys, u
+
+
+def _slid_keys(ends: Array, i0: int, i1: int, u: Array, ridge: float, keys: Array) -> Array:
+    """The two key cubics ``keys (2, 4, 2)`` refitted, :data:`_SLIDES` times, to the points of the key polylines
+    ``ends[:, i0:i1 + 1]`` nearest to where the cubics pass at the parameters ``u``: each key's vertices may slide
+    along its own polyline, so the two keys need not reach their matched vertices at one parameter."""
+    if i1 - i0 < 2:
+        return keys
+    span = ends[:, i0:i1 + 1]
+    for _ in range(_SLIDES):
+        passing = curve_points(keys, u[1:-1])  # (2, n, 2)
+        targets = ends.copy()
+        targets[:, i0 + 1:i1] = _nearest_on_polyline(passing, span)
+        keys = _solve(targets, i0, i1, u, ridge)
+    return keys
+
+
+def _nearest_on_polyline(points: Array, polyline: Array) -> Array:
+    """The point of the polyline ``polyline (F, Q, 2)`` (Q ≥ 2) nearest to each of ``points (F, P, 2)``: ``(F, P, 2)``."""
+    a, b = polyline[:, :-1], polyline[:, 1:]  # (F, S, 2)
+    ab = b - a
+    length = np.maximum(np.sum(ab * ab, axis=-1), 1e-300)
+    s = np.clip(np.einsum("fpsd,fsd->fps", points[:, :, None] - a[:, None], ab) / length[:, None], 0.0, 1.0)
+    foot = a[:, None] + s[..., None] * ab[:, None]  # (F, P, S, 2)
+    which = np.argmin(np.sum((points[:, :, None] - foot) ** 2, axis=-1), axis=-1)  # (F, P)
+    return np.take_along_axis(foot, which[..., None, None], axis=2)[:, :, 0]
 
 
 def _solve(samples: Array, i0: int, i1: int, u: Array, ridge: float = 0.0) -> Array:
@@ -125,7 +188,8 @@ def curve_error(controls: Array, u: Array, polyline: Array) -> tuple[Array, Arra
     return np.maximum(vertices.max(axis=1), points.max(axis=1)), vertices.max(axis=0)
 
 
-def _spans(ring: Array, breaks: list[int], tolerance: float, ridge: float) -> tuple[dict[tuple[int, int], Array], float]:
+def _spans(ring: Array, breaks: list[int], tolerance: float, ridge: float,
+           blend: Blend | None = None) -> tuple[dict[tuple[int, int], Array], float]:
     """The cubics from each of ``breaks`` (increasing vertex indices of ``ring (F, L', 2)``) to the next, each as
     long as it can be (:func:`_longest_span`): control points ``(F, 4, 2)`` by ``(first, last)`` vertex, and the
     largest error measured."""
@@ -133,29 +197,47 @@ def _spans(ring: Array, breaks: list[int], tolerance: float, ridge: float) -> tu
     worst = 0.0
     for i0, i1 in zip(breaks, breaks[1:]):
         while i0 < i1:
-            end, controls, error = _longest_span(ring, i0, i1, tolerance, ridge)
+            end, controls, error = _longest_span(ring, i0, i1, tolerance, ridge, blend)
             spans[(i0, end)] = controls
             worst = max(worst, error)
             i0 = end
     return spans, worst
 
 
-def _span_fit(ring: Array, i0: int, i1: int, tolerance: float, ridge: float) -> tuple[Array, float] | None:
+def _span_fit(ring: Array, i0: int, i1: int, tolerance: float, ridge: float,
+              blend: Blend | None = None) -> tuple[Array, float] | None:
     """The cubic over vertices ``i0..i1`` of ``ring (F, L', 2)`` and its error, or ``None`` if it misses by
-    more than ``tolerance`` at some frame; an edge always fits (error 0). Fitted at mean chord length
-    (:func:`_fit_span`), then, if that misses, at parameters moved :data:`_NEWTON_ROUNDS` times by Newton's
-    step on the squared distances summed over frames (one set of parameters for all frames, so the fit stays
-    one linear map of the samples)."""
-    controls, u = _fit_span(ring, i0, i1, ridge)
+    more than ``tolerance`` at some frame; an edge always fits (error 0; with a ``blend``, how far its blended
+    ends stray from the frames' vertices). Fitted at mean chord length (:func:`_fit_span`), then, if that
+    misses, at parameters moved :data:`_NEWTON_ROUNDS` times by Newton's step on the squared distances summed
+    over frames (one set of parameters for all frames, so the fit stays one linear map of the samples). With a
+    ``blend``, the cubics are fitted at its two frames and every frame's is their blend (:func:`_blend_fit`),
+    measured against every frame."""
+    if blend is not None:
+        controls, keys, u = _blend_fit(ring, i0, i1, ridge, blend)
+    else:
+        controls, u = _fit_span(ring, i0, i1, ridge)
     if i1 - i0 < 2:
-        return controls, 0.0
+        if blend is None:
+            return controls, 0.0
+        return controls, float(np.linalg.norm(controls[:, [0, 3]] - ring[:, [i0, i1]], axis=-1).max())
     tolerance *= _MEASURED_SHARE
     error = float(curve_error(controls, u, ring[:, i0:i1 + 1])[0].max())
     if error > tolerance:
+        ends = ring[[blend.first, blend.last]] if blend is not None else ring
+        moved = controls
         for _ in range(_NEWTON_ROUNDS):
-            u = _newton_step(ring[:, i0:i1 + 1], controls, u)
-            controls = _solve(ring, i0, i1, u, ridge)
-        error = min(error, float(curve_error(controls, u, ring[:, i0:i1 + 1])[0].max()))
+            if blend is not None:
+                u = _newton_step(ends[:, i0:i1 + 1], keys, u)
+                keys = _slid_keys(ends, i0, i1, u, ridge, _solve(ends, i0, i1, u, ridge))
+            else:
+                u = _newton_step(ring[:, i0:i1 + 1], moved, u)
+                moved = _solve(ring, i0, i1, u, ridge)
+        if blend is not None:
+            moved = blend.of(keys)
+        moved_error = float(curve_error(moved, u, ring[:, i0:i1 + 1])[0].max())
+        if moved_error < error:
+            controls, error = moved, moved_error
     return (controls, error) if error <= tolerance else None
 
 
@@ -177,26 +259,27 @@ def _newton_step(points: Array, controls: Array, u: Array) -> Array:
     return np.concatenate([[0.0], moved, [1.0]])
 
 
-def _longest_span(ring: Array, i0: int, stop: int, tolerance: float, ridge: float) -> tuple[int, Array, float]:
+def _longest_span(ring: Array, i0: int, stop: int, tolerance: float, ridge: float,
+                  blend: Blend | None = None) -> tuple[int, Array, float]:
     """The farthest vertex ``end`` (at most ``stop``) that one cubic from vertex ``i0`` reaches within
     ``tolerance`` at every frame, found by doubling steps and then halving the gap between the last end
     that fits and the first that fails (a span's fit nearly always worsens as it grows): ``end``, the
     span's control points ``(F, 4, 2)`` and its error. Taking the longest span from each break in turn
     needs far fewer cubics than splitting spans at their worst vertex."""
     end = i0 + 1
-    best = _span_fit(ring, i0, end, tolerance, ridge)
+    best = _span_fit(ring, i0, end, tolerance, ridge, blend)
     assert best is not None
     failed, step = stop + 1, 1
     while end < stop:
         candidate = min(end + step, stop)
-        found = _span_fit(ring, i0, candidate, tolerance, ridge)
+        found = _span_fit(ring, i0, candidate, tolerance, ridge, blend)
         if found is None:
             failed = candidate
             break
         end, best, step = candidate, found, 2 * step
     while failed - end > 1 and end < stop:
         middle = (end + failed) // 2
-        found = _span_fit(ring, i0, middle, tolerance, ridge)
+        found = _span_fit(ring, i0, middle, tolerance, ridge, blend)
         if found is None:
             failed = middle
         else:
@@ -221,7 +304,8 @@ def _corners(samples: Array, closed: bool) -> set[int]:
     return {int(i) for i in np.flatnonzero(turned)}
 
 
-def fit_curves(samples: Array, closed: bool, tolerance: float, ridge: float = RIDGE) -> tuple[NDArray[np.intp], Array, float]:
+def fit_curves(samples: Array, closed: bool, tolerance: float, ridge: float = RIDGE,
+               blend: Blend | None = None) -> tuple[NDArray[np.intp], Array, float]:
     """Cubic Bézier contours for the polylines ``samples (F, L, 2)`` within ``tolerance`` pixels of them
     at every frame (both ways): the break vertices ``(M,)`` (indices into L, increasing), the curves
     ``(F, M, 3, 2)`` (in control point, vertex, out control point) and the largest distance measured (0
@@ -233,9 +317,9 @@ def fit_curves(samples: Array, closed: bool, tolerance: float, ridge: float = RI
     ring = np.concatenate([samples, samples[:, :1]], axis=1) if closed else samples  # (F, L', 2)
     last = ring.shape[1] - 1
     breaks = sorted(_corners(samples, closed) | {0, last})
-    spans, worst = _spans(ring, breaks, tolerance, ridge)
+    spans, worst = _spans(ring, breaks, tolerance, ridge, blend)
     if closed and len(spans) < 3 and last >= 3:  # a closed contour takes at least three spans
-        spans, worst = _spans(ring, sorted(set(breaks) | {last // 3, (2 * last) // 3}), tolerance, ridge)
+        spans, worst = _spans(ring, sorted(set(breaks) | {last // 3, (2 * last) // 3}), tolerance, ridge, blend)
     order = sorted(spans)
     frames = samples.shape[0]
     heads = np.array([i0 for i0, _ in order], dtype=np.intp)

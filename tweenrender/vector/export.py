@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from .curves import RIDGE, STRAIGHT_RIDGE, distance_to_polyline, fit_curves, free_points, with_fixed_points
+from .curves import Blend, RIDGE, STRAIGHT_RIDGE, distance_to_polyline, fit_curves, free_points, with_fixed_points
 from .dash_keys import contour_dashes, dash_rows
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
@@ -274,19 +274,22 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         samples = [_with_ends(s, t, e, shut) for s, e, shut in zip(samples, ends, closed)]
         path_frames: tuple[int, ...] = (a, b)
         exact_tolerance = max_error * EXACT_SHARE - 2 * _ROUNDING  # the keyframes add nothing but rounding
-        fitted_curves = [_fewest_cubics(np.concatenate([s, e]), shut, exact_tolerance)
+        # every frame's cubics are the keys' blended by the segment's eased progress, as a player draws them,
+        # and are measured against every frame's exact in-between
+        blend = Blend(len(t), len(t) + 1, np.concatenate([t, [0.0, 1.0]]))
+        fitted_curves = [_fewest_cubics(np.concatenate([s, e]), shut, exact_tolerance, blend)
                          for s, e, shut in zip(samples, ends, closed)]
         curves = [c for _, c, _ in fitted_curves]  # (F + 2, M_i, 3, 2) each
         paths = tuple(c[-2:] for c in curves)
         ease = _timing(segment) or STRAIGHT
         eases: tuple[Handles, ...] = (ease,)
-        # each contour's eased chord must be within what the fit left of the bound (less the files' rounding) of
-        # its curves fitted at every frame (a contour may grow otherwise than straight); those that are keep
-        # their two keyframes
-        for index, (c, (_, _, error)) in enumerate(zip(curves, fitted_curves)):
-            fitted = c[:len(run_times)]
-            chord = c[-2] + t[:, None, None, None] * (c[-1] - c[-2])
-            if float(np.linalg.norm(chord - fitted, axis=-1).max()) <= max_error - error - 2 * _ROUNDING:
+        # the fit measured each blended cubic against every frame; a span that is one edge is the blend of its two
+        # vertices, so each contour's vertices moved along the eased chord must be within what the fit left of
+        # the bound (less the files' rounding) of their own at every frame (a contour may grow otherwise than
+        # straight); those that are keep their two keyframes
+        for index, (s, e, (_, _, error)) in enumerate(zip(samples, ends, fitted_curves)):
+            chord = e[0] + t[:, None, None] * (e[1] - e[0])
+            if float(np.linalg.norm(chord - s[:len(t)], axis=-1).max()) <= max_error - error - 2 * _ROUNDING:
                 exact_own[index] = (path_frames, paths[index], eases)
         if len(exact_own) < len(curves):
             paths = ()
@@ -357,11 +360,13 @@ def keyed_curves(samples: list[Array], closed: tuple[bool, ...], max_error: floa
     return keyed.frames, paths, keyed.handles(), (curves, free, errors)
 
 
-def _fewest_cubics(samples: Array, closed: bool, tolerance: float) -> tuple[NDArray[np.intp], Array, float]:
+def _fewest_cubics(samples: Array, closed: bool, tolerance: float,
+                   blend: Blend | None = None) -> tuple[NDArray[np.intp], Array, float]:
     """:func:`~.curves.fit_curves` of ``samples (F, L, 2)`` with the ridge that takes fewer cubics: the steady
     one, or the close one (a contour keyed only at its two keys needs no steadiness, and the close fit follows
-    the keys' own curves where their in-betweens are curves too)."""
-    fits = [fit_curves(samples, closed, tolerance, ridge) for ridge in (RIDGE, STRAIGHT_RIDGE)]
+    the keys' own curves where their in-betweens are curves too); with a ``blend``, every frame's cubics are
+    its two frames' blended (:class:`~.curves.Blend`)."""
+    fits = [fit_curves(samples, closed, tolerance, ridge, blend) for ridge in (RIDGE, STRAIGHT_RIDGE)]
     return min(fits, key=lambda fit: len(fit[0]))
 
 

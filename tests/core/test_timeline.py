@@ -102,3 +102,38 @@ def test_the_last_frame_is_the_last_key_when_it_falls_between_frames(tmp_path, d
     pictures = list(tr.frames(scene, fps=fps))
     assert len(pictures) == count
     assert np.array_equal(pictures[-1], tr.frame(scene, duration))
+
+
+def test_a_scenes_tracks_are_built_once_for_its_shapes_matching_and_rules(tmp_path,
+                                                                          monkeypatch: pytest.MonkeyPatch) -> None:
+    """A report asks for one scene's tracks a dozen times: they are built once (counted), again only for
+    other shapes, another matching or other rules, and are what building them anew gives."""
+    from dataclasses import replace
+
+    from tweenrender.core.timing import timeline
+
+    built: list[str] = []
+    original = timeline.build_track
+
+    def counted(shape, *args, **kwargs):  # type: ignore[no-untyped-def]
+        built.append(shape.name)
+        return original(shape, *args, **kwargs)
+
+    monkeypatch.setattr(timeline, "build_track", counted)
+    path = tmp_path / "scene.toml"
+    path.write_text(f'[[shape]]\nname = "s"\n[[shape.key]]\ntime = 0\npoints = {SQ}\n'
+                    f'[[shape.key]]\ntime = 1\npoints = {_shifted(3, 1)}\n')
+    scene = tr.load_scene(path)  # its shape drawn by the scene's method
+    first = timeline.tracks_of(scene)
+    assert timeline.tracks_of(scene) is first and built == ["s"]
+    assert timeline.tracks_of(replace(scene, view=(0.0, 0.0, 9.0, 9.0), fps=12.0)) is first and built == ["s"]
+    assert timeline.tracks_of(replace(scene, method="rigid")) is not first and built == ["s", "s"]
+    timeline.tracks_of(scene, replace(scene.matching, cost="sg"))
+    timeline.tracks_of(replace(scene, balance="spread"))
+    timeline.tracks_of(replace(scene, shapes=tuple(scene.shapes)[::-1]))  # an equal tuple, not the same one
+    assert built == ["s"] * 5
+    fresh = original(scene.shapes[0], scene.matching, unmatched=scene.unmatched,
+                     balance=scene.balance_of(scene.shapes[0]), method=scene.method_of(scene.shapes[0]))
+    (segment,), (again,) = first[0].segments, fresh.segments
+    assert np.array_equal(segment.pairs[0].k0, again.pairs[0].k0)
+    assert np.array_equal(segment.pairs[0].k1, again.pairs[0].k1)

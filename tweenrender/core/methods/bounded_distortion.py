@@ -135,18 +135,20 @@ class ShapeKeepingSolve:
             return np.array(self.mesh.p0)
         if s >= 1.0:
             return np.array(self.mesh.p1)
-        goal = self.targets(s)
+        target = self.targets(s)
+        goal = target
         x = self._solve(goal, convex)
-        floor = _FLOOR * np.linalg.svd(goal, compute_uv=False)[:, 1]  # a share of each target's least stretch
         for _ in range(_ROUNDS):
-            bad = self.good & (self._orientation(x) <= 0.0)
-            if not bad.any():
+            bad = np.flatnonzero(self.good & (self._orientation(x) <= 0.0))
+            if not len(bad):
                 return x
-            u, sigma, vt = np.linalg.svd(self._jacobians(x)[bad])  # only the triangles to project
+            # each 2 × 2 is decomposed alone, in a stack or not: only the triangles to project are
+            u, sigma, vt = np.linalg.svd(self._jacobians(x, bad))
             flipped = np.linalg.det(u) * np.linalg.det(vt) < 0
             u[flipped, :, 1] *= -1.0  # signed SVD: U, Vᵀ rotations, the smaller value carries the sign
             sigma[flipped, 1] *= -1.0
-            sigma = np.maximum(sigma, floor[bad][:, None])
+            floor = _FLOOR * np.linalg.svd(target[bad], compute_uv=False)[:, 1]  # of its target's least stretch
+            sigma = np.maximum(sigma, floor[:, None])
             goal = goal.copy()
             goal[bad] = (u * sigma[:, None, :]) @ vt
             x = self._solve(goal, convex)
@@ -158,10 +160,11 @@ class ShapeKeepingSolve:
                 return mixed
         return convex
 
-    def _jacobians(self, x: Array) -> Array:
-        t = self.tri
+    def _jacobians(self, x: Array, which: NDArray[np.intp]) -> Array:
+        """The Jacobians ``(K, 2, 2)`` of triangles ``which (K,)`` at vertices ``x (V, 2)``."""
+        t = self.tri[which]
         e = np.stack([x[t[:, 1]] - x[t[:, 0]], x[t[:, 2]] - x[t[:, 0]]], axis=-1)
-        return e @ self.inv0
+        return e @ self.inv0[which]
 
 
 def _identity(size: int):  # noqa: ANN202 - a scipy sparse matrix

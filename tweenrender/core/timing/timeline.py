@@ -582,6 +582,25 @@ def tracks_of(scene: Scene, matching: Matching | None = None) -> tuple[Track, ..
     A shape's breakdowns are made again here under the matching and balance in force (a command may
     put its own over the scene's), by the shape's own method: they are in-betweens of that correspondence."""
     matching = scene.matching if matching is None else matching
+    rules = tuple((scene.unmatched, scene.balance_of(shape), scene.method_of(shape)) for shape in scene.shapes)
+    for shapes, known, tracks in _BUILT:
+        if shapes is scene.shapes and known == (matching, rules):
+            return tracks
+    tracks = _build_tracks(scene, matching)
+    _BUILT.insert(0, (scene.shapes, (matching, rules), tracks))
+    del _BUILT[_TRACKS_KEPT:]
+    return tracks
+
+
+_TRACKS_KEPT = 4
+"""Scenes whose tracks :func:`tracks_of` keeps (a report asks for the same scene's a dozen times: its
+videos, sheet, pictures and table), by their shapes (frozen: the same tuple is the same drawing),
+matching and rules."""
+_BUILT: list[tuple[tuple[Shape, ...], tuple[object, ...], tuple[Track, ...]]] = []
+
+
+def _build_tracks(scene: Scene, matching: Matching) -> tuple[Track, ...]:
+    """:func:`tracks_of`, worked out."""
     tracks = []
     for shape in scene.shapes:
         rules = {"unmatched": scene.unmatched, "balance": scene.balance_of(shape)}

@@ -15,6 +15,8 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
+from .svg_clip_rule import rings_of
+
 __all__ = ["VALID_CHILDREN", "valid_clip_child", "region", "intersection"]
 
 VALID_CHILDREN = ("path", "polygon", "polyline", "rect", "circle", "ellipse", "line", "text")
@@ -77,20 +79,10 @@ def intersection(contours: Sequence[NDArray[np.float64]], rule: str,
     """Closed contours ``(N, 2)`` whose nonzero region (winding 0 or 1) is the region of ``contours`` under
     ``rule`` intersected with each of ``regions`` (closed contours, nonzero); [] when nothing is left."""
     import shapely
-    from shapely.geometry.polygon import orient
 
     kept = region(contours, rule)
     for other in regions:
         if kept.is_empty:
             break
         kept = shapely.intersection(kept, region(other, "nonzero"))
-    out: list[NDArray[np.float64]] = []
-    for polygon in shapely.get_parts(kept):
-        if polygon.geom_type != "Polygon" or polygon.is_empty:
-            continue
-        polygon = orient(polygon, 1.0)
-        for ring in (polygon.exterior, *polygon.interiors):
-            points = np.asarray(ring.coords, dtype=float)[:-1]
-            if len(points) >= 3:
-                out.append(points)
-    return out
+    return rings_of(kept)

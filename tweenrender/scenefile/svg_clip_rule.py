@@ -53,7 +53,6 @@ def evenodd_as_nonzero(contours: Sequence[NDArray[np.float64]]) -> list[NDArray[
     """Closed contours ``(N, 2)`` whose nonzero region (winding 0 or 1 everywhere) is the even-odd region
     of ``contours`` (each ``(N, 2)``, closed); each returned without its closing repeat."""
     import shapely
-    from shapely.geometry.polygon import orient
 
     region = None
     for points in contours:
@@ -64,6 +63,15 @@ def evenodd_as_nonzero(contours: Sequence[NDArray[np.float64]]) -> list[NDArray[
         region = piece if region is None else shapely.symmetric_difference(region, piece)
     if region is None:
         return []
+    return rings_of(region)
+
+
+def rings_of(region: object) -> list[NDArray[np.float64]]:
+    """The rings of a shapely region's polygons, each ``(N, 2)`` without its repeated last point, outers
+    counter-clockwise and holes clockwise (drawn nonzero, they fill the region)."""
+    import shapely
+    from shapely.geometry.polygon import orient
+
     out: list[NDArray[np.float64]] = []
     for polygon in shapely.get_parts(region):
         if polygon.geom_type != "Polygon" or polygon.is_empty:

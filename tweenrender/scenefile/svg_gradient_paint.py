@@ -8,7 +8,6 @@ fallback colour (``url(#g) green``) paints instead, or nothing without one.
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 
 import numpy as np
@@ -16,7 +15,7 @@ from numpy.typing import NDArray
 
 from ..model import Color, Paint
 from .svg_color import parse_color
-from .svg_document import Document
+from .svg_document import Document, opacity_value
 from .svg_gradients import _chain, gradient_ref, read_gradient
 from .svg_patterns import Content, is_pattern, mean_color, read_pattern
 
@@ -89,11 +88,4 @@ def _fallback(value: str, opacity: float) -> Color | None:
 
 def _opacity(text: str | None) -> float:
     """``fill-opacity`` or ``stroke-opacity``: a number or percentage clamped to [0, 1] (1 when unreadable)."""
-    if text is None:
-        return 1.0
-    text = text.strip()
-    try:
-        value = float(text[:-1]) / 100.0 if text.endswith("%") else float(text)
-    except ValueError:
-        return 1.0
-    return min(max(value, 0.0), 1.0) if math.isfinite(value) else 1.0
+    return 1.0 if text is None else opacity_value(text)

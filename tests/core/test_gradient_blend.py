@@ -54,3 +54,21 @@ def test_a_thousand_stops_are_each_blended() -> None:
     for (offset, colour), a, b in zip(blended.stops, c0, c1):
         expected = blend_colors(a, b, [0.4])[0]
         assert all(abs(p - q) <= 1 for p, q in zip(colour, expected)), offset  # a rounding apart at most
+
+
+@pytest.mark.parametrize("t", [0.0, 0.25, 0.5, 0.9, 1.0])
+@pytest.mark.parametrize("filled_first", [True, False])
+def test_a_gradient_coming_from_a_key_without_fill_fades_in_by_the_share_of_its_key(t: float,
+                                                                                   filled_first: bool) -> None:
+    """A key without fill is the other key's gradient at alpha 0 (as a plain colour blends with none): each
+    stop's alpha is its own times that key's share, so the fill comes in evenly (it was drawn whole from the
+    first in-between on: a pop)."""
+    colours = [(200, 10, 40, 255), (20, 30, 220, 128)]
+    g = _gradient([0.0, 1.0], colours)
+    filled, bare = Paint(fill=(0, 0, 0, 255), gradient=g), Paint(fill=None, stroke=(0, 0, 0, 255))
+    blended = blend_gradient(filled if filled_first else bare, bare if filled_first else filled, BOX, BOX, BOX, t)
+    share = 1.0 - t if filled_first else t
+    assert [o for o, _ in blended.stops] == [0.0, 1.0]
+    for (_, got), want in zip(blended.stops, colours):
+        assert tuple(got[:3]) == want[:3]
+        assert got[3] == round(want[3] * share)

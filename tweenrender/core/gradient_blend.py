@@ -4,8 +4,9 @@ A key's gradient is re-expressed relative to its element's bounding box at that 
 (``R = B⁻¹ · M``, with ``B`` the map of the unit square onto the box); an inbetween takes the
 blend of the two keys' relative gradients through its own bounding box, so the gradient moves,
 turns and stretches with the element and is each key's own gradient at its key. A plain colour
-blends as a gradient of that one colour; gradients of different kinds (linear, radial) or spreads
-take the nearer key's. Gradient strokes blend the same way, with the stroke's colour as a key's plain colour.
+blends as a gradient of that one colour, and a key without fill as the other key's gradient at alpha 0
+(each stop's alpha times the other key's share, as a plain colour blends with none); gradients of different
+kinds (linear, radial) or spreads take the nearer key's. Gradient strokes blend the same way, with the stroke's colour as a key's plain colour.
 A pattern is the nearer key's (a key without one: its plain colour), carried by the element's box likewise.
 """
 
@@ -74,8 +75,10 @@ def blend_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: floa
     if like is None:
         return None
     g0, g1 = _as_gradient(p0, like), _as_gradient(p1, like)
-    if g0 is None or g1 is None:  # no fill on one side: the other's gradient, fading by the fill's alpha
-        return g0 or g1
+    if g0 is None or g1 is None:  # no fill on one side: the other's gradient at that side's alpha 0
+        only, share = (g0, 1.0 - t) if g1 is None else (g1, t)
+        assert only is not None
+        return _faded(only, share)
     near, far = (g0, g1) if t < 0.5 else (g1, g0)
     near_box, far_box = (box0, box1) if t < 0.5 else (box1, box0)
     frames = _frame(near_box), _frame(far_box), _frame(box)
@@ -97,6 +100,15 @@ def blend_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: floa
     return Gradient(near.kind, geometry,
                     (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
                      float(placed[0, 2]), float(placed[1, 2])), stops, near.spread)  # type: ignore[arg-type]
+
+
+def _faded(gradient: Gradient, share: float) -> Gradient:
+    """``gradient`` with each stop's alpha times ``share`` (clamped to [0, 1]; an overshoot does not brighten it)."""
+    share = min(max(float(share), 0.0), 1.0)
+    if share == 1.0:
+        return gradient
+    stops = tuple((o, (r, g, b, int(round(a * share)))) for o, (r, g, b, a) in gradient.stops)
+    return Gradient(gradient.kind, gradient.geometry, gradient.matrix, stops, gradient.spread)  # type: ignore[arg-type]
 
 
 def blend_stroke_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: float) -> Gradient | None:

@@ -478,6 +478,24 @@ class _Walk:
             self.context = saved
 
 
+HREF_DEPTH = 8
+"""``href`` links followed at most from a paint server to the ones it inherits from."""
+
+
+def href_chain(ident: str, document: Document, tags: tuple[str, ...]) -> list[Node]:
+    """The node of ``ident`` and the nodes its ``href`` (or ``xlink:href``) leads to, nearest first, while each
+    is one of ``tags`` and none repeats (at most :data:`HREF_DEPTH` links followed)."""
+    chain: list[Node] = []
+    while ident and len(chain) <= HREF_DEPTH:
+        nodes = document.ids.get(ident)
+        if not nodes or nodes[0].tag not in tags or nodes[0] in chain:
+            break
+        chain.append(nodes[0])
+        href = nodes[0].attrs.get("href", nodes[0].attrs.get("xlink:href", "")).strip()
+        ident = href[1:] if href.startswith("#") else ""
+    return chain
+
+
 def opacity_value(text: str) -> float:
     """An ``opacity``: a number or a percentage (CSS Color 4), clamped to [0, 1]; 1 when unreadable."""
     text = text.strip()

@@ -15,13 +15,12 @@ from numpy.typing import NDArray
 from ..model import Color, Gradient
 from .svg_color import parse_color
 from .scene_limits import LIMITS
-from .svg_document import Document, Node, matrix, own_style
+from .svg_document import Document, Node, href_chain, matrix, own_style
 from .svg_flatten import Refusal
 from .svg_transform_origin import about_origin, parse_origin
 
 __all__ = ["read_gradient", "gradient_ref", "stop_color"]
 
-_DEPTH = 8  # href links followed at most
 _SHARED = ("gradientUnits", "gradientTransform", "spreadMethod", "transform-origin")  # taken across kinds
 # percentages: of the bounding box's unit square, or of the viewport in userSpaceOnUse
 _DEFAULTS = {"linearGradient": {"x1": "0%", "y1": "0%", "x2": "100%", "y2": "0%"},
@@ -39,15 +38,7 @@ def gradient_ref(value: str) -> str | None:
 
 def _chain(ident: str, document: Document) -> list[Node]:
     """The gradient node of ``ident`` and the nodes its ``href`` leads to, nearest first."""
-    chain: list[Node] = []
-    while ident and len(chain) <= _DEPTH:
-        nodes = document.ids.get(ident)
-        if not nodes or nodes[0].tag not in _DEFAULTS or nodes[0] in chain:
-            break
-        chain.append(nodes[0])
-        href = nodes[0].attrs.get("href", nodes[0].attrs.get("xlink:href", "")).strip()
-        ident = href[1:] if href.startswith("#") else ""
-    return chain
+    return href_chain(ident, document, tuple(_DEFAULTS))
 
 
 def _number(text: str, relative: float) -> float:

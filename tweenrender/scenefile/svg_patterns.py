@@ -18,14 +18,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..model import Color, MaskShape, Pattern
-from .svg_document import Document, Drawn, Node, matrix
+from .svg_document import Document, Drawn, Node, href_chain, matrix
 from .svg_flatten import Budget
 from .svg_transform_origin import about_origin, parse_origin
 from .svg_viewport import aspect_matrix, parse_view_box
 
 __all__ = ["Content", "is_pattern", "read_pattern", "mean_color", "pattern_content"]
 
-_DEPTH = 8  # href links followed at most
 
 Content = Callable[[Node, NDArray[np.float64]], tuple[MaskShape, ...]]
 """The shapes drawn by a pattern's children through a 3x3 map of their user units into the pattern's."""
@@ -33,15 +32,7 @@ Content = Callable[[Node, NDArray[np.float64]], tuple[MaskShape, ...]]
 
 def _chain(ident: str, document: Document) -> list[Node]:
     """The ``<pattern>`` of ``ident`` and the patterns its ``href`` leads to, nearest first."""
-    chain: list[Node] = []
-    while ident and len(chain) <= _DEPTH:
-        nodes = document.ids.get(ident)
-        if not nodes or nodes[0].tag != "pattern" or nodes[0] in chain:
-            break
-        chain.append(nodes[0])
-        href = nodes[0].attrs.get("href", nodes[0].attrs.get("xlink:href", "")).strip()
-        ident = href[1:] if href.startswith("#") else ""
-    return chain
+    return href_chain(ident, document, ("pattern",))
 
 
 def is_pattern(ident: str, document: Document) -> bool:

@@ -286,3 +286,25 @@ def test_each_t_is_solved_once_whatever_set_of_t_asks_for_it(monkeypatch: pytest
     assert sorted(solves) == sorted(set(T.tolist()) - {0.25, 0.5})
     assert np.array_equal(sweep[list(T).index(0.5)], alone[0])
     assert np.array_equal(sweep[list(T).index(0.25)], alone[1])
+
+
+def _square_ring(centre: tuple[float, float], radius: float, corners: int, clockwise: bool) -> np.ndarray:
+    angle = np.linspace(0.0, 2.0 * np.pi, corners, endpoint=False) + np.pi / 4
+    ring = np.column_stack([centre[0] + radius * np.cos(angle), centre[1] + radius * np.sin(angle)])
+    return ring[::-1].copy() if clockwise else ring
+
+
+@pytest.mark.parametrize("order", [(1, 2, 3, 0), (2, 3, 0, 1), (1, 0, 3, 2), (3, 2, 1, 0)])
+def test_holes_that_trade_places_are_meshed_through_bridges_of_new_points(order: tuple[int, ...]) -> None:
+    # four holes in an octagon, each moving to another's place: no edge from a hole to another boundary is
+    # an edge of both keys' triangulations, so bridges must be made of new points threaded through triangles
+    places = [(-4.0, -4.0), (4.0, -4.0), (4.0, 4.0), (-4.0, 4.0)]
+    outline = _square_ring((0.0, 0.0), 10.0, 8, clockwise=False)
+    k0s = [outline] + [_square_ring(p, 1.0, 4, clockwise=True) for p in places]
+    k1s = [outline] + [_square_ring(places[j], 1.0, 4, clockwise=True) for j in order]
+    closed = [True] * 5
+    mesh = injective_mesh(k0s, k1s, closed)
+    assert mesh is not None, "simple keys that nest alike must be meshed"
+    assert _exact_orientations(mesh.p0, mesh.triangles) == [1] * len(mesh.triangles)
+    assert _exact_orientations(mesh.p1, mesh.triangles) == [1] * len(mesh.triangles)
+    _check_never_tangles(k0s, k1s, closed, injective_contours(k0s, k1s, closed, T))

@@ -448,12 +448,11 @@ def _chain(mesh: _Triangulation, u: int, v: int, face: int) -> list[tuple[str, t
         return None
     path: list[tuple[int, tuple[int, int] | None]] = []
     t: int | None = end
-    crossing: tuple[int, int] | None = None
     while t is not None:
-        path.append((t, crossing))
         step = back[t]
-        t, crossing = (step[0], step[1]) if step is not None else (None, None)
-    path.reverse()  # (triangle, edge crossed to reach it)
+        path.append((t, step[1] if step is not None else None))
+        t = step[0] if step is not None else None
+    path.reverse()  # (triangle, edge crossed to reach it): the first is entered by none
     chain: list[tuple[str, tuple[float, float], object]] = []
     for k, (t, entered) in enumerate(path):
         if entered is not None:

@@ -102,5 +102,6 @@ def test_a_key_of_subnormal_size_draws_finite_outlines(tmp_path, method: str) ->
         for time in np.linspace(0.0, 1.0, 9):
             drawn = api.outlines(scene, float(time), method=method)
             assert drawn and all(np.isfinite(c).all() for c in drawn)
-            # every vertex stays within the keys' box, [0, 1e-300]²
-            assert all((np.abs(c) <= 1e-300).all() for c in drawn)
+            # nothing blows up: every vertex stays near the keys' box, [0, 1e-300]² (injective paths may
+            # bulge a little past it, as they do at unit size)
+            assert all((c >= -0.25e-300).all() and (c <= 1.25e-300).all() for c in drawn)

@@ -434,3 +434,15 @@ def test_kernels_run_without_a_cache_folder() -> None:
                           timeout=300)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "4"
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1e-160, 1e150])
+def test_the_least_distance_pairing_does_not_depend_on_the_drawings_scale(scale: float) -> None:
+    # the summed distances of every pairing scale by the same factor, so the least one is the same
+    # whatever the unit; squares of sub-1e-154 distances underflow to zero unless the search works at unit size
+    triangle = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+    notched = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.5, 0.5]])
+    unit = correspond(triangle, notched)
+    scaled = correspond(triangle * scale, notched * scale)
+    assert scaled.pairs.tolist() == unit.pairs.tolist()
+    assert scaled.work == pytest.approx(unit.work * scale, rel=1e-9)

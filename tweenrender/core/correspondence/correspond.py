@@ -258,6 +258,10 @@ def _search(a: NDArray[np.float64], b: NDArray[np.float64], matching: Matching, 
     # step of -1 in b when b winds the other way; walk[0] = 0 either way.
     walk = (-np.arange(len(b))) % len(b) if backwards else np.arange(len(b))
     walked_b = np.ascontiguousarray(b[walk])
+    work_a, work_b = a, b  # the work is told in the drawing's units
+    if matching.cost == "distance":  # searched at unit size: squared distances neither underflow nor overflow
+        unit = float(max(np.abs(a).max(), np.abs(b).max())) or 1.0
+        a, walked_b = a / unit, walked_b / unit
     small = matching.cost == "distance" and not exhaustive and _small_dtw.takes(len(a), len(b))
     kernels = _small_dtw if small else _kernels()
     if matching.cost == "distance" and not (exhaustive or small):
@@ -279,7 +283,7 @@ def _search(a: NDArray[np.float64], b: NDArray[np.float64], matching: Matching, 
             nodes = sg_search(*tables).nodes
     pairs = _pairs_from_nodes(nodes, len(a), walk)
     pairs.flags.writeable = False
-    return Correspondence(pairs, _aligned_work(a, b, pairs, matching), backwards)
+    return Correspondence(pairs, _aligned_work(work_a, work_b, pairs, matching), backwards)
 
 
 def _pairs_from_nodes(nodes: NDArray[np.int64], m: int, walk: NDArray[np.intp]) -> Pairs:

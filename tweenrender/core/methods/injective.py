@@ -48,7 +48,7 @@ from ..geometry import best_fit_rotation, centroid, rotate
 from .paths import as_times, rigid
 from ..memo import Remembered
 
-__all__ = ["injective", "injective_contours", "injective_fallback", "injective_mesh", "mean_value_weights"]
+__all__ = ["carried_points", "injective", "injective_contours", "injective_fallback", "injective_mesh", "mean_value_weights"]
 
 Array = NDArray[np.float64]
 
@@ -294,6 +294,43 @@ def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Seque
         return found
 
     return [frames.copy() for frames in _evaluated.get(key, evaluated)]  # the caller's own: they may be written
+
+
+def carried_points(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool], points: ArrayLike,
+                   side: int) -> Array | None:
+    """Where ``points (P, 2)`` of key ``side`` (0 or 1) are in the other key by the compatible mesh of these
+    contours (:func:`injective_contours`): each point keeps its barycentric place in its triangle, so it
+    keeps its place among the contours (inside the same ones). ``(P, 2)``; None where the contours have no
+    such mesh; a point outside the frame keeps its place."""
+    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
+    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
+    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
+    picked = [c for c, shut in enumerate(closed) if _meshable(k0[cuts[c]:cuts[c + 1]], k1[cuts[c]:cuts[c + 1]], shut)]
+    if not picked or not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
+        return None
+    m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
+    try:
+        paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
+    except CompatibleError:
+        return None
+    mesh = paths.mesh
+    here, there = (mesh.p0, mesh.p1) if side == 0 else (mesh.p1, mesh.p0)
+    q = np.asarray(points, dtype=np.float64).reshape(-1, 2) / paths.scale
+    q = q - paths.c0 if side == 0 else rotate(q - paths.c1, -paths.phi)
+    a, b, c = (here[mesh.triangles[:, k]] for k in range(3))
+    det = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])  # (F,)
+    rel = q[:, None, :] - a[None]  # (P, F, 2)
+    u = (rel[..., 0] * (c[:, 1] - a[:, 1]) - rel[..., 1] * (c[:, 0] - a[:, 0])) / det
+    v = ((b[:, 0] - a[:, 0]) * rel[..., 1] - (b[:, 1] - a[:, 1]) * rel[..., 0]) / det
+    w = 1.0 - u - v
+    worst = np.minimum(np.minimum(u, v), w)  # (P, F): ≥ 0 inside
+    tri = np.argmax(worst, axis=1)
+    rows = np.arange(len(q))
+    a2, b2, c2 = (there[mesh.triangles[tri, k]] for k in range(3))
+    out = w[rows, tri, None] * a2 + u[rows, tri, None] * b2 + v[rows, tri, None] * c2
+    out = np.where((worst[rows, tri] >= -1e-9)[:, None], out, q)
+    out = rotate(out, paths.phi) + paths.c1 if side == 0 else out + paths.c0  # back to the other key's frame
+    return out * paths.scale
 
 
 def injective_fallback(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> str | None:

@@ -261,6 +261,7 @@ class AutoChoice:
     method: str  # "nonlinear" | "linear" | "injective", or "jointed" when joints cut the shape into bodies
     why: str  # one line in words
     bodies: tuple[str, ...]  # "nonlinear" | "linear" per local body (joints.bodies order)
+    holds: bool = False  # injective paths holding the contours without a partner in their mesh
 
     @property
     def balance(self) -> str | None:

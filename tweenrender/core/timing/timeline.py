@@ -48,6 +48,7 @@ if TYPE_CHECKING:
     from ..methods.qcurves import AutoChoice
 from ..methods.registry import interpolate, per_outline
 from ..dashes import start_share
+from ..memo import Remembered
 from ..paint import blend_paints
 from .steering import arc_corrections, bend, extra_turn, spin, unturned, whole_turns_to
 
@@ -256,10 +257,59 @@ def segment_choice(segment: Segment) -> AutoChoice | None:
         if not pair.closed:
             choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False)
             if choice.method in ("linear", "injective"):
-                return choice
-        return auto_choice(pair.k0, pair.k1, segment.joints)
-    return auto_choice_contours([p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
-                                [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed])
+                return _with_alone(segment, choice)
+        return _with_alone(segment, auto_choice(pair.k0, pair.k1, segment.joints))
+    return _with_alone(segment, auto_choice_contours(
+        [p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
+        [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed]))
+
+
+def _with_alone(segment: Segment, choice: AutoChoice) -> AutoChoice:
+    """``choice`` (made over the moving contours) measured again with the contours without a partner, as
+    drawn (maths §5.16): where they tangle with the moving ones, the injective paths holding them in one
+    mesh (:func:`_meshed_alone`) are taken instead when they tangle at fewer t and stray at most
+    :data:`.qcurves.STRAY_LIMIT` more (a mesh that holds everything may carry a piece far: a tangle
+    for a sweep is no gain)."""
+    if segment.joints or choice.method == "jointed" or not _meshed_alone(segment):
+        return choice
+    return _alone_choices.get(_digest(segment, "choice") + repr(choice).encode(),
+                              lambda: _alone_measured(segment, choice))
+
+
+_alone_choices: Remembered[AutoChoice] = Remembered(256)
+
+
+def _alone_measured(segment: Segment, choice: AutoChoice) -> AutoChoice:
+    from ..methods.qcurves import QUALITY_T, STRAY_LIMIT, AutoChoice, _candidate_paths, _quality
+
+    pairs = segment.pairs
+    moving = [i for i, p in enumerate(pairs) if p.moving]
+    held = _meshed_alone(segment)
+    k0s, k1s = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving]
+    shut = [pairs[i].closed for i in moving]
+    if choice.method == "injective":
+        own = _candidate_paths("injective", k0s, k1s, shut, QUALITY_T)
+    else:
+        own = _candidate_paths(choice.method if choice.method in ("linear", "nonlinear") else "linear",
+                               k0s, k1s, shut, QUALITY_T)
+    growths = growths_of(segment, "linear" if choice.method == "linear" else choice.method)
+    alone = [i for i, _, _ in held]
+    grown = [scaled(growths[i].point, pairs[i].k1 if growths[i].grows else pairs[i].k0,  # type: ignore[union-attr]
+                    growth_scale(growths[i], QUALITY_T)) for i in alone]  # type: ignore[arg-type]
+    every0 = k0s + [k0 for _, k0, _ in held]
+    every1 = k1s + [k1 for _, _, k1 in held]
+    closed = shut + [pairs[i].closed for i in alone]
+    first = _quality(own + grown, every0, every1, closed)
+    if first[0] == 0:
+        return choice
+    from ..methods.injective import injective_contours
+
+    second = _quality(injective_contours(every0, every1, closed, QUALITY_T), every0, every1, closed)
+    measures = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
+                f"stray {first[1]:.3f}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}")
+    if second[0] < first[0] and second[1] <= first[1] + STRAY_LIMIT:
+        return AutoChoice("injective", f"{choice.why}; {measures}", ("injective",), holds=True)
+    return replace(choice, why=f"{choice.why}; {measures}")
 
 
 def segment_method(segment: Segment, method: str) -> str:
@@ -267,8 +317,11 @@ def segment_method(segment: Segment, method: str) -> str:
     (:func:`segment_choice`) when it has several or one open stroke that auto draws straight or
     injective; a one-outline segment keeps ``auto``, which decides per body."""
     moving = [p for p in segment.pairs if p.moving]
-    if method != "auto" or not moving or (len(moving) == 1 and moving[0].closed):
+    if method != "auto" or not moving:
         return method
+    if len(moving) == 1 and moving[0].closed:  # auto decides per body, unless it holds contours without a partner
+        held = segment_choice(segment)
+        return "injective" if held is not None and held.holds else method
     choice = segment_choice(segment)
     if len(moving) == 1 and choice is not None and choice.method not in ("linear", "injective"):
         return method
@@ -323,7 +376,8 @@ def method_paths(segment: Segment, t: Array, method: str) -> list[Array]:
     point, clear of the moving ones (:mod:`.clearance`, :mod:`.appear`), the fading ones keep their shape.
     """
     frames = _moving_paths(segment, t, method)
-    growths = growths_of(segment, method)
+    pending = any(f is None and not p.fades for f, p in zip(frames, segment.pairs))
+    growths = growths_of(segment, method) if pending else []
     for i, pair in enumerate(segment.pairs):
         if frames[i] is None and pair.fades:
             frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
@@ -406,13 +460,22 @@ def _moving_paths(segment: Segment, t: Array, method: str) -> list[Array | None]
             pair = pairs[i]
             own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
             frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
-    elif chosen == "injective" and not single:
-        # one mesh for every moving contour, so holes stay inside their outlines
+    elif chosen == "injective" and (not single or held_in_mesh(segment, method)):
+        # one mesh for every moving contour, so holes stay inside their outlines, and for those
+        # without a partner where they have room in it
         from ..methods.injective import injective_contours
 
-        found = injective_contours([pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving],
-                                   [pairs[i].closed for i in moving], t)
+        holding = held_in_mesh(segment, method)
+        held = [h for h in _meshed_alone(segment) if h[0] in holding]
+        found = injective_contours([pairs[i].k0 for i in moving] + [k0 for _, k0, _ in held],
+                                   [pairs[i].k1 for i in moving] + [k1 for _, _, k1 in held],
+                                   [pairs[i].closed for i in moving] + [pairs[i].closed for i, _, _ in held], t)
         for i, part in zip(moving, found):
+            frames[i] = part
+        for (i, k0, k1), part in zip(held, found[len(moving):]):
+            grows = pairs[i].source[0] is None
+            middle = (k0 if grows else k1).mean(axis=0)
+            part[t <= 0.0 if grows else t >= 1.0] = middle  # a point at the key that lacks it
             frames[i] = part
     elif method == "auto" and chosen == "linear" and not single:
         # auto's straight paths: each closed contour's copies spread along its edges first
@@ -428,6 +491,57 @@ def _moving_paths(segment: Segment, t: Array, method: str) -> list[Array | None]
         for i, part in zip(moving, np.split(together, cuts, axis=1)):
             frames[i] = part
     return frames
+
+
+def _alone(segment: Segment) -> list[int]:
+    """The pairs that grow or shrink (not fading)."""
+    return [i for i, p in enumerate(segment.pairs) if not p.moving and not p.fades]
+
+
+def held_in_mesh(segment: Segment, method: str) -> frozenset[int]:
+    """The growing and shrinking pairs that take ``method``'s paths with the moving ones: under injective
+    paths, those the mesh holds (:func:`_meshed_alone`); else none. ``auto`` holds them where it chose
+    injective paths for them (:func:`_with_alone`)."""
+    if not _alone(segment) or segment_method(segment, method) != "injective":
+        return frozenset()
+    if method == "auto" and not getattr(segment_choice(segment), "holds", False):
+        return frozenset()
+    return frozenset(i for i, _, _ in _meshed_alone(segment))
+
+
+def _meshed_alone(segment: Segment) -> list[tuple[int, Array, Array]]:
+    """The growing and shrinking pairs the injective mesh holds, as (pair index, key 0, key 1) with
+    their stand-ins (:mod:`.methods.stand_ins`) in the key that lacks them: all of them where each has
+    room and the mesh with them exists, else none (they grow and shrink clear of the mesh,
+    :func:`growths_of`); none in a staggered or turned segment (each pair on its own timing, or the
+    moving ones turned apart), nor where nothing moves (a whole element comes from its centre)."""
+    if not _alone(segment) or segment.stagger > 0 or segment.spin != 0.0 or all(not p.moving for p in segment.pairs):
+        return []
+    return _held.get(_digest(segment, "held"), lambda: _stand_ins_held(segment))
+
+
+_held: Remembered[list[tuple[int, Array, Array]]] = Remembered(64)
+
+
+def _stand_ins_held(segment: Segment) -> list[tuple[int, Array, Array]]:
+    from ..methods.injective import carried_points, injective_fallback
+    from ..methods.stand_ins import stand_ins
+
+    pairs = segment.pairs
+    alone = _alone(segment)
+    moving = [i for i, p in enumerate(pairs) if p.moving]
+    grows = [pairs[i].source[0] is None for i in alone]
+    drawn = [pairs[i].k1 if g else pairs[i].k0 for i, g in zip(alone, grows)]
+    k0s, k1s, shut = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving], [pairs[i].closed for i in moving]
+    found = stand_ins(list(zip(k0s, k1s)), shut, drawn, [pairs[i].closed for i in alone], grows,
+                      lambda points, key: carried_points(k0s, k1s, shut, points, key))
+    if found is None:
+        return []
+    held = [(i, s if g else d, d if g else s) for i, g, d, s in zip(alone, grows, drawn, found)]
+    every0, every1 = k0s + [k0 for _, k0, _ in held], k1s + [k1 for _, _, k1 in held]
+    if injective_fallback(every0, every1, shut + [pairs[i].closed for i, _, _ in held]):
+        return []
+    return held
 
 
 def staggered_paths(segment: Segment, times: Array, method: str) -> list[Array]:
@@ -458,7 +572,8 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
     fading = any(p.fades for p in pairs)
     sides = tuple((-1 if p.source[1] is None else 1) if p.fades else 0 for p in pairs) if fading else ()
     growing = [i for i, p in enumerate(pairs) if not p.moving and not p.fades]
-    growths = growths_of(segment, method) if growing else []
+    held = held_in_mesh(segment, method) if growing else frozenset()
+    growths = growths_of(segment, method) if set(growing) - held else [None] * len(pairs)
     whole = bool(growing) and not all(segment.shown)  # an element growing from (shrinking to) a hidden key
     p0, p1 = segment.paints
     c0, c1 = (segment.ends[0].clips, segment.ends[1].clips) if segment.ends is not None else ((), ())
@@ -509,12 +624,28 @@ def evaluate_segment(segment: Segment, t: Array, method: str, frames: list[Array
         elif growing:
             share = [1.0] * len(pairs)
             for i in growing:
-                share[i] = float(growth_scale(growths[i], np.array([x]))[0])  # type: ignore[arg-type]
+                if i in held:  # its size in the mesh against its size as drawn
+                    share[i] = _size_share(contours[i], pairs[i], closed[i])
+                else:
+                    share[i] = float(growth_scale(growths[i], np.array([x]))[0])  # type: ignore[arg-type]
             widths = tuple(share)
         starts = _dash_starts(segment, contours, x) if paint.dash is not None else ()
         out.append(ShapeAt(contours, closed, paint, visible and paint.visible, x if fading else None, sides,
                            flips, drawn_as, widths, clips, masks, starts))
     return out
+
+
+def _size_share(contour: Points, pair: Pair, closed: bool) -> float:
+    """How large ``contour (L, 2)`` of a growing or shrinking ``pair`` is against its drawn key: the square
+    root of their areas' ratio (closed), their lengths' (open), within [0, 1]."""
+    drawn = np.asarray(pair.k1 if pair.source[0] is None else pair.k0)
+    if closed and len(drawn) >= 3:
+        whole, now = abs(float(signed_area(drawn))), abs(float(signed_area(np.asarray(contour))))
+        ratio = math.sqrt(now / whole) if whole > 0 else 0.0
+    else:
+        whole, now = float(np.hypot(*np.diff(drawn, axis=0).T).sum()), float(np.hypot(*np.diff(contour, axis=0).T).sum())
+        ratio = now / whole if whole > 0 else 0.0
+    return min(max(ratio, 0.0), 1.0)
 
 
 def _dash_starts(segment: Segment, contours: tuple[Points, ...], t: float) -> tuple[float, ...]:

@@ -373,3 +373,34 @@ def test_a_piece_an_outline_sweeps_over_at_once_is_joined_to_it_not_crossed(tmp_
     steps = np.abs(np.diff(areas))
     assert steps.max() <= 3.0 * np.median(steps)
     assert areas[0] == pytest.approx(4.8) and areas[-1] == pytest.approx(40.0)
+
+
+def test_injective_paths_carry_a_new_hole_in_their_mesh_over_the_whole_segment(tmp_path: Path) -> None:
+    """A big hole crosses its outline from left to right where a small new hole appears. The injective
+    paths hold the new hole in their mesh (a stand-in in the first key), so it grows from the first
+    in-between on and the moving hole goes round it: checked with shapely, no two contours meet at any
+    in-between, the new hole is a point at the first key and exactly its drawing at the last."""
+    import shapely
+
+    outline = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]]
+    moving0 = [[1.0, 4.0], [1.0, 6.0], [3.0, 6.0], [3.0, 4.0]]
+    moving1 = [[7.0, 4.0], [7.0, 6.0], [9.0, 6.0], [9.0, 4.0]]
+    new = [[4.75, 4.75], [4.75, 5.25], [5.25, 5.25], [5.25, 4.75]]
+    text = ('[[shape]]\nname = "s"\nmethod = "injective"\nfill = "#3b6fd8"\n'
+            f'[[shape.key]]\ntime = 0\ncontours = {[outline, moving0]}\n'
+            f'[[shape.key]]\ntime = 1\ncontours = {[outline, moving1, new]}\n')
+    scene = tr.load_scene(write_scene(tmp_path, text))
+    small = area(np.asarray(new))
+    grown = []
+    for t in np.linspace(0.0, 1.0, 25):
+        (at,) = drawn(scene, float(t))
+        rings = [np.asarray(c) for c in at.contours]
+        smallest = min(rings, key=lambda r: area(r) if len(r) >= 3 else 0.0)
+        grown.append(area(smallest) if len(smallest) >= 3 else 0.0)
+        if 0.0 < t < 1.0:
+            live = [r for r in rings if len(r) >= 3 and area(r) > 1e-12]
+            assert len(live) == 3, t
+            for i, j in itertools.combinations(range(3), 2):
+                assert not shapely.LinearRing(live[i]).intersects(shapely.LinearRing(live[j])), (t, i, j)
+    assert grown[0] == 0.0 and grown[-1] == pytest.approx(small)
+    assert all(0.0 < g for g in grown[1:]), "it grows from the first in-between on, not once the hole has passed"

@@ -754,7 +754,8 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
     pairs, correspondence and hints (maths §5.15); the halves share its total turn as the breakdowns
     share its way; the first key's arcs are in the breakdowns (made with them), not bent in again.
     Given the ``method`` it is drawn with, a contour without a partner that has no room to grow over
-    the whole segment (:func:`growths_of`) is joined to a neighbour instead (:mod:`.bridges`).
+    the whole segment (:func:`growths_of`) is joined to a neighbour instead (:mod:`.bridges`), unless
+    ``method`` is injective and its mesh holds it (:func:`held_in_mesh`).
     """
     keys = shape.keys
     if shape.equal_counts is not None and shape.equal_counts != matching.equal_counts:
@@ -777,7 +778,10 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
             # all of them, or only the pieces, or only the holes
             plain = _join_measures(pairs, first, last, method, shape.stagger)
             best: tuple[tuple[int, float], tuple[Pair, ...]] | None = None
-            for part in _join_choices(crowded, first, last):
+            # injective paths that hold them in their mesh need no slit (which has no mesh); auto takes the
+            # join where it measures as well (a mesh that holds everything may carry shapes far)
+            held = method == "injective" and held_in_mesh(_probe(pairs, first, last, shape.stagger), method)
+            for part in [] if held else _join_choices(crowded, first, last):
                 joined = _pairs(first, last, shape.fill_rule, matching, rule, balance, links,
                                 (shape.cap, shape.join), part)
                 found = _join_measures(joined, first, last, method, shape.stagger)

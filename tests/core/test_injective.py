@@ -308,3 +308,20 @@ def test_holes_that_trade_places_are_meshed_through_bridges_of_new_points(order:
     assert _exact_orientations(mesh.p0, mesh.triangles) == [1] * len(mesh.triangles)
     assert _exact_orientations(mesh.p1, mesh.triangles) == [1] * len(mesh.triangles)
     _check_never_tangles(k0s, k1s, closed, injective_contours(k0s, k1s, closed, T))
+
+
+def test_pieces_wound_either_way_keep_the_area_they_enclose() -> None:
+    # two pieces of one element (nonzero fill draws both whichever way each winds): one anticlockwise, one
+    # clockwise that grows from a speck to the other's size; their in-betweens must enclose about the keys'
+    # interpolated area, not a signed sum in which the clockwise piece cancels the other
+    big0, big1 = _square_ring((0.0, 0.0), 2.0, 4, clockwise=False), _square_ring((1.0, 0.0), 2.5, 4, clockwise=False)
+    small0, small1 = _square_ring((6.0, 0.0), 0.01, 4, clockwise=True), _square_ring((7.0, 1.0), 2.5, 4, clockwise=True)
+    frames = injective_contours([big0, small0], [big1, small1], [True, True], T)
+
+    def enclosed(ring: np.ndarray) -> float:
+        x, y = ring[:, 0], ring[:, 1]
+        return abs(0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
+
+    for k, t in enumerate(T):
+        expected = (1 - t) * (enclosed(big0) + enclosed(small0)) + t * (enclosed(big1) + enclosed(small1))
+        assert enclosed(frames[0][k]) + enclosed(frames[1][k]) == pytest.approx(expected, rel=0.02), t

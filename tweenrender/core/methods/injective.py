@@ -42,6 +42,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..balance import coincident_runs, spread
+from ..contours import roles
 from .bounded_distortion import ShapeKeepingSolve, material_triangles
 from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
 from ..geometry import best_fit_rotation, centroid, rotate
@@ -131,6 +132,11 @@ class _Paths:
         self.n = len(k0)
         self.frame = mesh.p0[mesh.frame]
         self.cuts, self.closed = list(cuts), list(closed)
+        # a closed contour's area counts for its region, minus where it is a hole (inside an odd number of
+        # others, as the mesh keeps in both keys), whichever way it winds
+        shut = [c for c, closed_c in enumerate(self.closed) if closed_c and cuts[c + 1] - cuts[c] >= 3]
+        kinds = roles([a0[cuts[c]:cuts[c + 1]] for c in shut], [True] * len(shut))
+        self.signs = {c: (-1.0 if kind == "hole" else 1.0) for c, kind in zip(shut, kinds)}
         self.areas = (self._area(a0), self._area(a1))
         self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed))
         self._solved: dict[float, Array] = {}  # each t's frame before its turn, by t: the same for any other t
@@ -160,12 +166,12 @@ class _Paths:
         return found
 
     def _area(self, points: Array) -> float:
-        """Signed area of the closed contours of ``points (N, 2)`` together (holes wound the other way count less)."""
+        """The area the closed contours of ``points (N, 2)`` enclose, holes taken away (each contour's area
+        unsigned, counted by whether it is a hole): contours wound either way count alike."""
         total = 0.0
-        for start, end, shut in zip(self.cuts, self.cuts[1:], self.closed):
-            if shut:
-                x, y = points[start:end, 0], points[start:end, 1]
-                total += 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+        for c, sign in self.signs.items():
+            x, y = points[self.cuts[c]:self.cuts[c + 1], 0], points[self.cuts[c]:self.cuts[c + 1], 1]
+            total += sign * abs(0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
         return total
 
     def _sized(self, x: Array, s: float) -> Array:

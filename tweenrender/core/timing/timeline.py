@@ -30,7 +30,7 @@ from numpy.typing import NDArray
 from ...errors import GeometryError
 from ...model import Contour, Key, Matching, Paint, Points, Scene, Shape
 from ..contours import anchors, keep_nesting, pair_contours, roles
-from ..tangles import contact_times
+from ..tangles import contact_times, proper_crossings
 from ..correspondence.correspond import Correspondence, correspond, correspond_open
 from ..balance import spread
 from .appear import scaled, width_share
@@ -242,11 +242,12 @@ class Track:
         return [shape.contours for shape in self.at(times, method)]
 
 
-def segment_choice(segment: Segment) -> AutoChoice | None:
+def segment_choice(segment: Segment, hold: bool = True) -> AutoChoice | None:
     """What ``auto`` draws for a segment's moving pairs, and why (None where nothing moves): one closed
     outline decides per body; one open stroke takes straight or injective paths where auto would (its
     crossings read as a stroke's), else what auto does with it as an outline; several contours are
-    chosen over together (maths §5.16)."""
+    chosen over together (maths §5.16); with ``hold``, measured again with the contours without a partner
+    (:func:`_with_alone`)."""
     from ..methods.qcurves import auto_choice, auto_choice_contours
 
     moving = [p for p in segment.pairs if p.moving]
@@ -257,29 +258,51 @@ def segment_choice(segment: Segment) -> AutoChoice | None:
         if not pair.closed:
             choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False)
             if choice.method in ("linear", "injective"):
-                return _with_alone(segment, choice)
-        return _with_alone(segment, auto_choice(pair.k0, pair.k1, segment.joints))
-    return _with_alone(segment, auto_choice_contours(
+                return _held_choice(segment, hold, choice)
+        return _held_choice(segment, hold, auto_choice(pair.k0, pair.k1, segment.joints))
+    return _held_choice(segment, hold, auto_choice_contours(
         [p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
         [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed]))
+
+
+def _held_choice(segment: Segment, hold: bool, choice: AutoChoice) -> AutoChoice:
+    return _with_alone(segment, choice) if hold else choice
 
 
 def _with_alone(segment: Segment, choice: AutoChoice) -> AutoChoice:
     """``choice`` (made over the moving contours) measured again with the contours without a partner, as
     drawn (maths §5.16): where they tangle with the moving ones, the injective paths holding them in one
-    mesh (:func:`_meshed_alone`) are taken instead when they tangle at fewer t and stray at most
+    mesh (:func:`_meshed_alone`) are taken instead when they tangle at fewer t, stray at most
     :data:`.qcurves.STRAY_LIMIT` more (a mesh that holds everything may carry a piece far: a tangle
-    for a sweep is no gain)."""
+    for a sweep is no gain) and change the area evenly (no step over :data:`EVEN` × the median: a
+    mesh grows a contour by its triangles' stretch, not its area)."""
+    return _alone_measures(segment, choice)[0]
+
+
+def _alone_measures(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
+    """:func:`_with_alone`'s choice, and how holding measured (tangled t, stray) where it was measured."""
     if segment.joints or choice.method == "jointed" or not _meshed_alone(segment):
-        return choice
+        return choice, None
     return _alone_choices.get(_digest(segment, "choice") + repr(choice).encode(),
                               lambda: _alone_measured(segment, choice))
 
 
-_alone_choices: Remembered[AutoChoice] = Remembered(256)
+_alone_choices: Remembered[tuple[AutoChoice, tuple[int, float] | None]] = Remembered(256)
 
 
-def _alone_measured(segment: Segment, choice: AutoChoice) -> AutoChoice:
+def _clean_hold(segment: Segment) -> bool:
+    """Whether ``auto`` holds the segment's contours without a partner in an injective mesh whose in-betweens
+    tangle at no t and stray at most :data:`.qcurves.STRAY_LIMIT` (measured by :func:`_with_alone`)."""
+    from ..methods.qcurves import STRAY_LIMIT
+
+    base = segment_choice(segment, hold=False)
+    if base is None:
+        return False
+    choice, found = _alone_measures(segment, base)
+    return choice.holds and found is not None and found[0] == 0 and found[1] <= STRAY_LIMIT
+
+
+def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
     from ..methods.qcurves import QUALITY_T, STRAY_LIMIT, AutoChoice, _candidate_paths, _quality
 
     pairs = segment.pairs
@@ -292,7 +315,8 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> AutoChoice:
     else:
         own = _candidate_paths(choice.method if choice.method in ("linear", "nonlinear") else "linear",
                                k0s, k1s, shut, QUALITY_T)
-    growths = growths_of(segment, "linear" if choice.method == "linear" else choice.method)
+    growths = growths_of(segment, choice.method if choice.method in ("linear", "nonlinear", "injective") else "linear",
+                         hold=False)
     alone = [i for i, _, _ in held]
     grown = [scaled(growths[i].point, pairs[i].k1 if growths[i].grows else pairs[i].k0,  # type: ignore[union-attr]
                     growth_scale(growths[i], QUALITY_T)) for i in alone]  # type: ignore[arg-type]
@@ -301,18 +325,22 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> AutoChoice:
     closed = shut + [pairs[i].closed for i in alone]
     first = _quality(own + grown, every0, every1, closed)
     if first[0] == 0:
-        return choice
+        return choice, None
     from ..methods.injective import injective_contours
 
-    second = _quality(injective_contours(every0, every1, closed, QUALITY_T), every0, every1, closed)
+    held_frames = injective_contours(every0, every1, closed, QUALITY_T)
+    second = _quality(held_frames, every0, every1, closed)
+    uneven = _uneven([held_frames[k] for k, shut in enumerate(closed) if shut],
+                     [every0[k] for k, shut in enumerate(closed) if shut], [every1[k] for k, shut in enumerate(closed) if shut])
     measures = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
-                f"stray {first[1]:.3f}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}")
-    if second[0] < first[0] and second[1] <= first[1] + STRAY_LIMIT:
-        return AutoChoice("injective", f"{choice.why}; {measures}", ("injective",), holds=True)
-    return replace(choice, why=f"{choice.why}; {measures}")
+                f"stray {first[1]:.3f}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}, "
+                f"largest area step {uneven:.1f} × the median")
+    if second[0] < first[0] and second[1] <= first[1] + STRAY_LIMIT and uneven <= EVEN:
+        return AutoChoice("injective", f"{choice.why}; {measures}", ("injective",), holds=True), second
+    return replace(choice, why=f"{choice.why}; {measures}"), second
 
 
-def segment_method(segment: Segment, method: str) -> str:
+def segment_method(segment: Segment, method: str, hold: bool = True) -> str:
     """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its contours
     (:func:`segment_choice`) when it has several or one open stroke that auto draws straight or
     injective; a one-outline segment keeps ``auto``, which decides per body."""
@@ -320,9 +348,9 @@ def segment_method(segment: Segment, method: str) -> str:
     if method != "auto" or not moving:
         return method
     if len(moving) == 1 and moving[0].closed:  # auto decides per body, unless it holds contours without a partner
-        held = segment_choice(segment)
+        held = segment_choice(segment, hold)
         return "injective" if held is not None and held.holds else method
-    choice = segment_choice(segment)
+    choice = segment_choice(segment, hold)
     if len(moving) == 1 and choice is not None and choice.method not in ("linear", "injective"):
         return method
     return choice.method if choice is not None else method
@@ -367,17 +395,18 @@ def _turned(segment: Segment, t: Array, method: str) -> list[Array]:
     return frames
 
 
-def method_paths(segment: Segment, t: Array, method: str) -> list[Array]:
+def method_paths(segment: Segment, t: Array, method: str, hold: bool = True) -> list[Array]:
     """Every pair's inbetweens at parameters ``t (T,)`` by ``method`` alone: one ``(T, L_i, 2)`` array per pair.
 
     The moving pairs are interpolated as one point set (one center of mass, one turn), except by
     the methods that work on one closed outline (:func:`.methods.per_outline`), which take each closed contour on its own and place it
     where the whole shape's rigid paths put it; the growing and shrinking pairs are scaled about their
-    point, clear of the moving ones (:mod:`.clearance`, :mod:`.appear`), the fading ones keep their shape.
+    point, clear of the moving ones (:mod:`.clearance`, :mod:`.appear`), unless an injective mesh holds
+    them (:func:`held_in_mesh`; never without ``hold``); the fading ones keep their shape.
     """
-    frames = _moving_paths(segment, t, method)
+    frames = _moving_paths(segment, t, method, hold)
     pending = any(f is None and not p.fades for f, p in zip(frames, segment.pairs))
-    growths = growths_of(segment, method) if pending else []
+    growths = growths_of(segment, method, hold) if pending else []
     for i, pair in enumerate(segment.pairs):
         if frames[i] is None and pair.fades:
             frames[i] = interpolate(pair.k0, pair.k1, t, "linear")
@@ -399,12 +428,14 @@ def injective_fallback_of(segment: Segment) -> str | None:
     return injective_fallback([p.k0 for p in moving], [p.k1 for p in moving], [p.closed for p in moving])
 
 
-def growths_of(segment: Segment, method: str) -> list[Growth | None]:
-    """How each pair without a partner comes or goes under ``method`` (None for the others): placed
-    clear of the other pairs (:func:`.clearance.place`) when there are others and no stagger, else
-    about its anchor over the whole segment."""
+def growths_of(segment: Segment, method: str, hold: bool = True) -> list[Growth | None]:
+    """How each pair without a partner comes or goes under ``method`` (None for the others, and for those
+    its injective mesh holds, :func:`held_in_mesh`): placed clear of the other pairs
+    (:func:`.clearance.place`) when there are others and no stagger, else about its anchor over the whole
+    segment. Without ``hold``, as if the mesh held none."""
     pairs = segment.pairs
-    alone = [i for i, p in enumerate(pairs) if not p.moving and not p.fades]
+    held = held_in_mesh(segment, method) if hold else frozenset()
+    alone = [i for i, p in enumerate(pairs) if not p.moving and not p.fades and i not in held]
     out: list[Growth | None] = [None] * len(pairs)
     if not alone:
         return out
@@ -416,13 +447,14 @@ def growths_of(segment: Segment, method: str) -> list[Growth | None]:
         return out
 
     def search() -> list[Growth]:
-        frames = _moving_paths(segment, GRID, method)
+        frames = _moving_paths(segment, GRID, method, hold)
+        around = [i for i, f in enumerate(frames) if f is not None]  # the moving ones, and those a mesh holds
         shapes = [pairs[i].k1 if pairs[i].source[0] is None else pairs[i].k0 for i in alone]
         return place(shapes, [pairs[i].closed for i in alone], [pairs[i].source[0] is None for i in alone],
                      [out[i].point for i in alone],  # type: ignore[union-attr]
-                     [frames[i] for i in moving], [pairs[i].closed for i in moving])
+                     [frames[i] for i in around], [pairs[i].closed for i in around])
 
-    for i, growth in zip(alone, cached(_digest(segment, method), search)):
+    for i, growth in zip(alone, cached(_digest(segment, method + repr(sorted(held))), search)):
         out[i] = growth
     return out
 
@@ -440,8 +472,9 @@ def _digest(segment: Segment, method: str) -> bytes:
     return h.digest()
 
 
-def _moving_paths(segment: Segment, t: Array, method: str) -> list[Array | None]:
-    """The moving pairs' inbetweens at ``t (T,)`` (``(T, L_i, 2)`` each), None for the others."""
+def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True) -> list[Array | None]:
+    """The moving pairs' inbetweens at ``t (T,)`` (``(T, L_i, 2)`` each), and those of the pairs without a
+    partner that an injective mesh holds (:func:`held_in_mesh`; none without ``hold``); None for the others."""
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
     moving = [i for i, p in enumerate(pairs) if p.moving]
@@ -451,7 +484,7 @@ def _moving_paths(segment: Segment, t: Array, method: str) -> list[Array | None]
     k1 = np.concatenate([pairs[i].k1 for i in moving])
     cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
     single = len(moving) == 1 and pairs[moving[0]].closed
-    chosen = segment_method(segment, method)
+    chosen = segment_method(segment, method, hold)
     if per_outline(method) and not single:
         # these methods need one closed outline: each contour takes them on its own (open ones the
         # rigid paths), and its centre follows the rigid paths of the whole shape
@@ -460,12 +493,12 @@ def _moving_paths(segment: Segment, t: Array, method: str) -> list[Array | None]
             pair = pairs[i]
             own = interpolate(pair.k0, pair.k1, t, method if pair.closed and len(pair.k0) >= 3 else "rigid")
             frames[i] = own - own.mean(axis=1, keepdims=True) + where.mean(axis=1, keepdims=True)
-    elif chosen == "injective" and (not single or held_in_mesh(segment, method)):
+    elif chosen == "injective" and (not single or (hold and held_in_mesh(segment, method))):
         # one mesh for every moving contour, so holes stay inside their outlines, and for those
         # without a partner where they have room in it
         from ..methods.injective import injective_contours
 
-        holding = held_in_mesh(segment, method)
+        holding = held_in_mesh(segment, method) if hold else frozenset()
         held = [h for h in _meshed_alone(segment) if h[0] in holding]
         found = injective_contours([pairs[i].k0 for i in moving] + [k0 for _, k0, _ in held],
                                    [pairs[i].k1 for i in moving] + [k1 for _, _, k1 in held],
@@ -511,9 +544,10 @@ def held_in_mesh(segment: Segment, method: str) -> frozenset[int]:
 
 def _meshed_alone(segment: Segment) -> list[tuple[int, Array, Array]]:
     """The growing and shrinking pairs the injective mesh holds, as (pair index, key 0, key 1) with
-    their stand-ins (:mod:`.methods.stand_ins`) in the key that lacks them: all of them where each has
-    room and the mesh with them exists, else none (they grow and shrink clear of the mesh,
-    :func:`growths_of`); none in a staggered or turned segment (each pair on its own timing, or the
+    their stand-ins (:mod:`.methods.stand_ins`) in the key that lacks them: all of them where none meets
+    another contour in its own key, each has room and the mesh with them exists, else none (they grow
+    and shrink clear of the mesh, :func:`growths_of`, where a contour touching another in its key can
+    be carried out of it); none in a staggered or turned segment (each pair on its own timing, or the
     moving ones turned apart), nor where nothing moves (a whole element comes from its centre)."""
     if not _alone(segment) or segment.stagger > 0 or segment.spin != 0.0 or all(not p.moving for p in segment.pairs):
         return []
@@ -528,11 +562,18 @@ def _stand_ins_held(segment: Segment) -> list[tuple[int, Array, Array]]:
     from ..methods.stand_ins import stand_ins
 
     pairs = segment.pairs
-    alone = _alone(segment)
     moving = [i for i, p in enumerate(pairs) if p.moving]
+    k0s, k1s, shut = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving], [pairs[i].closed for i in moving]
+    alone = _alone(segment)
+    for side, keys in ((0, k0s), (1, k1s)):  # a mesh holds contours apart: none may meet another in its key
+        here = [i for i in alone if pairs[i].source[side] is not None]
+        drawn_here = [pairs[i].k0 if side == 0 else pairs[i].k1 for i in here]
+        every = keys + drawn_here, shut + [pairs[i].closed for i in here]
+        met = proper_crossings(*every, touching=True) + proper_crossings(*every)
+        if any(c >= len(keys) or d >= len(keys) for c, d in met):
+            return []
     grows = [pairs[i].source[0] is None for i in alone]
     drawn = [pairs[i].k1 if g else pairs[i].k0 for i, g in zip(alone, grows)]
-    k0s, k1s, shut = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving], [pairs[i].closed for i in moving]
     found = stand_ins(list(zip(k0s, k1s)), shut, drawn, [pairs[i].closed for i in alone], grows,
                       lambda points, key: carried_points(k0s, k1s, shut, points, key))
     if found is None:
@@ -778,9 +819,11 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
             # all of them, or only the pieces, or only the holes
             plain = _join_measures(pairs, first, last, method, shape.stagger)
             best: tuple[tuple[int, float], tuple[Pair, ...]] | None = None
-            # injective paths that hold them in their mesh need no slit (which has no mesh); auto takes the
-            # join where it measures as well (a mesh that holds everything may carry shapes far)
-            held = method == "injective" and held_in_mesh(_probe(pairs, first, last, shape.stagger), method)
+            # injective paths that hold them in their mesh need no slit (which has no mesh); auto keeps
+            # them held where that neither tangles nor strays, else weighs joins as if they were not
+            # (a mesh that holds everything may carry shapes far)
+            probe = _probe(pairs, first, last, shape.stagger)
+            held = bool(held_in_mesh(probe, method)) and (method == "injective" or _clean_hold(probe))
             for part in [] if held else _join_choices(crowded, first, last):
                 joined = _pairs(first, last, shape.fill_rule, matching, rule, balance, links,
                                 (shape.cap, shape.join), part)
@@ -848,11 +891,13 @@ def _probe(pairs: tuple[Pair, ...], first: Key, last: Key, stagger: float) -> Se
 
 def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float
                    ) -> tuple[int, float]:
-    """How the in-betweens of ``pairs`` under ``method`` fare at :data:`JOIN_CHECKS`: at how many of the
+    """How the in-betweens of ``pairs`` under ``method``, growing and shrinking clear of the moving ones (as
+    if no mesh held them: joins are weighed against that, and holding is for the pairs kept), fare at
+    :data:`JOIN_CHECKS`: at how many of the
     inner ones their contours tangle (:func:`.tangles.contact_times`, crossings and stroke crossings,
     among the contours that are more than a point then), and the largest change of their closed
     contours' signed area from one check to the next over the median change (the pops rule)."""
-    frames = method_paths(_probe(pairs, first, last, stagger), JOIN_CHECKS, method)
+    frames = method_paths(_probe(pairs, first, last, stagger), JOIN_CHECKS, method, hold=False)
     inner = slice(1, len(JOIN_CHECKS) - 1)
     there = np.array([[bool(np.any(f[k] != f[k][:1])) for f in frames] for k in range(len(JOIN_CHECKS))])[inner]
     tangled: set[float] = set()
@@ -868,6 +913,19 @@ def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, 
     middle = float(np.median(steps))
     uneven = float(steps.max()) / middle if middle > 0 else (0.0 if steps.max() == 0 else np.inf)
     return len(tangled), uneven
+
+
+def _uneven(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array]) -> float:
+    """The largest change of the area closed contours enclose (holes taken away, however each winds) from one
+    t to the next, the keys included (``frames`` ``(T, L_i, 2)`` at :data:`.qcurves.QUALITY_T`), over the
+    median change (the pops rule)."""
+    signs = np.array([-1.0 if kind == "hole" else 1.0 for kind in roles(list(k0s), [True] * len(k0s))])
+    inner = sum((sign * np.abs(_signed_areas(f)) for sign, f in zip(signs, frames)), np.zeros(len(frames[0]) if frames else 0))
+    ends = [sum(sign * abs(float(_signed_areas(np.asarray(k)[None])[0])) for sign, k in zip(signs, keys))
+            for keys in (k0s, k1s)]
+    steps = np.abs(np.diff(np.concatenate([[ends[0]], inner, [ends[1]]])))
+    middle = float(np.median(steps)) if len(steps) else 0.0
+    return float(steps.max()) / middle if middle > 0 else (0.0 if not len(steps) or steps.max() == 0 else np.inf)
 
 
 def _signed_areas(frames: Array) -> Array:
@@ -896,7 +954,7 @@ def _crowded(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagge
     if all(p.moving or p.fades for p in pairs):
         return frozenset()
     out = set()
-    for pair, growth in zip(pairs, growths_of(_probe(pairs, first, last, stagger), method)):
+    for pair, growth in zip(pairs, growths_of(_probe(pairs, first, last, stagger), method, hold=False)):
         if growth is not None and (growth.start > 0.0 or growth.stop < 1.0 or growth.stuck):
             out.add((1, pair.source[1]) if growth.grows else (0, pair.source[0]))
     return frozenset(out)  # type: ignore[arg-type]

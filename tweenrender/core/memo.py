@@ -32,6 +32,13 @@ class Remembered(Generic[V]):
             self._values.popitem(last=False)
         return value
 
+    def known(self, key: bytes) -> V | None:
+        """The value remembered for ``key``, or None (nothing computed)."""
+        found = self._values.get(key)
+        if found is not None:
+            self._values.move_to_end(key)
+        return found
+
     def clear(self) -> None:
         """Forget every value."""
         self._values.clear()

@@ -56,7 +56,7 @@ Array = NDArray[np.float64]
 _CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
 _FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
 _RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off by this share of its size
-_cache: Remembered[tuple[Callable[[Array], list[Array]], str | None]] = Remembered(_CACHE)
+_cache: Remembered[tuple[Callable[[Array], list[Array]], str | None, "_Paths | None"]] = Remembered(_CACHE)
 _EVALUATED = 32  # evaluations kept, by keys and t: a report asks for a method's sweep, and auto for the same
 _EVALUATED_BYTES = 32 << 20  # and at most this many bytes of them (a render's blocks of frames pass through)
 _FRAME_BYTES = 16 << 20  # a pair of keys' solved frames kept by their t, at most this many bytes
@@ -91,17 +91,8 @@ def mean_value_weights(points: Array, triangles: NDArray[np.intp]) -> tuple[NDAr
 def injective_mesh(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> CompatibleMesh | None:
     """The compatible triangulation :func:`injective_contours` uses for these contours, in the keys'
     turned and centred frame (step 1), or None where the contours take the rigid paths instead."""
-    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
-    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
-    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
-    picked = [c for c, shut in enumerate(closed) if _meshable(k0[cuts[c]:cuts[c + 1]], k1[cuts[c]:cuts[c + 1]], shut)]
-    if not picked:
-        return None
-    m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
-    try:
-        return _Paths(m0, m1, mcuts, [closed[c] for c in picked]).mesh
-    except CompatibleError:
-        return None
+    paths = _paths_of(k0s, k1s, closed)[2] if len(k0s) else None
+    return None if paths is None else paths.mesh
 
 
 class _Paths:
@@ -203,20 +194,21 @@ def _rigid_turn(a: Array, b: Array) -> float:
 
 
 def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]
-           ) -> tuple[Callable[[Array], list[Array]], str | None]:
-    """The paths of every contour, those that cannot be in the mesh on the rigid paths of all; and why
-    the rigid paths were taken for all (None where the mesh holds every contour it can)."""
+           ) -> tuple[Callable[[Array], list[Array]], str | None, _Paths | None]:
+    """The paths of every contour, those that cannot be in the mesh on the rigid paths of all; why
+    the rigid paths were taken for all (None where the mesh holds every contour it can); and the mesh's
+    paths (None where there is no mesh)."""
     meshed = [_meshable(k0[a:b], k1[a:b], c) for a, b, c in zip(cuts, cuts[1:], closed)]
     if not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
-        return (lambda t: _split(rigid(k0, k1, t), cuts)), "the keys are not finite"
+        return (lambda t: _split(rigid(k0, k1, t), cuts)), "the keys are not finite", None
     if not any(meshed):
-        return (lambda t: _split(rigid(k0, k1, t), cuts)), "no contour has three vertices (an open one two)"
+        return (lambda t: _split(rigid(k0, k1, t), cuts)), "no contour has three vertices (an open one two)", None
     picked = [c for c in range(len(meshed)) if meshed[c]]
     m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
     try:
         paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
     except CompatibleError as error:
-        return (lambda t: _split(rigid(k0, k1, t), cuts)), str(error)
+        return (lambda t: _split(rigid(k0, k1, t), cuts)), str(error), None
     every = list(range(len(meshed)))
 
     def evaluate(t: Array) -> list[Array]:
@@ -226,7 +218,7 @@ def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]
         still = _split(rigid(k0, k1, t), cuts)
         return [found.get(c, still[c]) for c in every]
 
-    return evaluate, None
+    return evaluate, None, paths
 
 
 def _meshed_keys(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool], picked: Sequence[int]
@@ -288,7 +280,7 @@ def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Seque
     inbetweens at a set of ``t`` are remembered too (``auto`` choosing injective paths, and a report's
     measures, ask for the same ones again).
     """
-    paths, _ = _paths_of(k0s, k1s, closed)
+    paths, _, _ = _paths_of(k0s, k1s, closed)
     t = as_times(t)
     key = _key(k0s, k1s, closed) + b"|" + np.ascontiguousarray(t, dtype=np.float64).tobytes()
 
@@ -303,21 +295,17 @@ def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Seque
 
 
 def carried_points(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool], points: ArrayLike,
-                   side: int) -> Array | None:
+                   side: int, build: bool = True) -> Array | None:
     """Where ``points (P, 2)`` of key ``side`` (0 or 1) are in the other key by the compatible mesh of these
     contours (:func:`injective_contours`): each point keeps its barycentric place in its triangle, so it
     keeps its place among the contours (inside the same ones). ``(P, 2)``; None where the contours have no
-    such mesh; a point outside the frame keeps its place."""
-    k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
-    k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
-    cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()
-    picked = [c for c, shut in enumerate(closed) if _meshable(k0[cuts[c]:cuts[c + 1]], k1[cuts[c]:cuts[c + 1]], shut)]
-    if not picked or not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
+    such mesh (or, without ``build``, where it has not been built); a point outside the frame keeps its
+    place."""
+    if not k0s:
         return None
-    m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
-    try:
-        paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
-    except CompatibleError:
+    found = _paths_of(k0s, k1s, closed) if build else _cache.known(_key(k0s, k1s, closed))
+    paths = None if found is None else found[2]  # the mesh the paths use, built once
+    if paths is None:
         return None
     mesh = paths.mesh
     here, there = (mesh.p0, mesh.p1) if side == 0 else (mesh.p1, mesh.p0)
@@ -354,7 +342,7 @@ def _key(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> 
 
 
 def _paths_of(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
-              ) -> tuple[Callable[[Array], list[Array]], str | None]:
+              ) -> tuple[Callable[[Array], list[Array]], str | None, _Paths | None]:
     k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
     k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
     cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()

@@ -281,7 +281,7 @@ def _with_alone(segment: Segment, choice: AutoChoice) -> AutoChoice:
 
 def _alone_measures(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
     """:func:`_with_alone`'s choice, and how holding measured (tangled t, stray) where it was measured."""
-    if segment.joints or choice.method == "jointed" or not _meshed_alone(segment):
+    if segment.joints or choice.method == "jointed" or not _holdable(segment):
         return choice, None
     return _alone_choices.get(_digest(segment, "choice") + repr(choice).encode(),
                               lambda: _alone_measured(segment, choice))
@@ -307,7 +307,6 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
 
     pairs = segment.pairs
     moving = [i for i, p in enumerate(pairs) if p.moving]
-    held = _meshed_alone(segment)
     k0s, k1s = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving]
     shut = [pairs[i].closed for i in moving]
     if choice.method == "injective":
@@ -315,18 +314,20 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     else:
         own = _candidate_paths(choice.method if choice.method in ("linear", "nonlinear") else "linear",
                                k0s, k1s, shut, QUALITY_T)
-    growths = growths_of(segment, choice.method if choice.method in ("linear", "nonlinear", "injective") else "linear",
-                         hold=False)
-    alone = [i for i, _, _ in held]
+    growths = growths_of(segment, "auto", hold=False)  # as auto draws them without a mesh (and as joins weigh them)
+    alone = _alone(segment)
     grown = [scaled(growths[i].point, pairs[i].k1 if growths[i].grows else pairs[i].k0,  # type: ignore[union-attr]
                     growth_scale(growths[i], QUALITY_T)) for i in alone]  # type: ignore[arg-type]
-    every0 = k0s + [k0 for _, k0, _ in held]
-    every1 = k1s + [k1 for _, _, k1 in held]
-    closed = shut + [pairs[i].closed for i in alone]
-    first = _quality(own + grown, every0, every1, closed)
-    if first[0] == 0:
+    first = _quality(own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
+                     shut + [pairs[i].closed for i in alone])
+    held = _meshed_alone(segment) if first[0] else []  # the mesh only where they tangle as they grow
+    if not held:
         return choice, None
     from ..methods.injective import injective_contours
+
+    every0 = k0s + [k0 for _, k0, _ in held]
+    every1 = k1s + [k1 for _, _, k1 in held]
+    closed = shut + [pairs[i].closed for i, _, _ in held]
 
     held_frames = injective_contours(every0, every1, closed, QUALITY_T)
     second = _quality(held_frames, every0, every1, closed)
@@ -542,6 +543,12 @@ def held_in_mesh(segment: Segment, method: str) -> frozenset[int]:
     return frozenset(i for i, _, _ in _meshed_alone(segment))
 
 
+def _holdable(segment: Segment) -> bool:
+    """Whether a mesh could hold the segment's pairs without a partner (:func:`_meshed_alone`): it has some,
+    and moving pairs, on one timing and turn."""
+    return bool(_alone(segment)) and segment.stagger == 0 and segment.spin == 0.0 and any(p.moving for p in segment.pairs)
+
+
 def _meshed_alone(segment: Segment) -> list[tuple[int, Array, Array]]:
     """The growing and shrinking pairs the injective mesh holds, as (pair index, key 0, key 1) with
     their stand-ins (:mod:`.methods.stand_ins`) in the key that lacks them: all of them where none meets
@@ -549,7 +556,7 @@ def _meshed_alone(segment: Segment) -> list[tuple[int, Array, Array]]:
     and shrink clear of the mesh, :func:`growths_of`, where a contour touching another in its key can
     be carried out of it); none in a staggered or turned segment (each pair on its own timing, or the
     moving ones turned apart), nor where nothing moves (a whole element comes from its centre)."""
-    if not _alone(segment) or segment.stagger > 0 or segment.spin != 0.0 or all(not p.moving for p in segment.pairs):
+    if not _holdable(segment):
         return []
     return _held.get(_digest(segment, "held"), lambda: _stand_ins_held(segment))
 
@@ -575,7 +582,7 @@ def _stand_ins_held(segment: Segment) -> list[tuple[int, Array, Array]]:
     grows = [pairs[i].source[0] is None for i in alone]
     drawn = [pairs[i].k1 if g else pairs[i].k0 for i, g in zip(alone, grows)]
     found = stand_ins(list(zip(k0s, k1s)), shut, drawn, [pairs[i].closed for i in alone], grows,
-                      lambda points, key: carried_points(k0s, k1s, shut, points, key))
+                      lambda points, key: carried_points(k0s, k1s, shut, points, key, build=False))
     if found is None:
         return []
     held = [(i, s if g else d, d if g else s) for i, g, d, s in zip(alone, grows, drawn, found)]
@@ -819,11 +826,9 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
             # all of them, or only the pieces, or only the holes
             plain = _join_measures(pairs, first, last, method, shape.stagger)
             best: tuple[tuple[int, float], tuple[Pair, ...]] | None = None
-            # injective paths that hold them in their mesh need no slit (which has no mesh); auto keeps
-            # them held where that neither tangles nor strays, else weighs joins as if they were not
-            # (a mesh that holds everything may carry shapes far)
+            # injective paths that hold them in their mesh need no slit (which has no mesh)
             probe = _probe(pairs, first, last, shape.stagger)
-            held = bool(held_in_mesh(probe, method)) and (method == "injective" or _clean_hold(probe))
+            held = method == "injective" and bool(held_in_mesh(probe, method))
             for part in [] if held else _join_choices(crowded, first, last):
                 joined = _pairs(first, last, shape.fill_rule, matching, rule, balance, links,
                                 (shape.cap, shape.join), part)
@@ -832,6 +837,12 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
                     best = found, joined
                     if found[0] == 0 and found[1] <= EVEN:
                         break
+            # auto keeps them unjoined where its mesh holds them without a tangle or a stray and no join
+            # is as clean (a mesh that holds everything may carry shapes far: elsewhere joins are weighed
+            # against growing clear of the moving contours, as if none were held)
+            if (best is None or best[0][0] > 0) and method == "auto" and held_in_mesh(probe, method) \
+                    and _clean_hold(probe):
+                best = None
             if best is not None:
                 pairs = best[1]
         anchors = _anchors(pairs, links)

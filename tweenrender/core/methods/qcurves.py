@@ -30,7 +30,7 @@ from ..tangles import contact_times, linear_tangles
 __all__ = [
     "control_points", "evaluate", "angle_at", "passes_through_zero", "non_monotonic",
     "sweeps_over_180", "Motion", "vertex_kinds", "classify", "AutoChoice", "auto_choice",
-    "auto_choice_contours", "auto", "straight", "STRAY_LIMIT", "QUALITY_T",
+    "auto_choice_contours", "auto", "straight", "STRAY_LIMIT", "QUALITY_T", "candidate_paths", "candidate_quality",
 ]
 
 Array = NDArray[np.float64]
@@ -307,7 +307,7 @@ _CACHED = 512  # shapes whose measured choice is kept (frames are evaluated bloc
 _measured_cache: OrderedDict[bytes, AutoChoice] = OrderedDict()
 
 
-def _candidate_paths(method: str, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
+def candidate_paths(method: str, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
                      t: Array) -> list[Array]:
     """One ``(T, L_i, 2)`` per contour: the shape's nonlinear paths as one point set, auto's straight
     paths contour by contour (open strokes straight), or the injective paths of all in one mesh."""
@@ -319,7 +319,7 @@ def _candidate_paths(method: str, k0s: Sequence[Array], k1s: Sequence[Array], cl
     return [straight(a, b, t) if shut else paths.linear(a, b, t) for a, b, shut in zip(k0s, k1s, closed)]
 
 
-def _quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
+def candidate_quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
              ) -> tuple[int, float]:
     """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included) and the largest
     stray, the reach 12 % of the larger side of both keys together (a segment does not know the view)."""
@@ -370,7 +370,7 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     # turn's arc no stray): where it does not tangle, no stray is measured
     measured: dict[str, tuple[int, float]] = {}
     if first.method in ("linear", "nonlinear"):
-        frames = _candidate_paths(first.method, k0s, k1s, closed, QUALITY_T)
+        frames = candidate_paths(first.method, k0s, k1s, closed, QUALITY_T)
         crossed = _tangled(frames, k0s, k1s, closed)
         if crossed == 0:
             _remember(key, first)
@@ -378,14 +378,14 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
         measured[first.method] = (crossed, _stray(frames, k0s, k1s, closed))
     for c in candidates:
         if c.method not in measured and c.method != "injective":
-            measured[c.method] = _quality(_candidate_paths(c.method, k0s, k1s, closed, QUALITY_T), k0s, k1s, closed)
+            measured[c.method] = candidate_quality(candidate_paths(c.method, k0s, k1s, closed, QUALITY_T), k0s, k1s, closed)
     # straight paths sweep what the motion itself sweeps: a method strays where it goes past that
     limit = STRAY_LIMIT + measured["linear"][1]
     scores: list[tuple[int, float, int, AutoChoice]] = []
     chosen = None
     for rank, candidate in enumerate(candidates):
         if candidate.method not in measured:
-            measured[candidate.method] = _quality(_candidate_paths(candidate.method, k0s, k1s, closed, QUALITY_T),
+            measured[candidate.method] = candidate_quality(candidate_paths(candidate.method, k0s, k1s, closed, QUALITY_T),
                                                   k0s, k1s, closed)
         crossed, stray = measured[candidate.method]
         scores.append((crossed, stray, rank, candidate))

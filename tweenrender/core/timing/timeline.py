@@ -303,22 +303,22 @@ def _clean_hold(segment: Segment) -> bool:
 
 
 def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
-    from ..methods.qcurves import QUALITY_T, STRAY_LIMIT, AutoChoice, _candidate_paths, _quality
+    from ..methods.qcurves import QUALITY_T, STRAY_LIMIT, AutoChoice, candidate_paths, candidate_quality
 
     pairs = segment.pairs
     moving = [i for i, p in enumerate(pairs) if p.moving]
     k0s, k1s = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving]
     shut = [pairs[i].closed for i in moving]
     if choice.method == "injective":
-        own = _candidate_paths("injective", k0s, k1s, shut, QUALITY_T)
+        own = candidate_paths("injective", k0s, k1s, shut, QUALITY_T)
     else:
-        own = _candidate_paths(choice.method if choice.method in ("linear", "nonlinear") else "linear",
+        own = candidate_paths(choice.method if choice.method in ("linear", "nonlinear") else "linear",
                                k0s, k1s, shut, QUALITY_T)
     growths = growths_of(segment, "auto", hold=False)  # as auto draws them without a mesh (and as joins weigh them)
     alone = _alone(segment)
     grown = [scaled(growths[i].point, pairs[i].k1 if growths[i].grows else pairs[i].k0,  # type: ignore[union-attr]
                     growth_scale(growths[i], QUALITY_T)) for i in alone]  # type: ignore[arg-type]
-    first = _quality(own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
+    first = candidate_quality(own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
                      shut + [pairs[i].closed for i in alone])
     held = _meshed_alone(segment) if first[0] else []  # the mesh only where they tangle as they grow
     if not held:
@@ -330,7 +330,7 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     closed = shut + [pairs[i].closed for i, _, _ in held]
 
     held_frames = injective_contours(every0, every1, closed, QUALITY_T)
-    second = _quality(held_frames, every0, every1, closed)
+    second = candidate_quality(held_frames, every0, every1, closed)
     uneven = _uneven([held_frames[k] for k, shut in enumerate(closed) if shut],
                      [every0[k] for k, shut in enumerate(closed) if shut], [every1[k] for k, shut in enumerate(closed) if shut])
     measures = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "

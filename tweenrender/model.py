@@ -143,13 +143,16 @@ class Pattern:
     """A pattern paint, as SVG's ``<pattern>``: ``shapes`` (contours in the pattern's own units, y down) drawn
     within the tile ``(x, y, width, height)`` (what lies outside it is cut off), the tile repeated over the
     plane; ``matrix`` ``(a, b, c, d, e, f)`` maps the pattern's units to the world (as a gradient's), and
-    ``opacity`` multiplies the whole tile (``fill-opacity`` or ``stroke-opacity``). Patterns are equal only
-    to themselves (their shapes hold arrays)."""
+    ``opacity`` multiplies the whole tile (``fill-opacity`` or ``stroke-opacity``); ``share`` is how much of
+    the paint the tile is, the rest its plain colour beneath (1 at a key; between a key with a pattern and
+    one without, the pattern fades in or out). Patterns are equal only to themselves (their shapes hold
+    arrays)."""
 
     tile: tuple[float, float, float, float]
     matrix: tuple[float, float, float, float, float, float]
     shapes: tuple[MaskShape, ...]
     opacity: float = 1.0
+    share: float = 1.0
 
 
 @dataclass(frozen=True, slots=True)

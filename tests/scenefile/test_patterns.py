@@ -77,3 +77,25 @@ def test_a_patterned_drawing_morphed_into_itself_stays_still(tmp_path: Path) -> 
     scene = tr.load_scene([svg, svg])
     key = _ours(svg, 0.0, scene)
     assert np.abs(_ours(svg, 0.5, scene) - key).max() <= 1.0
+
+
+def test_a_pattern_fades_in_as_its_plain_colour_would(tmp_path: Path) -> None:
+    """A red square becomes one filled with a tile of solid blue: the tile is cross-faded in by the share of its
+    key, t, over the plain colour the square would have (turning to the tile's mean colour), so a frame is
+    ``(1 - t) × that + t × blue``; it used to stay plain until half-way and then show the tile whole at once."""
+    square = '<rect x="8" y="8" width="24" height="24" fill="{}"/>'
+    plain, blue, patterned = tmp_path / "plain.svg", tmp_path / "blue.svg", tmp_path / "patterned.svg"
+    plain.write_text(HEAD + square.format("#ff0000") + "</svg>")
+    blue.write_text(HEAD + square.format("#0000ff") + "</svg>")
+    patterned.write_text(HEAD + '<defs><pattern id="p" patternUnits="userSpaceOnUse" width="4" height="4">'
+                         '<rect width="4" height="4" fill="#0000ff"/></pattern></defs>' + square.format("url(#p)")
+                         + "</svg>")
+
+    def middles(scene: tr.Scene) -> np.ndarray:
+        return np.array([tr.frame(scene, k / 24, method="linear", size=(80, 80), background="#ffffff")[40, 40, :3]
+                         for k in range(25)], dtype=float)
+
+    fading, turning = middles(tr.load_scene([plain, patterned], step=1.0)), middles(tr.load_scene([plain, blue], step=1.0))
+    t = np.arange(25)[:, None] / 24
+    expected = (1 - t) * turning + t * np.array([0.0, 0.0, 255.0])
+    assert np.abs(fading - expected).max() <= 2.0, np.abs(fading - expected).max(axis=1).tolist()

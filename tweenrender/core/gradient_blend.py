@@ -12,6 +12,8 @@ A pattern is the nearer key's (a key without one: its plain colour), carried by 
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -123,15 +125,24 @@ def blend_stroke_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, 
 def carry_pattern(pattern0: Pattern | None, pattern1: Pattern | None, box0: Box, box1: Box, box: Box, t: float
                   ) -> Pattern | None:
     """The pattern at eased ``t`` between keys painted with ``pattern0`` (element's box ``box0``) and
-    ``pattern1`` (``box1``), for an inbetween whose box is ``box``: the nearer key's, placed relative to the
-    inbetween's box as it was to that key's; None when the nearer key has none."""
-    near, near_box = (pattern0, box0) if t < 0.5 else (pattern1, box1)
-    if near is None:
+    ``pattern1`` (``box1``), for an inbetween whose box is ``box``: the nearer key's where both have one, else
+    the one there is, fading in (out) with ``t`` (its :attr:`~tweenrender.model.Pattern.share`, the plain
+    colour beneath the rest); placed relative to the inbetween's box as it was to that key's; None where
+    neither has one."""
+    if pattern0 is not None and pattern1 is not None:
+        (near, near_box), share = ((pattern0, box0) if t < 0.5 else (pattern1, box1)), 1.0
+    elif pattern1 is not None:
+        (near, near_box), share = (pattern1, box1), min(max(t, 0.0), 1.0)
+    elif pattern0 is not None:
+        (near, near_box), share = (pattern0, box0), min(max(1.0 - t, 0.0), 1.0)
+    else:
+        return None
+    if share <= 0.0:
         return None
     frames = _frame(near_box), _frame(box)
     if frames[0] is None or frames[1] is None:
-        return near
+        return replace(near, share=share)
     a, b, c, d, e, f = near.matrix
     placed = frames[1] @ np.linalg.solve(frames[0], np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]]))
     return Pattern(near.tile, (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
-                               float(placed[0, 2]), float(placed[1, 2])), near.shapes, near.opacity)
+                               float(placed[0, 2]), float(placed[1, 2])), near.shapes, near.opacity, share)

@@ -74,12 +74,20 @@ def paint_shaders(paint: Paint, viewport: Viewport) -> tuple[skia.Shader | None,
     fill = stroke = None
     if paint.fill is not None:
         if paint.pattern is not None:
-            fill = pattern_shader(paint.pattern, viewport)
+            fill = _over_colour(pattern_shader(paint.pattern, viewport), paint.pattern, paint.fill)
         elif paint.gradient is not None:
             fill = gradient_shader(paint.gradient, viewport)
     if paint.stroke is not None:
         if paint.stroke_pattern is not None:
-            stroke = pattern_shader(paint.stroke_pattern, viewport)
+            stroke = _over_colour(pattern_shader(paint.stroke_pattern, viewport), paint.stroke_pattern, paint.stroke)
         elif paint.stroke_gradient is not None:
             stroke = gradient_shader(paint.stroke_gradient, viewport)
     return fill, stroke
+
+
+def _over_colour(shader: skia.Shader | None, pattern: Pattern, colour: tuple[int, int, int, int]) -> skia.Shader | None:
+    """A pattern fading in or out (its share below 1): a cross-fade from its paint's plain colour."""
+    if shader is None or pattern.share >= 1.0:
+        return shader
+    r, g, b, a = colour
+    return skia.Shaders.Lerp(float(pattern.share), skia.Shaders.Color(skia.Color(int(r), int(g), int(b), int(a))), shader)

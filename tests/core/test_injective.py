@@ -325,3 +325,21 @@ def test_pieces_wound_either_way_keep_the_area_they_enclose() -> None:
     for k, t in enumerate(T):
         expected = (1 - t) * (enclosed(big0) + enclosed(small0)) + t * (enclosed(big1) + enclosed(small1))
         assert enclosed(frames[0][k]) + enclosed(frames[1][k]) == pytest.approx(expected, rel=0.02), t
+
+
+def test_outlines_touching_at_a_corner_are_meshed_and_come_apart_without_crossing() -> None:
+    # two squares of one element share a corner in the first key (drawn that way: they touch); the mesh needs
+    # its contours apart, so the shared vertex is moved a millionth into the smaller one, and the in-betweens,
+    # checked with shapely, never meet
+    import shapely
+
+    a0 = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    b0 = np.array([[1.0, 1.0], [1.8, 1.0], [1.8, 1.8], [1.0, 1.8]])
+    a1, b1 = a0 + [-0.5, 0.2], b0 + [0.6, -0.3]
+    mesh = injective_mesh([a0, b0], [a1, b1], [True, True])
+    assert mesh is not None, "touching outlines must be meshed, not left to the rigid paths"
+    frames = injective_contours([a0, b0], [a1, b1], [True, True], T)
+    for k, t in enumerate(T):
+        assert not shapely.LinearRing(frames[0][k]).intersects(shapely.LinearRing(frames[1][k])), t
+    start = injective_contours([a0, b0], [a1, b1], [True, True], [0.0])  # the key itself, touching as drawn
+    assert np.array_equal(start[0][0], a0) and np.array_equal(start[1][0], b0)

@@ -42,7 +42,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..balance import coincident_runs, spread
-from ..contours import roles
+from ..contours import inside, roles
 from .bounded_distortion import ShapeKeepingSolve, material_triangles
 from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
 from ..geometry import best_fit_rotation, centroid, rotate
@@ -55,6 +55,7 @@ Array = NDArray[np.float64]
 
 _CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
 _FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
+_TOUCH = 1e-6  # a vertex two contours share is moved this share of the key's size into one of them
 _RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off by this share of its size
 _cache: Remembered[tuple[Callable[[Array], list[Array]], str | None, "_Paths | None"]] = Remembered(_CACHE)
 _EVALUATED = 32  # evaluations kept, by keys and t: a report asks for a method's sweep, and auto for the same
@@ -234,7 +235,48 @@ def _meshed_keys(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[boo
         parts0.append(a)
         parts1.append(b)
     mcuts = np.concatenate([[0], np.cumsum([len(p) for p in parts0])]).astype(int).tolist()
-    return np.concatenate(parts0), np.concatenate(parts1), mcuts
+    shut = [closed[c] for c in picked]
+    return _apart(np.concatenate(parts0), mcuts, shut), _apart(np.concatenate(parts1), mcuts, shut), mcuts
+
+
+def _apart(points: Array, cuts: Sequence[int], closed: Sequence[bool]) -> Array:
+    """``points (M, 2)`` with each vertex that two closed contours share (they touch there, as drawn) moved
+    :data:`_TOUCH` of the key's size into the smaller contour's own region: the contours are apart, so
+    they can be meshed, and the key as drawn changes by less than a millionth (the keys themselves are
+    drawn at t = 0 and 1)."""
+    unique, where, count = np.unique(points, axis=0, return_inverse=True, return_counts=True)
+    if len(unique) == len(points):
+        return points
+    out = np.array(points)
+    owner = np.searchsorted(np.asarray(cuts), np.arange(len(points)), side="right") - 1
+    size = float(np.ptp(points, axis=0).max()) or 1.0
+    for group in np.flatnonzero(count > 1):
+        shared = np.flatnonzero(where.ravel() == group)
+        contours = {int(owner[i]) for i in shared}
+        if len(contours) < 2 or not all(closed[c] for c in contours):
+            continue  # copies within one contour, or an open stroke: not two outlines touching
+        for i in sorted(shared, key=lambda i: _region(points, cuts, int(owner[i])))[:-1]:  # all but the largest
+            out[i] = _inward(points, cuts, int(owner[i]), int(i), _TOUCH * size)
+    return out
+
+
+def _region(points: Array, cuts: Sequence[int], c: int) -> float:
+    ring = points[cuts[c]:cuts[c + 1]]
+    x, y = ring[:, 0], ring[:, 1]
+    return abs(0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
+
+
+def _inward(points: Array, cuts: Sequence[int], c: int, i: int, step: float) -> Array:
+    """Vertex ``i`` of contour ``c`` moved ``step`` along its corner's bisector, into the contour's region."""
+    ring = points[cuts[c]:cuts[c + 1]]
+    k = i - cuts[c]
+    here, before, after = ring[k], ring[k - 1], ring[(k + 1) % len(ring)]
+    u, v = before - here, after - here
+    u, v = u / (np.hypot(*u) or 1.0), v / (np.hypot(*v) or 1.0)
+    bisector = u + v if np.hypot(*(u + v)) > 1e-12 else np.array([-u[1], u[0]])
+    bisector = bisector / np.hypot(*bisector)
+    ahead = here + step * bisector
+    return ahead if inside(ahead[None], ring)[0] else here - step * bisector
 
 
 def _meshable(a: Array, b: Array, closed: bool) -> bool:

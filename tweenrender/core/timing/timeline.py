@@ -309,11 +309,8 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     moving = [i for i, p in enumerate(pairs) if p.moving]
     k0s, k1s = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving]
     shut = [pairs[i].closed for i in moving]
-    if choice.method == "injective":
-        own = candidate_paths("injective", k0s, k1s, shut, QUALITY_T)
-    else:
-        own = candidate_paths(choice.method if choice.method in ("linear", "nonlinear") else "linear",
-                               k0s, k1s, shut, QUALITY_T)
+    own = candidate_paths(choice.method if choice.method in ("linear", "nonlinear", "injective") else "linear",
+                          k0s, k1s, shut, QUALITY_T)
     growths = growths_of(segment, "auto", hold=False)  # as auto draws them without a mesh (and as joins weigh them)
     alone = _alone(segment)
     grown = [scaled(growths[i].point, pairs[i].k1 if growths[i].grows else pairs[i].k0,  # type: ignore[union-attr]
@@ -331,8 +328,8 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
 
     held_frames = injective_contours(every0, every1, closed, QUALITY_T)
     second = candidate_quality(held_frames, every0, every1, closed)
-    uneven = _uneven([held_frames[k] for k, shut in enumerate(closed) if shut],
-                     [every0[k] for k, shut in enumerate(closed) if shut], [every1[k] for k, shut in enumerate(closed) if shut])
+    rings = [k for k, c in enumerate(closed) if c]
+    uneven = _uneven([held_frames[k] for k in rings], [every0[k] for k in rings], [every1[k] for k in rings])
     measures = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
                 f"stray {first[1]:.3f}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}, "
                 f"largest area step {uneven:.1f} × the median")
@@ -436,7 +433,7 @@ def growths_of(segment: Segment, method: str, hold: bool = True) -> list[Growth 
     segment. Without ``hold``, as if the mesh held none."""
     pairs = segment.pairs
     held = held_in_mesh(segment, method) if hold else frozenset()
-    alone = [i for i, p in enumerate(pairs) if not p.moving and not p.fades and i not in held]
+    alone = [i for i in _alone(segment) if i not in held]
     out: list[Growth | None] = [None] * len(pairs)
     if not alone:
         return out

@@ -45,7 +45,7 @@ from ..balance import coincident_runs, spread
 from ..contours import inside, roles
 from .bounded_distortion import ShapeKeepingSolve, material_triangles
 from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
-from ..geometry import best_fit_rotation, centroid, rotate
+from ..geometry import area, best_fit_rotation, centroid, rotate
 from .paths import as_times, rigid
 from ..memo import Remembered
 
@@ -160,11 +160,7 @@ class _Paths:
     def _area(self, points: Array) -> float:
         """The area the closed contours of ``points (N, 2)`` enclose, holes taken away (each contour's area
         unsigned, counted by whether it is a hole): contours wound either way count alike."""
-        total = 0.0
-        for c, sign in self.signs.items():
-            x, y = points[self.cuts[c]:self.cuts[c + 1], 0], points[self.cuts[c]:self.cuts[c + 1], 1]
-            total += sign * abs(0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
-        return total
+        return sum(sign * float(area(points[self.cuts[c]:self.cuts[c + 1]])) for c, sign in self.signs.items())
 
     def _sized(self, x: Array, s: float) -> Array:
         """``x (N, 2)`` scaled about its vertex mean to the keys' interpolated area: a similarity,
@@ -261,9 +257,7 @@ def _apart(points: Array, cuts: Sequence[int], closed: Sequence[bool]) -> Array:
 
 
 def _region(points: Array, cuts: Sequence[int], c: int) -> float:
-    ring = points[cuts[c]:cuts[c + 1]]
-    x, y = ring[:, 0], ring[:, 1]
-    return abs(0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
+    return float(area(points[cuts[c]:cuts[c + 1]]))
 
 
 def _inward(points: Array, cuts: Sequence[int], c: int, i: int, step: float) -> Array:

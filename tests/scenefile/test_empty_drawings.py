@@ -19,6 +19,8 @@ DRAWINGS = {
     "zero-size": f'<svg xmlns="http://www.w3.org/2000/svg" width="0" height="0">{RECT}</svg>',
     "negative-size": f'<svg xmlns="http://www.w3.org/2000/svg" width="-50" height="-100">{RECT}</svg>',
     "hidden-root": f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 200" display="none">{RECT}</svg>',
+    "zero-width-viewBox": f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 0 200" width="200" height="200">{RECT}</svg>',
+    "zero-viewBox-alone": f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 0">{RECT}</svg>',
 }
 
 
@@ -30,6 +32,20 @@ def test_a_drawing_of_nothing_is_its_background(name: str, tmp_path: Path) -> No
     assert scene.shapes == ()
     picture = tr.frame(scene, 0.0, size=(64, 64), background="#336699")
     assert (picture[..., :3] == (0x33, 0x66, 0x99)).all()
+
+
+@pytest.mark.parametrize("box", ["0 0 -200 200", "0 0 200 -1", "0 0 200", "a b c d", "0 0 1e400 200"])
+def test_a_viewBox_in_error_is_ignored_as_browsers_do(box: str, tmp_path: Path) -> None:
+    """A negative size or an unreadable list invalidates ``viewBox`` (SVG 1.1 §7.7): the drawing is laid out by its
+    ``width`` and ``height`` alone, so the rect covers the same pixels as without the attribute."""
+    plain = tmp_path / "plain.svg"
+    plain.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">{RECT}</svg>')
+    broken = tmp_path / "broken.svg"
+    broken.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{box}" width="200" height="200">{RECT}</svg>')
+    expected = tr.frame(tr.load_scene(plain), 0.0, size=(50, 50))
+    picture = tr.frame(tr.load_scene(broken), 0.0, size=(50, 50))
+    assert np.array_equal(picture, expected)
+    assert (expected[25, 25, :3] == (0, 128, 0)).all()
 
 
 def test_an_unreadable_width_does_not_hide_the_drawing(tmp_path: Path) -> None:

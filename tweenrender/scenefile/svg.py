@@ -48,7 +48,7 @@ from .svg_paint_order import in_paint_order
 from .svg_patterns import pattern_content
 from .svg_stroke_space import clipped_miters, in_stroke_space
 from .svg_pathdata import path_prefix, points_prefix, smooth_controls
-from .svg_viewport import aspect_matrix, renders
+from .svg_viewport import aspect_matrix, parse_view_box, renders
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
            "load_svg_contours", "read_drawing", "view_box"]
@@ -209,19 +209,14 @@ def _check_tolerance(tolerance: object) -> float:
 
 
 def view_box(document: Document) -> tuple[float, float, float, float] | None:
-    """The root's viewBox ``(x, y, width, height)`` in user units, else ``(0, 0, width, height)``; None if neither."""
+    """The root's viewBox ``(x, y, width, height)`` in user units, else ``(0, 0, width, height)``; None if neither.
+
+    A viewBox in error (unreadable, not finite, a negative size) is ignored, as SVG 1.1 §7.7 says; one of zero
+    size disables rendering (:func:`renders`), and the drawing's size still lays it out."""
     root = document.root
-    box = root.attrs.get("viewBox")
-    if box:
-        try:
-            x, y, w, h = (float(v) for v in box.replace(",", " ").split())
-        except ValueError:
-            raise Refusal(f"expected viewBox=\"x y width height\", found {box!r}") from None
-        if not all(math.isfinite(v) for v in (x, y, w, h)):
-            raise Refusal(f"expected a finite viewBox, found {box!r}")
-        if w <= 0 or h <= 0:
-            raise Refusal(f"expected a viewBox of positive width and height, found {box!r}")
-        return (x, y, w, h)
+    box = parse_view_box(root.attrs.get("viewBox"))
+    if box is not None:
+        return box
     w, h = length(root, "width", 0.0), length(root, "height", 0.0)
     if w > 0 and h > 0 and "%" not in root.attrs.get("width", "") + root.attrs.get("height", ""):
         return (0.0, 0.0, w, h)
@@ -235,7 +230,8 @@ def _root_viewport(document: Document) -> tuple[tuple[float, float, float, float
     box = view_box(document)
     root = document.root
     sizes = root.attrs.get("width", ""), root.attrs.get("height", "")
-    if box is None or "viewBox" not in root.attrs or not all(t.strip() for t in sizes) or "%" in "".join(sizes):
+    given = parse_view_box(root.attrs.get("viewBox"))
+    if box is None or given is None or not all(t.strip() for t in sizes) or "%" in "".join(sizes):
         return box, np.eye(3)
     width, height = length(root, "width", 0.0), length(root, "height", 0.0)
     if not (width > 0 and height > 0 and math.isfinite(width) and math.isfinite(height)):

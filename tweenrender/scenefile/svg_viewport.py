@@ -97,7 +97,8 @@ def _length(text: str | None, relative: float, default: float, font: tuple[float
 
 def renders(root: Node) -> bool:
     """Whether the root ``<svg>`` draws anything: a ``width`` or ``height`` of zero or less disables its
-    rendering (SVG 1.1 §7.2; a negative one is in error, and renderers draw nothing either)."""
+    rendering (SVG 1.1 §7.2; a negative one is in error, and renderers draw nothing either), and so does a
+    ``viewBox`` of zero width or height."""
     from .svg_lengths import font_relative, is_length
 
     for name in ("width", "height"):
@@ -105,7 +106,17 @@ def renders(root: Node) -> bool:
         readable = is_length(text) or font_relative(text, *root.font) is not None
         if readable and _length(text, 1.0, 1.0, root.font) <= 0:
             return False
-    return True
+    return not _zero_view_box(root.attrs.get("viewBox"))
+
+
+def _zero_view_box(text: str | None) -> bool:
+    """Whether ``viewBox`` is four finite numbers with a zero width or height and neither negative (which
+    disables rendering; a negative one is in error and ignored)."""
+    try:
+        _, _, w, h = (float(v) for v in (text or "").replace(",", " ").split())
+    except ValueError:
+        return False
+    return math.isfinite(w) and math.isfinite(h) and min(w, h) == 0 and min(w, h) >= 0
 
 
 def root_size(root: Node) -> tuple[float, float]:

@@ -75,3 +75,22 @@ def test_nothing_of_an_element_without_a_partner_is_drawn_at_a_key(tmp_path: Pat
     assert ring.stroke_width == pytest.approx(2.0 * np.sqrt(0.5))
     assert np.ptp(ring.points[:, 0]) == pytest.approx(10.0 * np.sqrt(0.5), rel=0.02)
     assert [c.element for c in contours(scene, 1.0)] == ["sq", "ring"]
+
+
+def test_a_hole_that_only_an_evenodd_key_has_stays_a_hole_under_the_other_keys_nonzero(tmp_path: Path) -> None:
+    # a's hole winds as its outline does (a hole only by even-odd); b is one square under nonzero. From halfway the
+    # in-betweens take b's rule: the shrinking hole must still show, its area falling evenly (SPEC §5.17), where it
+    # used to fill in at once. Read from the drawn frames: the pixels left uncovered inside the square.
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">'
+                 '<path fill-rule="evenodd" d="M0 0H10V10H0Z M3 3H7V7H3Z"/></svg>')
+    b.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10"><path d="M0.5 0.5H9.5V9.5H0.5Z"/></svg>')
+    scene = tr.load_scene([a, b])
+    uncovered = []
+    for t in (0.3, 0.45, 0.55, 0.7):
+        picture = tr.frame(scene, t, size=(100, 100), method="linear", background="#ffffff")
+        inner = picture[30:70, 30:70, :3].astype(float).mean(axis=2)  # the hole's square in a, in pixels
+        uncovered.append(float((inner > 127).mean()))
+    # the hole's share of its own square: 1 - t by area, give or take its shrinking toward its anchor
+    assert all(u > 0.5 * (1 - t) for u, t in zip(uncovered, (0.3, 0.45, 0.55, 0.7))), uncovered
+    assert uncovered[2] > 0.6 * uncovered[1], uncovered

@@ -714,19 +714,22 @@ def _dash_starts(segment: Segment, contours: tuple[Points, ...], t: float) -> tu
     return tuple(out)
 
 
-def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequence[Contour]
-                 ) -> tuple[tuple[bool, ...], tuple[bool, ...]]:
+def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequence[Contour],
+                 rules: tuple[str, str] = ("nonzero", "nonzero")) -> tuple[tuple[bool, ...], tuple[bool, ...]]:
     """Per pair, whether its balanced contour must be drawn reversed to wind as in the first key, and
     as in the second: the correspondence may walk a partner backwards, and under ``nonzero`` a hole
     is a hole only while it winds against its outer.
 
     A contour that only one key has takes the other key's windings through the largest moving pair:
-    if that pair's two keys wind oppositely, so is it drawn in the key it is not part of.
+    if that pair's two keys wind oppositely, so is it drawn in the key it is not part of. Where its own
+    key is ``evenodd`` and the other ``nonzero`` (``rules``: the two keys' fill rules), its winding said
+    nothing: under the other key's rule it winds as that key's largest contour at an even depth of nesting
+    in its own key and against it at an odd one, so a hole stays a hole.
     """
     def sign(points: Array) -> float:
         return float(np.sign(signed_area(points))) if len(points) >= 3 else 0.0
 
-    first, second, relation, biggest = [], [], False, -1.0
+    first, second, relation, biggest, outer = [], [], False, -1.0, (0.0, 0.0)
     for pair in pairs:
         i, j = pair.source
         flip0 = i is not None and sign(pair.k0) * sign(before[i].points) < 0
@@ -737,12 +740,24 @@ def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequen
             size = abs(signed_area(pair.k0)) + abs(signed_area(pair.k1))
             if size > biggest:
                 biggest, relation = size, (sign(before[i].points) * sign(after[j].points) < 0)  # type: ignore[index]
+                outer = (sign(before[i].points), sign(after[j].points))  # type: ignore[index]
+    depths = [_depth_signs(keyed) if rules[end] == "evenodd" and rules[1 - end] == "nonzero" else None
+              for end, keyed in enumerate((before, after))]
     for n, pair in enumerate(pairs):
         if pair.source[0] is None:
             first[n] = relation
+            if depths[1] is not None and pair.closed and outer[0]:
+                first[n] = sign(pair.k1) != outer[0] * depths[1][pair.source[1]]  # type: ignore[index]
         elif pair.source[1] is None:
             second[n] = relation
+            if depths[0] is not None and pair.closed and outer[1]:
+                second[n] = sign(pair.k0) != outer[1] * depths[0][pair.source[0]]
     return tuple(first), tuple(second)
+
+
+def _depth_signs(contours: Sequence[Contour]) -> list[float]:
+    """Per contour of one key, 1.0 at an even depth of nesting (an outer, an open stroke), -1.0 at an odd one."""
+    return [-1.0 if role == "hole" else 1.0 for role in roles([c.points for c in contours], [c.closed for c in contours])]
 
 
 def _still(key: Key) -> ShapeAt:
@@ -853,7 +868,8 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
                 balanced_joints = tuple((int(first_of[i]), int(first_of[j])) for i, j in joints)
                 carried = tuple((int(found.pairs[p, 1]), int(found.pairs[q, 1])) for p, q in balanced_joints)
             joints = carried
-        windings = key_windings(pairs, first.contours, last.contours)
+        windings = key_windings(pairs, first.contours, last.contours,
+                                (first.fill_rule or shape.fill_rule, last.fill_rule or shape.fill_rule))
         moving = [p for p in pairs if p.moving]
         m0 = np.concatenate([p.k0 for p in moving]) if moving else np.zeros((0, 2))
         m1 = np.concatenate([p.k1 for p in moving]) if moving else np.zeros((0, 2))

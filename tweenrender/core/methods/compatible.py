@@ -29,8 +29,8 @@ triangles and every triangle is counter-clockwise in both keys:
 Pure numpy (and scipy's Delaunay triangulation, imported when it runs).
 Keys whose contours cross themselves or each other, wind the other way round, or
 nest differently, raise :class:`CompatibleError`, as does an overlay that would
-need more than :data:`STEINER_CAP` Steiner points (a frame would then cost more
-than the animation is worth).
+need more than :data:`STEINER_CAP` Steiner points, or bridges of more than :data:`BRIDGE_CAP` (a frame
+would then cost more than the animation is worth).
 """
 
 from __future__ import annotations
@@ -46,7 +46,7 @@ from numpy.typing import NDArray
 from ...errors import GeometryError
 from .mesh_overlay import fat, fewer_crossings, orient, overlay_face, relax
 
-__all__ = ["CompatibleError", "CompatibleMesh", "compatible_triangulation", "FRAME_SIDES", "STEINER_CAP"]
+__all__ = ["BRIDGE_CAP", "CompatibleError", "CompatibleMesh", "compatible_triangulation", "FRAME_SIDES", "STEINER_CAP"]
 
 Array = NDArray[np.float64]
 Triangles = NDArray[np.intp]
@@ -56,6 +56,10 @@ FRAME_SIDES = 24
 
 STEINER_CAP = 20_000
 """Most crossing points one face's overlay may add; past it the keys have no injective paths here."""
+
+BRIDGE_CAP = 4_000
+"""Most points the bridges of one mesh may add (real drawings take at most a few hundred); past it the keys
+have no injective paths here: each bridge's chain lengthens the next ones', which can grow without bound."""
 
 _FRAME_SCALE = 2.0  # frame radius over the keys' largest distance from their centre
 _FLIP_GUARD = 200  # flips allowed per recovered edge, times the edges it crosses at first
@@ -372,6 +376,7 @@ def _bridge(keys: _Keys, cuts: Sequence[int], closed: Sequence[bool], names: dic
         return c
 
     used: set[int] = set()
+    added = 0
     for face in names.values():
         while True:
             candidates = []
@@ -398,6 +403,9 @@ def _bridge(keys: _Keys, cuts: Sequence[int], closed: Sequence[bool], names: dic
             chain = _chain(two, u, v, face)
             if chain is None:
                 raise CompatibleError("no bridge between two contours")
+            added += len(chain)
+            if added > BRIDGE_CAP:
+                raise CompatibleError(f"the bridges between the contours would take more than {BRIDGE_CAP} points")
             ids = [u]
             for k, (x, y) in enumerate(_along(one.pts[u], one.pts[v], len(chain))):
                 p = one.new_point(x, y)

@@ -76,7 +76,7 @@ EDITS = ("tests/scenefile/test_scene_edits.py",)
 PREVIEW_EDITS = ("tests/preview/test_preview_edits.py",)
 SVG_CSS = ("tests/scenefile/test_svg_css.py",)
 SVG_UNITS = ("tests/scenefile/test_svg_small_rules.py", "tests/scenefile/test_svg.py")
-SVG_VIEW = ("tests/scenefile/test_svg_viewports.py",
+SVG_VIEW = ("tests/scenefile/test_svg_viewports.py", "tests/scenefile/test_empty_drawings.py",
             "tests/scenefile/test_svg_small_rules.py::test_a_nested_view_box_origin_moves_its_content")
 SVG_ERRORS = ("tests/scenefile/test_svg_error_rules.py",)
 STEERING = ("tests/core/test_steering.py", "tests/scenefile/test_steering_fields.py")

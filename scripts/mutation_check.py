@@ -335,7 +335,7 @@ MUTANTS = [
     Mutant("lottie: easing handles' x and y swapped", "tweenrender/encode/lottie_values.py",
            'key["o"] = {"x": [x1], "y": [y1]}', 'key["o"] = {"x": [y1], "y": [x1]}', VECTOR),
     Mutant("lottie: a baked span's own timing dropped", "tweenrender/encode/lottie_values.py",
-           "x1, y1, x2, y2 = eases[index] if eases else STRAIGHT", "x1, y1, x2, y2 = STRAIGHT", VECTOR),
+           "(eases[index] if eases else STRAIGHT)", "(STRAIGHT)", VECTOR),
     Mutant("svg: a baked span's own timing dropped", "tweenrender/encode/smil.py",
            "splines = list(eases) or [STRAIGHT] * (len(frames) - 1)", "splines = [STRAIGHT] * (len(frames) - 1)",
            VECTOR),

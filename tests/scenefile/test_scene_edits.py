@@ -156,6 +156,16 @@ def test_bake_writes_the_linear_in_between_at_the_favour(tmp_path: Path, favour:
     assert _only_insertions(text.replace(f"breakdown = {favour}\n", ""), edited) == [f"points = {key_line(key)}"]
 
 
+def test_a_baked_breakdown_keeps_a_shared_hint_where_it_falls_between_its_two_places(tmp_path: Path) -> None:
+    """Hint a sits at the middle of the bottom edge in both keys, (2, 0) and (10, 0); baked at favour 0.5, the
+    square is [4, 8] × [0, 4] and the hint the baked outline's point nearest (6, 0): (6, 0) itself."""
+    text, path = _squares(tmp_path, extra0="hints = {a = [2, 0]}\n", extra1="hints = {a = [10, 0]}\n",
+                          t1="1.0\nbreakdown = 0.5\n\n[[shape.key]]\ntime = 2.0")
+    edited = api.edit_scene_text(text, path, [{"op": "bake", "shape": "box", "key": 1}])
+    key = tomllib.loads(edited)["shape"][0]["key"][1]
+    assert np.allclose(key["hints"]["a"], [6.0, 0.0], atol=1e-9), key["hints"]
+
+
 def key_line(key: dict) -> str:
     return "[" + ", ".join(f"[{_n(x)}, {_n(y)}]" for x, y in key["points"]) + "]"
 

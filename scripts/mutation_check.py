@@ -344,7 +344,7 @@ MUTANTS = [
     Mutant("vector: the keyframes given the whole bound, the curve fit's share forgotten", "tweenrender/vector/export.py",
            "return max(max_error - fitted - 2 * _ROUNDING,", "return max(max_error - 2 * _ROUNDING,", VECTOR),
     Mutant("lottie: tangents written as points, not relative to their vertex", "tweenrender/encode/lottie_values.py",
-           "np.round(points[:, 0] - vertex, DIGITS)", "np.round(points[:, 0], DIGITS)", VECTOR),
+           '"i": compact(points[:, 0] - vertex)', '"i": compact(points[:, 0])', VECTOR),
     Mutant("curves: a singular fit solved exactly", "tweenrender/vector/curves.py",
            "solve = np.linalg.pinv(normal + ridge * np.trace(normal) / 2 * np.eye(2)) @ basis.T",
            "solve = np.linalg.solve(normal + ridge * np.trace(normal) / 2 * np.eye(2), basis.T)", VECTOR),

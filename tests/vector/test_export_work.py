@@ -89,3 +89,33 @@ def test_export_work_is_linear_in_frames(tmp_path: Path, monkeypatch: pytest.Mon
         tr.write(scene, tmp_path / f"{seconds}.json")
         counts.append(sum(work.values()))
     assert counts[1] <= LINEAR * counts[0], f"work {counts[0]} for 121 frames, {counts[1]} for 481"
+
+
+@pytest.mark.parametrize("suffix", [".json", ".svg"])
+def test_a_vector_file_past_the_sample_limit_is_refused_before_any_work(cli, tmp_path: Path, suffix: str) -> None:
+    """A vector file samples every vertex at every frame before reducing them to keyframes: a triangle over
+    three days at 24 fps (6.2 million frames, allowed by ``--max-frames``) would hold 19 million vertex samples
+    (the old export took minutes to write it). It is refused at once, in one line naming the limit, and nothing is written."""
+    scene = tmp_path / "long.toml"
+    scene.write_text('size = [64, 64]\n[[shape]]\nname = "t"\n[[shape.key]]\ntime = 0.0\n'
+                     'points = [[0, 0], [1, 0], [0, 1]]\n[[shape.key]]\ntime = 259200.0\n'
+                     'points = [[0, 0], [2, 0], [0, 2]]\n')
+    out = tmp_path / f"long{suffix}"
+    sampled = []
+    monkeypatch = pytest.MonkeyPatch()
+    from tweenrender.core.timing import timeline
+
+    at = timeline.Track.at
+
+    def counting(self, times, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
+        sampled.append(len(times))
+        return at(self, times, *args, **kwargs)
+
+    monkeypatch.setattr(timeline.Track, "at", counting)
+    try:
+        code, _, err = cli("render", scene, "-o", out, "--max-frames", "10000000", "-q")
+    finally:
+        monkeypatch.undo()
+    assert code == 2, err
+    assert err.count("\n") == 1 and "vector" in err and "10,000,000" in err, err
+    assert max(sampled, default=0) < 100 and not out.exists()  # the view's few probes at most, no frame

@@ -36,7 +36,7 @@ from ..plan.job import RenderJob, scene_view, stacking_of, tracks_of
 from ..plan.options import RenderOptions
 from .paint_keys import clip_path_keys, clip_path_make, gradient_frame_paths, gradient_look, gradient_samples
 
-__all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR"]
+__all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR", "VECTOR_SAMPLES"]
 
 Array = NDArray[np.float64]
 DEFAULT_MAX_ERROR = 0.25
@@ -57,6 +57,12 @@ _ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
 _ROUNDING = 0.5 * 10.0 ** -PIXEL_DIGITS * np.sqrt(2.0)
 """How far a vertex moves when the files round its pixels to :data:`PIXEL_DIGITS` decimals (a control point, written as
 an offset from its vertex, moves twice that at most): kept out of the bound."""
+
+
+VECTOR_SAMPLES = 10_000_000
+"""Most vertex samples a vector file may take (frames × the vertices drawn at once, every shape's together):
+each is kept until the frames are reduced to keyframes (some 160 MB of coordinates at the limit, more as
+Python objects), so a clip past it is refused before any is taken."""
 
 
 RASTER_ONLY = ("compare", "paths", "onion", "strip", "workers", "cluster")
@@ -93,6 +99,7 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
     viewport = Viewport(scene_view(scene, tracks, job.methods), width, height)
     picked = job.frame_range
     offset, count = picked.start, len(picked)
+    _check_samples(tracks, count)
     times = np.arange(offset, offset + count) / job.rate
     orders, phases = _stacking(scene, tracks, times)
     placed: list[tuple[int, int, VectorRun]] = []  # (stacking phase, place in its order, run)
@@ -110,6 +117,17 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
             placed.append((int(phases[first]), orders[int(phases[first])].index(index), run))
     runs = tuple(run for _, _, run in sorted(placed, key=lambda item: item[:2]))
     return VectorClip((width, height), job.rate, count, scene.background, runs, max_error)
+
+
+def _check_samples(tracks: tuple[Track, ...], frames: int) -> None:
+    """Refuse a clip whose ``frames`` × the vertices its shapes draw at once (each shape's largest segment)
+    pass :data:`VECTOR_SAMPLES`."""
+    vertices = sum(max((sum(len(pair.k0) for pair in segment.pairs) for segment in track.segments),
+                       default=sum(len(points) for points in track.still.contours)) for track in tracks)
+    if frames * vertices > VECTOR_SAMPLES:
+        raise OptionError(f"expected a vector file of at most {VECTOR_SAMPLES:,} vertex samples (frames × vertices "
+                          f"drawn at once), found {frames:,} frames × {vertices:,} vertices = {frames * vertices:,}; "
+                          "render fewer frames (a lower --fps or a shorter range) or a video", "format")
 
 
 def _stacking(scene: Scene, tracks: tuple[Track, ...], times: Array) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:

@@ -45,3 +45,27 @@ def test_a_grid_of_squares_becoming_fewer_larger_ones_meshes_in_bounded_work(
     assert counted["crossing counts"] <= 100_000, counted
 
 
+
+
+def test_stand_ins_are_not_searched_for_more_contours_than_a_mesh_holds(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # 100 small squares becoming 25 larger ones: 75 shrink away, more than a mesh holds (the shipped icons'
+    # segments have at most 36 without a partner), so they shrink clear of the mesh without a stand-in search
+    # (whose pairwise work took 137 of 230 s for 1 000 squares becoming 250)
+    from tweenrender.core.methods import stand_ins
+    from tweenrender.core.timing import timeline
+
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text(_grid(100, 2.0, 4.0, 10, 50))
+    b.write_text(_grid(25, 6.0, 8.0, 5, 30))
+    searched = []
+    search = stand_ins.stand_ins
+
+    def counting(*args, **kwargs):  # noqa: ANN002, ANN003, ANN202
+        searched.append(len(args[2]))
+        return search(*args, **kwargs)
+
+    monkeypatch.setattr(stand_ins, "stand_ins", counting)
+    drawn = tr.contours(tr.load_scene([a, b]), 0.5)
+    assert all(np.isfinite(c.points).all() for c in drawn) and len(drawn) >= 25
+    assert all(count <= timeline.HOLD_MAX for count in searched), searched

@@ -540,10 +540,18 @@ def held_in_mesh(segment: Segment, method: str) -> frozenset[int]:
     return frozenset(i for i, _, _ in _meshed_alone(segment))
 
 
+HOLD_MAX = 64
+"""Most pairs without a partner a mesh holds in one segment (the shipped icons' segments have at most 36; held, at
+most 10): past it they grow and shrink clear of the mesh, as the stand-ins' search and the mesh grow faster than
+the pairs."""
+
+
 def _holdable(segment: Segment) -> bool:
-    """Whether a mesh could hold the segment's pairs without a partner (:func:`_meshed_alone`): it has some,
-    and moving pairs, on one timing and turn."""
-    return bool(_alone(segment)) and segment.stagger == 0 and segment.spin == 0.0 and any(p.moving for p in segment.pairs)
+    """Whether a mesh could hold the segment's pairs without a partner (:func:`_meshed_alone`): it has some, at
+    most :data:`HOLD_MAX`, and moving pairs, on one timing and turn."""
+    alone = _alone(segment)
+    return bool(alone) and len(alone) <= HOLD_MAX and segment.stagger == 0 and segment.spin == 0.0 \
+        and any(p.moving for p in segment.pairs)
 
 
 def _meshed_alone(segment: Segment) -> list[tuple[int, Array, Array]]:

@@ -181,3 +181,27 @@ def test_the_q_curves_of_a_tiny_triangle_shrinking_to_a_point_draw_quietly(tmp_p
                     ("sheet", "-o", tmp_path / "s.png")):
         done = run_module(command[0], scene, *command[1:])
         assert done.returncode == 0 and done.stderr == "", (command[0], done.stderr)
+
+
+def _squares_svg(count: int) -> str:
+    squares = " ".join(f"M{(i % 80) * 4} {(i // 80) * 4}h2v2h-2z" for i in range(count))
+    return f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 320 320"><path d="{squares}"/></svg>'
+
+
+def test_a_key_of_more_contours_than_the_limit_is_refused_naming_it(tmp_path: Path) -> None:
+    """One path of 5 001 small squares (a key of 5 000 renders in 30 s to 3 minutes here): refused before any
+    contour is paired, in one line naming the limit; a scene file's key too."""
+    a = write_scene(tmp_path, _squares_svg(5_001), "a.svg")
+    b = write_scene(tmp_path, _squares_svg(3), "b.svg")
+    for command in (("check", a, b), ("render", a, b, "-o", tmp_path / "out.mp4", "-q")):
+        result = run_module(*command)
+        assert result.returncode == 2, result.stderr
+        assert result.stderr.startswith(f"tweenrender: error: {a}: ") and result.stderr.count("\n") == 1, result.stderr
+        assert "at most 5000 contours" in result.stderr and "5001" in result.stderr, result.stderr
+    assert not (tmp_path / "out.mp4").exists()
+    square = [[0, 0], [1, 0], [1, 1], [0, 1]]
+    contours = json.dumps([[[x + 2 * i, y] for x, y in square] for i in range(5_001)])
+    scene = write_scene(tmp_path, f'size = [160, 120]\n[[shape]]\nname = "s"\n[[shape.key]]\ntime = 0\n'
+                                  f'contours = {contours}\n[[shape.key]]\ntime = 1\npoints = {json.dumps(square)}\n',
+                        "many.toml")
+    _refused(tmp_path, scene, "shape[0].key[0].contours", "at most 5000 contours", "5001")

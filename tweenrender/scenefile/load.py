@@ -15,14 +15,17 @@ import stat
 import sys
 import tomllib
 from pathlib import Path
-from typing import Any, Sequence
+from typing import TYPE_CHECKING, Any, Sequence
 
 from ..core.timing.easing import parse_easing
 from ..errors import SceneError
-from ..model import Scene
+from ..model import Scene, Shape
 from .controls import Fail
 from .scene_limits import LIMITS, check_counts, check_matching_effort
 from .scene_reader import SceneReader, fitted_size
+
+if TYPE_CHECKING:
+    from .drawings import DrawingKey
 
 __all__ = ["load_scene", "parse_scene", "drawings_scene", "LIMITS"]
 
@@ -105,8 +108,19 @@ def drawings_scene(paths: Sequence[Path], step: float = 1.0, ease: str = "linear
         return SceneError(paths[0], where or None, message)
 
     check_counts(len(shapes), sum(len(shape.keys) for shape in shapes), fail)
+    _check_contours(shapes, keys, paths)
     check_matching_effort(shapes, scene.matching, fail)
     return scene
+
+
+def _check_contours(shapes: tuple[Shape, ...], keys: Sequence[DrawingKey], paths: Sequence[Path]) -> None:
+    """Refuse an element of more contours than :data:`LIMITS` allows, naming its drawing and element."""
+    for shape in shapes:
+        for key in shape.keys:
+            if len(key.contours) > LIMITS["contours"]:
+                drawing = min(range(len(keys)), key=lambda k: abs(keys[k].time - key.time))
+                raise SceneError(paths[drawing], None, f"element {shape.name!r}: expected at most {LIMITS['contours']} "
+                                                       f"contours in a key, found {len(key.contours)}")
 
 
 def _drawing_fail(paths: Sequence[Path]) -> Fail:

@@ -26,6 +26,9 @@ LIMITS = {
     # every key is a segment to match and every shape a track drawn each frame: 8 000 keys took 6.6 s
     # to the first frame here, 8 000 shapes 1.9 s and 69 MB (100 000 took minutes, or 2 GB)
     "keys": 10_000,        # in the scene, every shape's and drawing's together
+    # a key's contours are paired, nested and placed clear of each other: one path of 5 000 small squares
+    # renders in about 30 s here, to 1 250 larger ones in about 3 minutes
+    "contours": 5_000,     # per key (a drawing's element: one path's subpaths)
     "shapes": 10_000,      # in the scene, drawings' elements included
     # every in-between blends each stop of both keys' gradients: 100 000 stops took minutes a frame
     "gradient_stops": 1_000,  # per gradient (SVG <stop>s, a Lottie gradient's p)
@@ -41,9 +44,14 @@ def check_counts(shapes: int, keys: int, fail: Fail) -> None:
 
 
 def check_matching_effort(shapes: tuple[Shape, ...], matching: Matching, fail: Fail) -> None:
-    """Refuse key pairs whose correspondence search would run for minutes (see :data:`LIMITS`)."""
+    """Refuse keys of more contours, and key pairs whose correspondence search would run for minutes, than
+    :data:`LIMITS` allows."""
     cost = matching.cost
     for i, shape in enumerate(shapes):
+        for k, key in enumerate(shape.keys):
+            if len(key.contours) > LIMITS["contours"]:
+                raise fail(f"shape[{i}].key[{k}].contours",
+                           f"expected at most {LIMITS['contours']} contours in a key, found {len(key.contours)}")
         keys = [key for key in shape.keys if key.breakdown is None]  # breakdowns take their segment's matching
         for k in range(1, len(keys)):
             counts_a = [len(c.points) for c in keys[k - 1].contours]

@@ -116,7 +116,7 @@ def _zero_view_box(text: str | None) -> bool:
         _, _, w, h = (float(v) for v in (text or "").replace(",", " ").split())
     except ValueError:
         return False
-    return math.isfinite(w) and math.isfinite(h) and min(w, h) == 0 and min(w, h) >= 0
+    return math.isfinite(w) and math.isfinite(h) and min(w, h) == 0  # neither negative, one zero
 
 
 def root_size(root: Node) -> tuple[float, float]:

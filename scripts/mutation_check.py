@@ -563,7 +563,7 @@ MUTANTS = [
     Mutant("svg reader: overflow visible still clipped", "tweenrender/scenefile/svg_viewport.py",
            'clipped = overflow.strip().lower() not in ("visible", "auto")', "clipped = True", SVG_VIEW),
     Mutant("svg reader: a viewBox of zero width accepted", "tweenrender/scenefile/svg_viewport.py",
-           "or w <= 0 or h <= 0:", "or w < 0 or h < 0:", SVG_VIEW),
+           "numbers[2] <= 0 or numbers[3] <= 0", "numbers[2] < 0 or numbers[3] < 0", SVG_VIEW),
     Mutant("svg reader: a comma between a command's numbers refused", "tweenrender/scenefile/svg_pathdata.py",
            "position = (_SEPARATORS if k else _SPACE).match(", "position = _SPACE.match(", SVG_ERRORS),
     Mutant("svg reader: arc flags read as numbers", "tweenrender/scenefile/svg_pathdata.py",

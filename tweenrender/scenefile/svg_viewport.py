@@ -64,15 +64,19 @@ def aspect_matrix(box: tuple[float, float, float, float], width: float, height: 
 def parse_view_box(text: str | None) -> tuple[float, float, float, float] | None:
     """A ``viewBox`` value as ``(x, y, width, height)``, or None when it is missing or in error (four finite
     numbers with a positive width and height are needed: SVG ignores any other)."""
-    if not text:
+    numbers = _four_numbers(text)
+    if numbers is None or numbers[2] <= 0 or numbers[3] <= 0:
         return None
+    return numbers
+
+
+def _four_numbers(text: str | None) -> tuple[float, float, float, float] | None:
+    """``text``'s four finite numbers (separated by spaces or commas), else None."""
     try:
-        x, y, w, h = (float(v) for v in text.replace(",", " ").split())
+        x, y, w, h = (float(v) for v in (text or "").replace(",", " ").split())
     except ValueError:
         return None
-    if not all(math.isfinite(v) for v in (x, y, w, h)) or w <= 0 or h <= 0:
-        return None
-    return (x, y, w, h)
+    return (x, y, w, h) if all(math.isfinite(v) for v in (x, y, w, h)) else None
 
 
 def _length(text: str | None, relative: float, default: float, font: tuple[float, float],
@@ -112,11 +116,8 @@ def renders(root: Node) -> bool:
 def _zero_view_box(text: str | None) -> bool:
     """Whether ``viewBox`` is four finite numbers with a zero width or height and neither negative (which
     disables rendering; a negative one is in error and ignored)."""
-    try:
-        _, _, w, h = (float(v) for v in (text or "").replace(",", " ").split())
-    except ValueError:
-        return False
-    return math.isfinite(w) and math.isfinite(h) and min(w, h) == 0  # neither negative, one zero
+    numbers = _four_numbers(text)
+    return numbers is not None and min(numbers[2], numbers[3]) == 0  # neither negative, one zero
 
 
 def root_size(root: Node) -> tuple[float, float]:

@@ -404,3 +404,23 @@ def test_injective_paths_carry_a_new_hole_in_their_mesh_over_the_whole_segment(t
                 assert not shapely.LinearRing(live[i]).intersects(shapely.LinearRing(live[j])), (t, i, j)
     assert grown[0] == 0.0 and grown[-1] == pytest.approx(small)
     assert all(0.0 < g for g in grown[1:]), "it grows from the first in-between on, not once the hole has passed"
+
+
+@pytest.mark.parametrize("method", ["linear", "auto"])
+def test_in_a_stroked_drawing_an_outline_grows_over_the_whole_segment_across_a_stroke_that_goes(
+        tmp_path: Path, method: str) -> None:
+    """An element drawn only by its stroke (no fill): a zigzag stroke goes while a square outline comes
+    around it. Lines crossing lines are no tangle (open strokes' crossings are counted apart), so the
+    square does not wait until the zigzag is out of its way and then appear in the last frames: each of
+    the 24 frames adds an equal share of its area, from the first in-between on."""
+    zig = '<path d="M11 8 L13 11 L11 13 L13 16" fill="none" stroke="#000" stroke-width="1"/>'
+    box = '<rect x="4" y="4" width="16" height="16" fill="none" stroke="#000" stroke-width="1"/>'
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">{zig}</svg>')
+    b.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24">{box}</svg>')
+    scene = tr.load_scene([a, b])
+    (end,) = [c.points for c in tr.contours(scene, 1.0, method) if c.closed]
+    for t in TIMES[1:-1]:
+        squares = [c.points for c in tr.contours(scene, float(t), method) if c.closed]
+        grown = area(squares[0]) if squares else 0.0  # a contour not yet begun is not reported
+        assert len(squares) <= 1 and grown == pytest.approx(t * area(end), rel=1e-9), t

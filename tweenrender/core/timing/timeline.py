@@ -430,7 +430,8 @@ def growths_of(segment: Segment, method: str, hold: bool = True) -> list[Growth 
     """How each pair without a partner comes or goes under ``method`` (None for the others, and for those
     its injective mesh holds, :func:`held_in_mesh`): placed clear of the other pairs
     (:func:`.clearance.place`) when there are others and no stagger, else about its anchor over the whole
-    segment. Without ``hold``, as if the mesh held none."""
+    segment; in an element drawn by its stroke alone (:func:`_filled`), only closed contours keep clear
+    of the closed ones. Without ``hold``, as if the mesh held none."""
     pairs = segment.pairs
     held = held_in_mesh(segment, method) if hold else frozenset()
     alone = [i for i in _alone(segment) if i not in held]
@@ -440,21 +441,32 @@ def growths_of(segment: Segment, method: str, hold: bool = True) -> list[Growth 
     for i in alone:
         grows = pairs[i].source[0] is None
         out[i] = Growth(np.asarray((pairs[i].k0 if grows else pairs[i].k1)[0], dtype=np.float64), grows)
-    moving = [i for i, p in enumerate(pairs) if p.moving]
+    filled = _filled(segment)
+    if not filled:  # lines crossing lines are no tangle: only closed outlines keep clear of one another
+        alone = [i for i in alone if pairs[i].closed]
+    moving = [i for i, p in enumerate(pairs) if p.moving and (filled or p.closed)]
     if len(alone) + len(moving) < 2 or segment.stagger > 0:
         return out
 
     def search() -> list[Growth]:
         frames = _moving_paths(segment, GRID, method, hold)
-        around = [i for i, f in enumerate(frames) if f is not None]  # the moving ones, and those a mesh holds
+        # the moving ones, and those a mesh holds
+        around = [i for i, f in enumerate(frames) if f is not None and (filled or pairs[i].closed)]
         shapes = [pairs[i].k1 if pairs[i].source[0] is None else pairs[i].k0 for i in alone]
         return place(shapes, [pairs[i].closed for i in alone], [pairs[i].source[0] is None for i in alone],
                      [out[i].point for i in alone],  # type: ignore[union-attr]
                      [frames[i] for i in around], [pairs[i].closed for i in around])
 
-    for i, growth in zip(alone, cached(_digest(segment, method + repr(sorted(held))), search)):
+    for i, growth in zip(alone, cached(_digest(segment, f"{method}{sorted(held)}{filled}"), search)):
         out[i] = growth
     return out
+
+
+def _filled(segment: Segment) -> bool:
+    """Whether either key of the segment fills its contours (a colour, gradient or pattern): else only its
+    stroke is drawn, and an open stroke crossing another contour is no tangle."""
+    return any((p.fill is not None and p.fill[3] > 0) or p.gradient is not None or p.pattern is not None
+               for p in segment.paints)
 
 
 def _digest(segment: Segment, method: str) -> bytes:

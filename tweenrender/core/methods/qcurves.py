@@ -300,7 +300,6 @@ def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array],
 
 STRAY_LIMIT = 0.02
 """The stray (maths §5.16) beyond the straight paths' that an in-between may have for ``auto`` to take it."""
-_DETOUR = 0.10  # the stray beyond straight paths' a method that tangles at fewer t may take to go round
 QUALITY_T = np.arange(1, 20) / 20.0
 """The t at which ``auto`` measures its candidates: .05, .10, … .95."""
 _CACHED = 512  # shapes whose measured choice is kept (frames are evaluated block by block)
@@ -349,9 +348,10 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     Q-curves' rigid turn), straight paths with spread copies, and injective paths: the first whose
     in-betweens never tangle and stray at most :data:`STRAY_LIMIT` more than the straight paths do (they
     sweep what the motion itself sweeps; a rigid turn's arc is the turn itself, so ``nonlinear`` needs no
-    tangle only); else, of those straying at most ``_DETOUR`` more than the straight paths (a way round
-    may leave the keys a little), the one tangling at the fewest t (straight paths, in the list's order,
-    on a tie): by these measures, over the contours that move, never more tangled than straight paths.
+    tangle only); else, of those straying at most as much more (a way round that leaves the keys looks
+    worse than straight paths that cross), the one tangling at the fewest t (straight paths, in the
+    list's order, on a tie): by these measures, over the contours that move, never more tangled than
+    straight paths, nor straying more than :data:`STRAY_LIMIT` past them.
     ``first``'s reason stands where it passes; elsewhere the measures are the reason."""
     k0s = [np.asarray(k, dtype=np.float64) for k in k0s]
     k1s = [np.asarray(k, dtype=np.float64) for k in k1s]
@@ -393,10 +393,10 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
         if crossed == 0 and (stray <= limit or candidate.method == "nonlinear"):
             chosen = candidate if rank == 0 else replace(candidate, why=f"{first.why}; {_measures(scores)}")
             break
-    if chosen is None:  # none passes: the least tangled of those that stray not much more than straight paths
-        kept = [s for s in scores if s[1] <= limit + _DETOUR or s[3].method == "nonlinear"]
+    if chosen is None:  # none passes: the least tangled of those that stray no more than the limit
+        kept = [s for s in scores if s[1] <= limit or s[3].method == "nonlinear"]
         best = min(kept, key=lambda s: (s[0], s[2]))[3]
-        chosen = replace(best, why=f"{first.why}; {_measures(scores)}; {best.method} the least tangled without sweeping far")
+        chosen = replace(best, why=f"{first.why}; {_measures(scores)}; {best.method} the least tangled of those that stray no further")
     _remember(key, chosen)
     return chosen
 

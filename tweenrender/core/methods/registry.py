@@ -113,7 +113,7 @@ REGISTRY: dict[str, Method] = {m.name: m for m in (
            "each triangle turning and stretching by a share of its own change, made injective by projection"),
     Method("auto", _auto,
            "by measured quality: nonlinear where the Q-curves show a rigid turn and it does not tangle; else "
-           "straight paths where they do not tangle; else injective where it tangles less without sweeping far"),
+           "straight paths where they do not tangle; else injective where it tangles less without straying further"),
 )}
 
 METHODS: tuple[str, ...] = tuple(REGISTRY)

@@ -119,3 +119,24 @@ def test_drawings_with_too_many_elements_are_refused_before_pairing(tmp_path: Pa
         tr.load_scene([a, b])
     assert str(caught.value) == (f"{a}: expected at most 10000 keys in the scene, found 10002 "
                                  "(one for each element of each drawing)")
+
+
+
+def test_of_drawings_drawn_by_strokes_alone_an_outline_pairs_with_an_outline_not_with_lines() -> None:
+    """lucide's circle-check becoming its sun (both drawn by their strokes): the tick is nearer the sun's
+    ring in size and place than the big ring is, but a tick's line and a ring's outline cannot morph one into
+    the other (one would only shrink away as the other grows), so the ring becomes the ring."""
+    import tweenrender as tr
+    from tweenrender.core.timing.timeline import tracks_of
+
+    def radius(points: np.ndarray) -> float:  # of a circle's polygon, from its shoelace area
+        x, y = points[:, 0], points[:, 1]
+        return float(np.sqrt(abs(0.5 * np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)) / np.pi))
+
+    icons = Path(__file__).resolve().parents[1] / "data" / "icons" / "lucide"
+    for circle in ('<circle cx="12" cy="12" r="10"', '<circle cx="12" cy="12" r="4"'):
+        assert circle in ((icons / "circle-check.svg").read_text() + (icons / "sun.svg").read_text())
+    scene = tr.load_scene([icons / "circle-check.svg", icons / "sun.svg"])
+    rings = [(radius(p.k0), radius(p.k1)) for track in tracks_of(scene) for segment in track.segments
+             for p in segment.pairs if p.moving and p.closed]
+    assert len(rings) == 1 and rings[0] == (pytest.approx(10.0, rel=0.01), pytest.approx(4.0, rel=0.01))

@@ -40,7 +40,7 @@ __all__ = ["DrawingKey", "read_drawings", "drawing_shapes", "with_breakdowns"]
 _POSITION_WEIGHT = 2.0
 _SIZE_WEIGHT = 0.5
 _COLOR_WEIGHT = 1.0
-_KIND_COST = 0.5  # a filled element with a stroke-only one
+_KIND_COST = 0.5  # a filled element with a stroke-only one; of two stroke-only ones, outlines with lines
 _UNMATCHED_COST = 0.6  # leaving an element without a partner: beyond this, it goes and another comes
 _ROWS = 256  # rows of the cost matrix computed at once
 _SETTLING = 4  # passes placing the elements that come or go in the paint order
@@ -240,17 +240,18 @@ def _costs(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> np.nd
     """The cost of pairing each element of ``a`` with each of ``b``: ``(len(a), len(b))``."""
     from ..core.paint import srgb_to_oklab
 
-    def features(elements: Sequence[Element]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    def features(elements: Sequence[Element]) -> tuple[np.ndarray, ...]:
         centres = np.array([_centre(e) for e in elements])
         sizes = np.log([_size(e) for e in elements])
         colours = [e.paint.fill or e.paint.stroke for e in elements]
         lab = srgb_to_oklab(np.array([c[:3] if c is not None else (0, 0, 0) for c in colours], float) / 255.0)
         lab[[c is None for c in colours]] = np.nan
         filled = np.array([e.paint.fill is not None for e in elements])
-        return centres, sizes, lab, filled
+        looped = np.array([_looped(e) for e in elements])
+        return centres, sizes, lab, filled, looped
 
-    ca, sa, la, fa = features(a)
-    cb, sb, lb, fb = features(b)
+    ca, sa, la, fa, oa = features(a)
+    cb, sb, lb, fb, ob = features(b)
     cost = np.empty((len(a), len(b)))
     for start in range(0, len(a), _ROWS):  # a block of rows at a time: no (m, n, 3) differences in memory
         rows = slice(start, start + _ROWS)
@@ -260,6 +261,9 @@ def _costs(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> np.nd
         colour = np.sqrt(sum((la[rows, None, q] - lb[None, :, q]) ** 2 for q in range(3)))
         block += _COLOR_WEIGHT * np.nan_to_num(colour, nan=0.0)  # an element without colour matches any
         block += _KIND_COST * (fa[rows, None] != fb[None])
+        # two elements drawn by their strokes alone, an outline and lines: their contours cannot pair, so
+        # one would only shrink away while the other grows
+        block += _KIND_COST * (~fa[rows, None] & ~fb[None] & (oa[rows, None] != ob[None]))
         cost[rows] = block
     return cost
 
@@ -268,6 +272,13 @@ def _centre(element: Element) -> np.ndarray:
     """The centre of the element's bounding box."""
     every = np.concatenate([c.points for c in element.contours])
     return 0.5 * (every.min(axis=0) + every.max(axis=0))
+
+
+def _looped(element: Element) -> bool:
+    """Whether any of the element's contours is closed, or a stroke whose ends meet (an outline)."""
+    size = _size(element)
+    return any(c.closed or (len(c.points) > 2 and float(np.hypot(*(c.points[0] - c.points[-1]))) <= 1e-6 * size)
+               for c in element.contours)
 
 
 def _size(element: Element) -> float:

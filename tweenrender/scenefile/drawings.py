@@ -242,12 +242,13 @@ def _costs(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> np.nd
 
     def features(elements: Sequence[Element]) -> tuple[np.ndarray, ...]:
         centres = np.array([_centre(e) for e in elements])
-        sizes = np.log([_size(e) for e in elements])
+        extents = [_size(e) for e in elements]
+        sizes = np.log(extents)
         colours = [e.paint.fill or e.paint.stroke for e in elements]
         lab = srgb_to_oklab(np.array([c[:3] if c is not None else (0, 0, 0) for c in colours], float) / 255.0)
         lab[[c is None for c in colours]] = np.nan
         filled = np.array([e.paint.fill is not None for e in elements])
-        looped = np.array([_looped(e) for e in elements])
+        looped = np.array([_looped(e, extent) for e, extent in zip(elements, extents)])
         return centres, sizes, lab, filled, looped
 
     ca, sa, la, fa, oa = features(a)
@@ -274,9 +275,9 @@ def _centre(element: Element) -> np.ndarray:
     return 0.5 * (every.min(axis=0) + every.max(axis=0))
 
 
-def _looped(element: Element) -> bool:
-    """Whether any of the element's contours is closed, or a stroke whose ends meet (an outline)."""
-    size = _size(element)
+def _looped(element: Element, size: float) -> bool:
+    """Whether any of the element's contours is closed, or a stroke whose ends meet (an outline); ``size`` is
+    the element's (:func:`_size`)."""
     return any(c.closed or (len(c.points) > 2 and float(np.hypot(*(c.points[0] - c.points[-1]))) <= 1e-6 * size)
                for c in element.contours)
 

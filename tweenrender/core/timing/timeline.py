@@ -749,7 +749,7 @@ def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequen
     def sign(points: Array) -> float:
         return float(np.sign(signed_area(points))) if len(points) >= 3 else 0.0
 
-    first, second, relation, biggest, outer = [], [], False, -1.0, (0.0, 0.0)
+    first, second, biggest, outer = [], [], -1.0, (0.0, 0.0)
     for pair in pairs:
         i, j = pair.source
         flip0 = i is not None and sign(pair.k0) * sign(before[i].points) < 0
@@ -759,8 +759,8 @@ def key_windings(pairs: Sequence[Pair], before: Sequence[Contour], after: Sequen
         if pair.moving and pair.closed and len(pair.k0) >= 3:
             size = abs(signed_area(pair.k0)) + abs(signed_area(pair.k1))
             if size > biggest:
-                biggest, relation = size, (sign(before[i].points) * sign(after[j].points) < 0)  # type: ignore[index]
-                outer = (sign(before[i].points), sign(after[j].points))  # type: ignore[index]
+                biggest, outer = size, (sign(before[i].points), sign(after[j].points))  # type: ignore[index]
+    relation = outer[0] * outer[1] < 0  # the largest moving pair's two keys wind oppositely
     depths = [_depth_signs(keyed) if rules[end] == "evenodd" and rules[1 - end] == "nonzero" else None
               for end, keyed in enumerate((before, after))]
     for n, pair in enumerate(pairs):

@@ -109,61 +109,32 @@ def test_a_stretched_key_is_reached_through_the_blended_stretch() -> None:
         assert np.abs((found - found.mean(axis=0)) - expected).max() < 0.01, t
 
 
-def _projected_everywhere(solve: ShapeKeepingSolve, s: float, convex: np.ndarray) -> np.ndarray:
-    """The local-global projection as maths §5.16 states it, every triangle's Jacobian and floor worked
-    out at every round (the solve decomposes only the flipped triangles')."""
-    from tweenrender.core.methods import bounded_distortion as bd
-
-    tri = solve.tri
-
-    def orientation(x: np.ndarray) -> np.ndarray:
-        a, b = x[tri[:, 1]] - x[tri[:, 0]], x[tri[:, 2]] - x[tri[:, 0]]
-        return a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
-
-    goal = solve.targets(s)
-    floor = bd._FLOOR * np.linalg.svd(goal, compute_uv=False)[:, 1]
-    x = solve._solve(goal, convex)
-    for _ in range(bd._ROUNDS):
-        bad = solve.good & (orientation(x) <= 0.0)
-        if not bad.any():
-            return x
-        edges = np.stack([x[tri[:, 1]] - x[tri[:, 0]], x[tri[:, 2]] - x[tri[:, 0]]], axis=-1)
-        u, sigma, vt = np.linalg.svd((edges @ solve.inv0)[bad])
-        flipped = np.linalg.det(u) * np.linalg.det(vt) < 0
-        u[flipped, :, 1] *= -1.0
-        sigma[flipped, 1] *= -1.0
-        sigma = np.maximum(sigma, floor[bad][:, None])
-        goal = goal.copy()
-        goal[bad] = (u * sigma[:, None, :]) @ vt
-        x = solve._solve(goal, convex)
-    ok = solve._valid(x)
-    return x if ok else next((m for share in bd._BLENDS if solve._valid(m := share * x + (1 - share) * convex)),
-                             convex)
+# pairs whose shape-keeping targets cannot all keep their orientation at once: the in-between must still
+# keep close to them, not fall back to the convex-combination solve (edges stretched 30–47 % off the rest)
+UNKEPT = [("lucide/moon", "lucide/star"), ("lucide/smile", "mdi/weather-sunny"), ("lucide/heart", "octicons/moon-24")]
 
 
-def test_only_the_flipped_triangles_are_decomposed_and_the_answer_is_the_same(monkeypatch: pytest.MonkeyPatch
-                                                                              ) -> None:
-    solve, mesh = _solve_for("heroicons/star", "feather/x-circle")
-    expected = {s: _projected_everywhere(solve, s, mesh.p0) for s in (0.25, 0.5, 0.75)}
-    sizes: list[int] = []
-    svd = np.linalg.svd
+def _edge_spread(key0: list, now: list, key1: list, t: float) -> float:
+    """How unevenly the edges stretch: each edge's log length at ``t`` over the blend of its key lengths,
+    the length-weighted mean distance of those logs from their mean (a similarity scores 0)."""
+    logs, weights = [], []
+    side = float(np.ptp(np.concatenate([c.points for c in key0 + key1]), axis=0).max())
+    for a, m, b in zip(key0, now, key1):
+        rings = [np.vstack([c.points, c.points[:1]]) if c.closed else c.points for c in (a, m, b)]
+        l0, lt, l1 = (np.hypot(*np.diff(r, axis=0).T) for r in rings)
+        blend = (1 - t) * l0 + t * l1
+        use = blend > 1e-4 * side
+        logs.append(np.log(lt[use] / blend[use]))
+        weights.append(blend[use])
+    w, x = np.concatenate(weights), np.concatenate(logs)
+    return float(np.sum(w * np.abs(x - np.sum(w * x) / w.sum())) / w.sum())
 
-    def counted(a, *args, **kwargs):  # type: ignore[no-untyped-def]
-        sizes.append(len(a))
-        return svd(a, *args, **kwargs)
 
-    monkeypatch.setattr(np.linalg, "svd", counted)
-    for s, x in expected.items():
-        assert np.array_equal(solve(s, mesh.p0), x), s  # bit for bit
-    assert sizes and max(sizes) < len(mesh.triangles)  # never every triangle's
-
-
-def test_a_stack_of_2x2_matrices_is_decomposed_as_each_alone() -> None:
-    # what deciding only the flipped triangles relies on: a 2 × 2's SVD and product do not depend on its stack
-    rng = np.random.default_rng(5)
-    stack, other = rng.normal(size=(500, 2, 2)), rng.normal(size=(500, 2, 2))
-    pick = rng.choice(500, size=37, replace=False)
-    for whole, part in zip(np.linalg.svd(stack), np.linalg.svd(stack[pick])):
-        assert np.array_equal(whole[pick], part)
-    assert np.array_equal(np.linalg.svd(stack, compute_uv=False)[pick], np.linalg.svd(stack[pick], compute_uv=False))
-    assert np.array_equal((stack @ other)[pick], stack[pick] @ other[pick])
+@pytest.mark.parametrize("a, b", UNKEPT, ids=[f"{a}->{b}" for a, b in UNKEPT])
+def test_where_no_solve_keeps_every_target_the_in_betweens_still_keep_their_shape(a: str, b: str) -> None:
+    scene = tr.load_scene([ICONS / f"{a}.svg", ICONS / f"{b}.svg"])
+    ends = [tr.contours(scene, t, method="injective", points=True) for t in (1e-6, 1 - 1e-6)]
+    assert [len(c.points) for c in ends[0]] == [len(c.points) for c in ends[1]]
+    for t in T:
+        now = tr.contours(scene, float(t), method="injective", points=True)
+        assert _edge_spread(ends[0], now, ends[1], float(t)) <= 0.15, f"t = {t}"

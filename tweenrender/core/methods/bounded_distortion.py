@@ -11,12 +11,19 @@ after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013
 2. the vertices solve the least-squares fit of every triangle's Jacobian to its target, the frame
    held (one sparse factorisation for all t), triangles weighted by area, those between the
    contours (not inside any filled region) lightly: the shape's own triangles decide its form;
-3. where a triangle would flip (det ≤ 0), its target becomes the nearest Jacobian with a positive
-   determinant and singular values no less than ``_FLOOR`` of its target's least (projection onto
-   a bounded-distortion set); a few rounds of this local-global projection (the factorisation kept)
-   end where every triangle keeps its orientation;
-4. where they do not, the solve is blended toward the convex-combination solve (valid by Tutte and
-   Floater) by the least share that makes every triangle keep its orientation.
+3. where a triangle would flip (det ≤ 0) — on real drawings, most in-betweens: a growing contour's
+   triangles, an overlay's twisted ones — the vertices are projected onto the injective set: they
+   descend from a valid start toward the targets, never letting a triangle turn over
+   (:mod:`.mesh_distortion`). The start for ``s`` is the kept vertices at the grid point
+   ``k / _GRID`` just below it, each grid point reached from the one before and the first from key 0:
+   it depends on ``s`` alone (a render's blocks of frames and a report's measures agree), and starts
+   near its own targets, so a few rounds do. Where the convex-combination solve (valid by Tutte and
+   Floater) is nearer the targets by that energy — the descent held back behind a triangle it may not
+   turn over, as when two pieces trade places — that solve is taken as it is. A local-global projection
+   (each flipped triangle's target replaced by the nearest Jacobian with a positive determinant) and then
+   a blend toward the convex-combination solve, as this step did before, turned the flipped triangles
+   back at almost no in-between of real pairs and kept almost nothing of the fit: measured on held-out
+   pairs in docs/methods.md.
 
 Every triangle positively oriented and the frame convex and held make the mesh an embedding at
 every t (a locally injective map with a simple boundary is injective), so no contour crosses itself
@@ -30,15 +37,16 @@ from numpy.typing import NDArray
 
 from ..contours import inside
 from .compatible import CompatibleMesh
+from .mesh_distortion import distortion, gradient_operator, least_distortion
 
 __all__ = ["ShapeKeepingSolve", "material_triangles"]
 
 Array = NDArray[np.float64]
 
 _AIR = 1e-2  # weight of a triangle between the contours, against one inside a filled region
-_FLOOR = 0.25  # a projected triangle keeps this share of its target's least singular value
-_ROUNDS = 12  # projection rounds at most
-_BLENDS = (0.875, 0.75, 0.5, 0.25, 0.125, 0.0)  # shares of the shape-keeping solve tried, else
+_GRID = 8  # the descent for s starts from the kept vertices at the grid point k / _GRID below s
+_DESCENT = 4  # rounds of the descent toward the targets, at most
+_LINK = 15  # and for a grid point, which every s above it starts from
 
 
 def material_triangles(mesh: CompatibleMesh, cuts: list[int], closed: list[bool]) -> NDArray[np.bool_]:
@@ -74,25 +82,12 @@ class ShapeKeepingSolve:
         self.stretch = np.einsum("fji,fj,fjk->fik", vt, sigma, vt)  # Vᵀ Σ V: symmetric, positive definite
         area = 0.25 * (np.abs(d0) + np.abs(d1))
         self.base = np.where(self.good, area * np.where(material, 1.0, _AIR), 0.0)
-        self.operator = self._gradient()
+        self.operator = gradient_operator(tri, inv0, len(p0))
         fixed = np.zeros(len(p0), dtype=bool)
         fixed[mesh.frame] = True
         self.free, self.fixed = np.flatnonzero(~fixed), np.flatnonzero(fixed)
         self._system: tuple[object, object, Array, float] | None = None
-
-    def _gradient(self):  # noqa: ANN202 - a scipy sparse matrix
-        """The ``(2F, V)`` operator taking one coordinate of the vertices to the Jacobians' rows:
-        row ``2j + k`` is ``∂(that coordinate)/∂(key-0 coordinate k)`` on triangle j."""
-        from scipy.sparse import csr_matrix
-
-        tri, inv0 = self.tri, self.inv0
-        f = len(tri)
-        rows = np.repeat(np.arange(2 * f), 3)
-        a, b, c = (np.repeat(tri[:, i], 2) for i in range(3))
-        ga, gb = inv0[:, 0, :].reshape(-1), inv0[:, 1, :].reshape(-1)  # row 2j+k: inv0[j, 0, k], inv0[j, 1, k]
-        cols = np.stack([a, b, c], axis=1).reshape(-1)
-        values = np.stack([-(ga + gb), ga, gb], axis=1).reshape(-1)
-        return csr_matrix((values, (rows, cols)), shape=(2 * f, len(self.mesh.p0)))
+        self._chain: dict[int, Array] = {}
 
     def targets(self, s: float) -> Array:
         """Each triangle's Jacobian at ``s``: ``R(s·θ)·((1 − s)·I + s·S)``, ``(F, 2, 2)``."""
@@ -136,35 +131,30 @@ class ShapeKeepingSolve:
         if s >= 1.0:
             return np.array(self.mesh.p1)
         target = self.targets(s)
-        goal = target
-        x = self._solve(goal, convex)
-        for _ in range(_ROUNDS):
-            bad = np.flatnonzero(self.good & (self._orientation(x) <= 0.0))
-            if not len(bad):
-                return x
-            # each 2 × 2 is decomposed alone, in a stack or not: only the triangles to project are
-            u, sigma, vt = np.linalg.svd(self._jacobians(x, bad))
-            flipped = np.linalg.det(u) * np.linalg.det(vt) < 0
-            u[flipped, :, 1] *= -1.0  # signed SVD: U, Vᵀ rotations, the smaller value carries the sign
-            sigma[flipped, 1] *= -1.0
-            floor = _FLOOR * np.linalg.svd(target[bad], compute_uv=False)[:, 1]  # of its target's least stretch
-            sigma = np.maximum(sigma, floor[:, None])
-            goal = goal.copy()
-            goal[bad] = (u * sigma[:, None, :]) @ vt
-            x = self._solve(goal, convex)
+        x = self._solve(target, convex)
         if self._valid(x):
             return x
-        for share in _BLENDS:
-            mixed = share * x + (1.0 - share) * convex
-            if self._valid(mixed):
-                return mixed
-        return convex
+        rest = self._rest(target)
+        kept = least_distortion(self._link(int(s * _GRID)), self.tri, rest, self.base, self.free, _DESCENT)
+        if not self._valid(kept) or distortion(convex, self.tri, rest, self.base) <= distortion(kept, self.tri, rest,
+                                                                                                 self.base):
+            return convex  # the descent held back by a triangle it may not turn over (pieces trading places)
+        return kept
 
-    def _jacobians(self, x: Array, which: NDArray[np.intp]) -> Array:
-        """The Jacobians ``(K, 2, 2)`` of triangles ``which (K,)`` at vertices ``x (V, 2)``."""
-        t = self.tri[which]
-        e = np.stack([x[t[:, 1]] - x[t[:, 0]], x[t[:, 2]] - x[t[:, 0]]], axis=-1)
-        return e @ self.inv0[which]
+    def _rest(self, target: Array) -> Array:
+        """The inverse edge matrices ``(F, 2, 2)`` of the triangles as ``target (F, 2, 2)`` shapes them."""
+        return self.inv0 @ np.linalg.inv(target)
+
+    def _link(self, k: int) -> Array:
+        """The kept vertices ``(V, 2)`` at ``s = k / _GRID``, each reached from the one before (key 0 at k = 0):
+        every ``s`` then starts near its own targets, from a start that depends on ``s`` alone."""
+        if k <= 0:
+            return self.mesh.p0
+        found = self._chain.get(k)
+        if found is None:
+            found = self._chain[k] = least_distortion(self._link(k - 1), self.tri, self._rest(self.targets(k / _GRID)),
+                                                     self.base, self.free, _LINK)
+        return found
 
 
 def _identity(size: int):  # noqa: ANN202 - a scipy sparse matrix

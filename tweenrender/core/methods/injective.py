@@ -17,8 +17,8 @@ After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
    t, so no contour crosses itself or another, and a hole stays in its outline;
 4. that solve is valid but lets the shape wander and distort; the in-between drawn is the
    shape-keeping solve of :mod:`.bounded_distortion` (each triangle turning and stretching by
-   a share of its own change, made injective by projection), blended toward step 3's where it
-   alone cannot keep every triangle's orientation;
+   a share of its own change, made injective by projection), reached by a descent that never turns
+   a triangle over where it alone cannot keep every triangle's orientation;
 5. the contours are centred (their vertex mean follows the straight path) and scaled about it
    to the keys' interpolated area, ``(1-t)·A0 + t·A1`` (closed contours' signed areas summed):
    a similarity keeps them simple;

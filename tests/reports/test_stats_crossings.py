@@ -48,10 +48,13 @@ def test_crossings_per_method_match_an_exact_brute_force(tmp_path: Path) -> None
     brute = [float(t) for t, f in zip(SWEEP, frames) if tangled([f], [True], [None])]
     assert brute and flap["linear"]["crossings"] == brute
     assert flap["injective"]["crossings"] == []
-    # the injective way round leaves both keys (stray 0.093 against the straight paths' 0.012): auto keeps
+    # the injective way round leaves both keys (stray 0.138 against the straight paths' 0.012): auto keeps
     # the straight paths, which need no copies here, and says why
     assert shapes["flap"]["auto"]["method"] == "linear"
-    assert "injective: tangled at 0 of 19 t, stray 0.093" in shapes["flap"]["auto"]["why"]
+    why = shapes["flap"]["auto"]["why"]
+    assert "linear: tangled at" in why and "injective: tangled at 0 of 19 t, stray " in why
+    strays = {m: float(why.split(f"{m}: tangled at")[1].split("stray ")[1][:5]) for m in ("linear", "injective")}
+    assert strays["injective"] > strays["linear"] + 0.02, why
     assert flap["auto"]["crossings"] == brute
     for method, measured in flap.items():
         assert isinstance(measured["crossings"], list), method

@@ -14,12 +14,14 @@ after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013
 3. where a triangle would flip (det ≤ 0) — on real drawings, most in-betweens: a growing contour's
    triangles, an overlay's twisted ones — the vertices are projected onto the injective set: they
    descend from a valid start toward the targets, never letting a triangle turn over
-   (:mod:`.mesh_distortion`). The start for ``s`` is the kept vertices at the grid point
-   ``k / _GRID`` just below it, each grid point reached from the one before and the first from key 0:
-   it depends on ``s`` alone (a render's blocks of frames and a report's measures agree), and starts
-   near its own targets, so a few rounds do. Where the convex-combination solve (valid by Tutte and
-   Floater) is nearer the targets by that energy — the descent held back behind a triangle it may not
-   turn over, as when two pieces trade places — that solve is taken as it is. A local-global projection
+   (:mod:`.mesh_distortion`). They do so at ``_GRID − 1`` grid points ``k / _GRID``, each the nearer to its
+   targets of two descents, one from the grid point below (reached the same way from key 0), one from the
+   grid point above (from key 1); an in-between is the blend of the two grid points about it, continuous in
+   ``s`` and ending on the keys, or, where that blend turns a triangle over, a descent from the nearer.
+   It depends on ``s`` alone, so a render's blocks of frames and a report's measures agree. Where the
+   convex-combination solve (valid by Tutte and Floater) is nearer the targets by that energy — the
+   descent held back behind a triangle it may not turn over, as when two pieces trade places — that
+   solve is taken as it is. A local-global projection
    (each flipped triangle's target replaced by the nearest Jacobian with a positive determinant) and then
    a blend toward the convex-combination solve, as this step did before, turned the flipped triangles
    back at almost no in-between of real pairs and kept almost nothing of the fit: measured on held-out
@@ -44,9 +46,9 @@ __all__ = ["ShapeKeepingSolve", "material_triangles"]
 Array = NDArray[np.float64]
 
 _AIR = 1e-2  # weight of a triangle between the contours, against one inside a filled region
-_GRID = 8  # the descent for s starts from the kept vertices at the grid point k / _GRID below s
-_DESCENT = 4  # rounds of the descent toward the targets, at most
-_LINK = 15  # and for a grid point, which every s above it starts from
+_GRID = 16  # grid points between the keys whose kept vertices the in-betweens between them blend
+_LINK = 15  # rounds of the descent toward a grid point's targets, at most
+_DESCENT = 4  # and toward an in-between's, where the blend of its grid points turns a triangle over
 
 
 def material_triangles(mesh: CompatibleMesh, cuts: list[int], closed: list[bool]) -> NDArray[np.bool_]:
@@ -88,6 +90,7 @@ class ShapeKeepingSolve:
         self.free, self.fixed = np.flatnonzero(~fixed), np.flatnonzero(fixed)
         self._system: tuple[object, object, Array, float] | None = None
         self._chain: dict[int, Array] = {}
+        self._sides: dict[tuple[int, int], Array] = {}
 
     def targets(self, s: float) -> Array:
         """Each triangle's Jacobian at ``s``: ``R(s·θ)·((1 − s)·I + s·S)``, ``(F, 2, 2)``."""
@@ -135,7 +138,12 @@ class ShapeKeepingSolve:
         if self._valid(x):
             return x
         rest = self._rest(target)
-        kept = least_distortion(self._link(int(s * _GRID)), self.tri, rest, self.base, self.free, _DESCENT)
+        k = min(int(s * _GRID), _GRID - 1)
+        share = s * _GRID - k
+        below, above = self._link(k), self._link(k + 1)
+        kept = (1.0 - share) * below + share * above  # the grid points' answers, blended: continuous in s
+        if not self._valid(kept):
+            kept = least_distortion(below if share <= 0.5 else above, self.tri, rest, self.base, self.free, _DESCENT)
         if not self._valid(kept) or distortion(convex, self.tri, rest, self.base) <= distortion(kept, self.tri, rest,
                                                                                                  self.base):
             return convex  # the descent held back by a triangle it may not turn over (pieces trading places)
@@ -146,14 +154,39 @@ class ShapeKeepingSolve:
         return self.inv0 @ np.linalg.inv(target)
 
     def _link(self, k: int) -> Array:
-        """The kept vertices ``(V, 2)`` at ``s = k / _GRID``, each reached from the one before (key 0 at k = 0):
-        every ``s`` then starts near its own targets, from a start that depends on ``s`` alone."""
+        """The kept vertices ``(V, 2)`` at grid point ``s = k / _GRID`` (key 0 at k = 0, key 1 at k = _GRID): the fit
+        of the targets where it turns no triangle over, else the nearer to them (by the energy the descent lowers)
+        of the descents from the grid points on either side, each reached the same way from its key; each
+        grid point thus starts near its own targets and depends on ``k`` alone."""
         if k <= 0:
             return self.mesh.p0
+        if k >= _GRID:
+            return self.mesh.p1
         found = self._chain.get(k)
         if found is None:
-            found = self._chain[k] = least_distortion(self._link(k - 1), self.tri, self._rest(self.targets(k / _GRID)),
-                                                     self.base, self.free, _LINK)
+            target = self.targets(k / _GRID)
+            found = self._solve(target, self.mesh.p0)
+            if not self._valid(found):
+                rest = self._rest(target)
+                found = min((self._side(k, -1), self._side(k, 1)), key=lambda x: distortion(x, self.tri, rest, self.base))
+            self._chain[k] = found
+        return found
+
+    def _side(self, k: int, step: int) -> Array:
+        """The kept vertices ``(V, 2)`` at grid point ``k`` reached from one key alone, grid point by grid point
+        (``step`` −1: from key 0 upward, each from the one below; +1: from key 1 downward)."""
+        if k <= 0:
+            return self.mesh.p0
+        if k >= _GRID:
+            return self.mesh.p1
+        found = self._sides.get((k, step))
+        if found is None:
+            target = self.targets(k / _GRID)
+            found = self._solve(target, self.mesh.p0)
+            if not self._valid(found):
+                found = least_distortion(self._side(k + step, step), self.tri, self._rest(target), self.base,
+                                         self.free, _LINK)
+            self._sides[(k, step)] = found
         return found
 
 

@@ -138,3 +138,33 @@ def test_where_no_solve_keeps_every_target_the_in_betweens_still_keep_their_shap
     for t in T:
         now = tr.contours(scene, float(t), method="injective", points=True)
         assert _edge_spread(ends[0], now, ends[1], float(t)) <= 0.15, f"t = {t}"
+
+
+def test_the_descent_keeps_within_its_work_bound(monkeypatch: pytest.MonkeyPatch) -> None:
+    # counted work, not seconds: every SLIM round of a mesh's grid points and in-betweens is counted; a mesh
+    # whose grid points would pass the bound takes fewer rounds each, and one too large for a single round
+    # takes the convex-combination solve as it is
+    from tweenrender.core.methods import bounded_distortion as bd
+    from tweenrender.core.methods import mesh_distortion as md
+
+    rounds: list[int] = []
+    step = md._slim_goal
+
+    def counted(*args, **kwargs):  # type: ignore[no-untyped-def]
+        rounds.append(1)
+        return step(*args, **kwargs)
+
+    monkeypatch.setattr(md, "_slim_goal", counted)
+    solve, mesh = _solve_for("lucide/moon", "lucide/star")
+    triangles = len(mesh.triangles)
+    for s in T:
+        solve(float(s), mesh.p0)
+    per_link = min(bd._LINK, bd._WORK // (2 * (bd._GRID - 1) * triangles))
+    assert 0 < len(rounds) <= 2 * (bd._GRID - 1) * per_link + len(T) * bd._DESCENT
+    monkeypatch.setattr(bd, "_WORK", 2 * (bd._GRID - 1) * triangles - 1)  # not one round per grid point
+    solve, mesh = _solve_for("lucide/moon", "lucide/star")
+    rounds.clear()
+    for s in (0.3, 0.5, 0.7):
+        convex = mesh.p0 + 0.0
+        assert solve(s, convex) is convex or np.array_equal(solve(s, convex), convex)
+    assert rounds == []

@@ -18,7 +18,10 @@ after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013
    targets of two descents, one from the grid point below (reached the same way from key 0), one from the
    grid point above (from key 1); an in-between is the blend of the two grid points about it, continuous in
    ``s`` and ending on the keys, or, where that blend turns a triangle over, a descent from the nearer.
-   It depends on ``s`` alone, so a render's blocks of frames and a report's measures agree. Where the
+   It depends on ``s`` alone, so a render's blocks of frames and a report's measures agree. The grid
+   points' descents take at most ``_WORK`` triangle-rounds in all (each round a sparse factorisation):
+   a larger mesh takes fewer rounds a grid point, and one too large for a round each (above some 20 000
+   triangles) the convex-combination solve as it is. Where the
    convex-combination solve (valid by Tutte and Floater) is nearer the targets by that energy — the
    descent held back behind a triangle it may not turn over, as when two pieces trade places — that
    solve is taken as it is. A local-global projection
@@ -49,6 +52,7 @@ _AIR = 1e-2  # weight of a triangle between the contours, against one inside a f
 _GRID = 16  # grid points between the keys whose kept vertices the in-betweens between them blend
 _LINK = 15  # rounds of the descent toward a grid point's targets, at most
 _DESCENT = 4  # and toward an in-between's, where the blend of its grid points turns a triangle over
+_WORK = 600_000  # triangle-rounds of descent a mesh's grid points may take in all (fewer rounds on larger meshes)
 
 
 def material_triangles(mesh: CompatibleMesh, cuts: list[int], closed: list[bool]) -> NDArray[np.bool_]:
@@ -91,6 +95,8 @@ class ShapeKeepingSolve:
         self._system: tuple[object, object, Array, float] | None = None
         self._chain: dict[int, Array] = {}
         self._sides: dict[tuple[int, int], Array] = {}
+        # rounds of the descent per grid point, within the work bound (0: the mesh takes the convex solve)
+        self.rounds = min(_LINK, int(_WORK // (2 * (_GRID - 1) * max(len(tri), 1))))
 
     def targets(self, s: float) -> Array:
         """Each triangle's Jacobian at ``s``: ``R(s·θ)·((1 − s)·I + s·S)``, ``(F, 2, 2)``."""
@@ -137,13 +143,16 @@ class ShapeKeepingSolve:
         x = self._solve(target, convex)
         if self._valid(x):
             return x
+        if not self.rounds:
+            return convex  # a mesh too large for the descent's work bound
         rest = self._rest(target)
         k = min(int(s * _GRID), _GRID - 1)
         share = s * _GRID - k
         below, above = self._link(k), self._link(k + 1)
         kept = (1.0 - share) * below + share * above  # the grid points' answers, blended: continuous in s
         if not self._valid(kept):
-            kept = least_distortion(below if share <= 0.5 else above, self.tri, rest, self.base, self.free, _DESCENT)
+            kept = least_distortion(below if share <= 0.5 else above, self.tri, rest, self.base, self.free,
+                                    min(_DESCENT, self.rounds))
         if not self._valid(kept) or distortion(convex, self.tri, rest, self.base) <= distortion(kept, self.tri, rest,
                                                                                                  self.base):
             return convex  # the descent held back by a triangle it may not turn over (pieces trading places)
@@ -185,7 +194,7 @@ class ShapeKeepingSolve:
             found = self._solve(target, self.mesh.p0)
             if not self._valid(found):
                 found = least_distortion(self._side(k + step, step), self.tri, self._rest(target), self.base,
-                                         self.free, _LINK)
+                                         self.free, self.rounds)
             self._sides[(k, step)] = found
         return found
 

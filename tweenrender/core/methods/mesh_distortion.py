@@ -57,8 +57,8 @@ def least_distortion(x: Array, tri: Triangles, rest: Array, weights: Array, free
     """``x (V, 2)`` with its rows ``free`` moved to lower ``Σ_f w_f·SD(E_f(x)·rest_f)``, the symmetric
     Dirichlet energy of each triangle ``tri (F, 3)`` against its rest shape (``rest (F, 2, 2)``: the inverse
     of its rest edge matrix; ``weights (F,)``, zero for a triangle left out), by at most ``rounds`` SLIM
-    rounds. Every triangle counter-clockwise in ``x`` stays so; an ``x`` with one that is not is returned
-    as it is. Returns a new ``(V, 2)``."""
+    rounds. Every weighted triangle counter-clockwise in ``x`` stays so; an ``x`` with one that is not is
+    returned as it is. Returns a new ``(V, 2)``."""
     x = np.array(x, dtype=np.float64)
     used = weights > 0.0
     if not len(free) or not np.any(used) or not np.all(_orientation(x, tri[used]) > 0.0):

@@ -95,6 +95,7 @@ class ShapeKeepingSolve:
         self._system: tuple[object, object, Array, float] | None = None
         self._chain: dict[int, Array] = {}
         self._sides: dict[tuple[int, int], Array] = {}
+        self._fits: dict[int, Array | None] = {}
         # rounds of the descent per grid point, within the work bound (0: the mesh takes the convex solve)
         self.rounds = min(_LINK, int(_WORK // (2 * (_GRID - 1) * max(len(tri), 1))))
 
@@ -167,34 +168,36 @@ class ShapeKeepingSolve:
         of the targets where it turns no triangle over, else the nearer to them (by the energy the descent lowers)
         of the descents from the grid points on either side, each reached the same way from its key; each
         grid point thus starts near its own targets and depends on ``k`` alone."""
+        found = self._fit(k)
+        if found is None:
+            found = self._chain.get(k)
+        if found is None:
+            rest = self._rest(self.targets(k / _GRID))
+            found = min((self._side(k, -1), self._side(k, 1)), key=lambda x: distortion(x, self.tri, rest, self.base))
+            self._chain[k] = found
+        return found
+
+    def _fit(self, k: int) -> Array | None:
+        """The keys at k = 0 and ``_GRID``, the least-squares fit of grid point k's targets where it turns no
+        triangle over, else None: ``(V, 2)``."""
         if k <= 0:
             return self.mesh.p0
         if k >= _GRID:
             return self.mesh.p1
-        found = self._chain.get(k)
-        if found is None:
-            target = self.targets(k / _GRID)
-            found = self._solve(target, self.mesh.p0)
-            if not self._valid(found):
-                rest = self._rest(target)
-                found = min((self._side(k, -1), self._side(k, 1)), key=lambda x: distortion(x, self.tri, rest, self.base))
-            self._chain[k] = found
-        return found
+        if k not in self._fits:
+            found = self._solve(self.targets(k / _GRID), self.mesh.p0)
+            self._fits[k] = found if self._valid(found) else None
+        return self._fits[k]
 
     def _side(self, k: int, step: int) -> Array:
         """The kept vertices ``(V, 2)`` at grid point ``k`` reached from one key alone, grid point by grid point
         (``step`` −1: from key 0 upward, each from the one below; +1: from key 1 downward)."""
-        if k <= 0:
-            return self.mesh.p0
-        if k >= _GRID:
-            return self.mesh.p1
-        found = self._sides.get((k, step))
+        found = self._fit(k)
         if found is None:
-            target = self.targets(k / _GRID)
-            found = self._solve(target, self.mesh.p0)
-            if not self._valid(found):
-                found = least_distortion(self._side(k + step, step), self.tri, self._rest(target), self.base,
-                                         self.free, self.rounds)
+            found = self._sides.get((k, step))
+        if found is None:
+            found = least_distortion(self._side(k + step, step), self.tri, self._rest(self.targets(k / _GRID)),
+                                     self.base, self.free, self.rounds)
             self._sides[(k, step)] = found
         return found
 

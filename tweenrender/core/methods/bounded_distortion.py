@@ -42,7 +42,8 @@ from numpy.typing import NDArray
 
 from ..contours import inside
 from .compatible import CompatibleMesh
-from .mesh_distortion import distortion, gradient_operator, least_distortion
+from .mesh import edge_matrix
+from .mesh_distortion import distortion, gradient_operator, least_distortion, orientations, sparse_identity
 
 __all__ = ["ShapeKeepingSolve", "material_triangles"]
 
@@ -73,8 +74,7 @@ class ShapeKeepingSolve:
     def __init__(self, mesh: CompatibleMesh, material: NDArray[np.bool_]) -> None:
         p0, p1, tri = mesh.p0, mesh.p1, mesh.triangles
         self.mesh, self.tri = mesh, tri
-        e0 = np.stack([p0[tri[:, 1]] - p0[tri[:, 0]], p0[tri[:, 2]] - p0[tri[:, 0]]], axis=-1)  # (F, 2, 2) columns
-        e1 = np.stack([p1[tri[:, 1]] - p1[tri[:, 0]], p1[tri[:, 2]] - p1[tri[:, 0]]], axis=-1)
+        e0, e1 = edge_matrix(p0, tri), edge_matrix(p1, tri)  # (F, 2, 2), edges as columns
         d0, d1 = np.linalg.det(e0), np.linalg.det(e1)
         scale = float(np.abs(p0).max(initial=1.0)) ** 2
         self.good = (d0 > 1e-12 * scale) & (d1 > 1e-12 * scale)  # slivers flat to rounding take no part
@@ -119,7 +119,7 @@ class ShapeKeepingSolve:
             normal = (weighted @ free).tocsc()
             pull = 1e-9 * float(normal.diagonal().mean() or 1.0)
             held = g[:, self.fixed] @ self.mesh.p0[self.fixed]  # (2F, 2): the held frame's part of each row
-            self._system = (splu(normal + pull * _identity(len(self.free))), weighted, held, pull)
+            self._system = (splu(normal + pull * sparse_identity(len(self.free))), weighted, held, pull)
         lu, weighted, held, pull = self._system
         out = np.array(self.mesh.p0, dtype=np.float64)
         for r in range(2):
@@ -127,13 +127,8 @@ class ShapeKeepingSolve:
             out[self.free, r] = lu.solve(weighted @ rhs + pull * convex[self.free, r])  # type: ignore[attr-defined]
         return out
 
-    def _orientation(self, x: Array) -> Array:
-        t = self.tri
-        a, b = x[t[:, 1]] - x[t[:, 0]], x[t[:, 2]] - x[t[:, 0]]
-        return a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
-
     def _valid(self, x: Array) -> bool:
-        return bool(np.all(self._orientation(x)[self.good] > 0.0)) and bool(np.all(np.isfinite(x)))
+        return bool(np.all(orientations(x, self.tri)[self.good] > 0.0)) and bool(np.all(np.isfinite(x)))
 
     def __call__(self, s: float, convex: Array) -> Array:
         if s <= 0.0:
@@ -200,9 +195,3 @@ class ShapeKeepingSolve:
                                      self.base, self.free, self.rounds)
             self._sides[(k, step)] = found
         return found
-
-
-def _identity(size: int):  # noqa: ANN202 - a scipy sparse matrix
-    from scipy.sparse import identity
-
-    return identity(size, format="csc")

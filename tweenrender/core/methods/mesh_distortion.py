@@ -18,7 +18,10 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["distortion", "gradient_operator", "least_distortion", "symmetric_dirichlet"]
+from .mesh import edge_matrix
+
+__all__ = ["distortion", "gradient_operator", "least_distortion", "orientations", "sparse_identity",
+           "symmetric_dirichlet"]
 
 Array = NDArray[np.float64]
 Triangles = NDArray[np.intp]
@@ -61,7 +64,7 @@ def least_distortion(x: Array, tri: Triangles, rest: Array, weights: Array, free
     returned as it is. Returns a new ``(V, 2)``."""
     x = np.array(x, dtype=np.float64)
     used = weights > 0.0
-    if not len(free) or not np.any(used) or not np.all(_orientation(x, tri[used]) > 0.0):
+    if not len(free) or not np.any(used) or not np.all(orientations(x, tri[used]) > 0.0):
         return x
     weights = weights / weights.sum()
     operator = gradient_operator(tri, rest, len(x)).tocsc()
@@ -80,7 +83,7 @@ def least_distortion(x: Array, tri: Triangles, rest: Array, weights: Array, free
         for _ in range(_HALVINGS):
             trial = x + step * direction
             value = _energy(trial, tri, rest, weights, used)
-            if value < energy and np.all(_orientation(trial, tri[used]) > 0.0):
+            if value < energy and np.all(orientations(trial, tri[used]) > 0.0):
                 found = trial, value
                 break
             step *= 0.5
@@ -100,18 +103,14 @@ def distortion(x: Array, tri: Triangles, rest: Array, weights: Array) -> float:
     return _energy(x, tri, rest, weights, used)
 
 
-def _edges(points: Array, triangles: Triangles) -> Array:
-    a = points[triangles[:, 0]]
-    return np.stack([points[triangles[:, 1]] - a, points[triangles[:, 2]] - a], axis=-1)
-
-
-def _orientation(x: Array, triangles: Triangles) -> Array:
-    e = _edges(x, triangles)
+def orientations(x: Array, triangles: Triangles) -> Array:
+    """Twice each triangle's signed area in ``x (V, 2)`` (positive counter-clockwise): ``(F,)``."""
+    e = edge_matrix(x, triangles)
     return e[:, 0, 0] * e[:, 1, 1] - e[:, 0, 1] * e[:, 1, 0]
 
 
 def _energy(x: Array, tri: Triangles, inverses: Array, weights: Array, used: NDArray[np.bool_]) -> float:
-    values = symmetric_dirichlet((_edges(x, tri) @ inverses)[used])
+    values = symmetric_dirichlet((edge_matrix(x, tri) @ inverses)[used])
     return float(np.sum(weights[used] * values))
 
 
@@ -125,7 +124,7 @@ def _slim_goal(x: Array, tri: Triangles, rest: Array, weights: Array, used: NDAr
     from scipy.sparse.linalg import splu
 
     g_free, held = parts
-    u, sigma, rotation = _polar2(_edges(x, tri) @ rest)
+    u, sigma, rotation = _polar2(edge_matrix(x, tri) @ rest)
     sigma = np.maximum(sigma, 1e-12)
     # the energy s² + s⁻² per singular value: SLIM's weight sqrt(f'(s) / (2 (s - 1))) in closed form
     w2 = np.where(used[:, None], (1.0 + sigma) * (1.0 + sigma * sigma) / sigma ** 3, 0.0)
@@ -136,9 +135,10 @@ def _slim_goal(x: Array, tri: Triangles, rest: Array, weights: Array, used: NDAr
     normal = bmat(blocks, format="csc")
     rhs = np.concatenate([g_free.T @ (pulled[:, r, :].reshape(-1) - c[r][0] * held[0] - c[r][1] * held[1])
                           for r in range(2)])
-    normal = normal + 1e-12 * float(normal.diagonal().mean() or 1.0) * _identity(normal.shape[0])
+    normal = normal + 1e-12 * float(normal.diagonal().mean() or 1.0) * sparse_identity(normal.shape[0])
     try:
-        solved = splu(normal, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}).solve(rhs)
+        lu = splu(normal, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
+        solved = lu.solve(rhs)
     except RuntimeError:
         return None
     if not np.all(np.isfinite(solved)):
@@ -167,7 +167,7 @@ def _polar2(jac: Array) -> tuple[Array, Array, Array]:
 def _flip_step(x: Array, direction: Array, tri: Triangles) -> float:
     """The least positive step along ``direction (V, 2)`` at which a triangle of ``x`` turns flat
     (``det(e + α·d) = 0``, a quadratic in α); infinity where none does."""
-    e, d = _edges(x, tri), _edges(direction, tri)
+    e, d = edge_matrix(x, tri), edge_matrix(direction, tri)
     qa = d[:, 0, 0] * d[:, 1, 1] - d[:, 0, 1] * d[:, 1, 0]
     qb = e[:, 0, 0] * d[:, 1, 1] + d[:, 0, 0] * e[:, 1, 1] - e[:, 0, 1] * d[:, 1, 0] - d[:, 0, 1] * e[:, 1, 0]
     qc = e[:, 0, 0] * e[:, 1, 1] - e[:, 0, 1] * e[:, 1, 0]
@@ -186,7 +186,8 @@ def _flip_step(x: Array, direction: Array, tri: Triangles) -> float:
     return float(every.min()) if len(every) else float("inf")
 
 
-def _identity(size: int):  # noqa: ANN202 - a scipy sparse matrix
+def sparse_identity(size: int):  # noqa: ANN201 - a scipy sparse matrix
+    """The ``(size, size)`` identity, in compressed columns."""
     from scipy.sparse import identity
 
     return identity(size, format="csc")

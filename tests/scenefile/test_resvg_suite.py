@@ -3,7 +3,8 @@
 The drawings and reference PNGs are the suite's own (``tests/data/resvg``, MIT), compared by the key-frame
 measure (over white; coverage IoU ≥ 0.99 and colour error ≤ 0.02). The tests tweenrender does not pass yet
 are listed in ``expected-failures.txt`` and marked strict expected failures: one that starts passing fails
-here until it is taken off the list, so the list only shrinks.
+here until it is taken off the list, so the list only shrinks. Text is drawn in the suite's own font (Noto
+Sans, OFL, cut down to Latin and Cyrillic: ``tests/data/resvg/fonts``), found through ``TWEENRENDER_FONT_PATH``.
 """
 
 from __future__ import annotations
@@ -18,8 +19,14 @@ from tests.helpers import DATA
 from tests.scenefile.test_key_frames import measures
 
 SUITE = DATA / "resvg"
+FONTS = SUITE / "fonts"
 TESTS = sorted(p.relative_to(SUITE).as_posix() for p in SUITE.glob("*/*/*.svg"))
 EXPECTED_FAILURES = set((SUITE / "expected-failures.txt").read_text().split())
+
+
+@pytest.fixture(autouse=True)
+def _suite_fonts(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("TWEENRENDER_FONT_PATH", str(FONTS))
 
 
 def _over_white(rgba: np.ndarray) -> np.ndarray:

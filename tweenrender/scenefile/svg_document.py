@@ -7,8 +7,8 @@ what an SVG renderer would: CSS (presentation attributes, ``<style>`` sheets mat
 transforms (about their ``transform-origin``, :mod:`.svg_transform_origin`), ``display``,
 ``visibility`` and group ``opacity``, nested viewports (:mod:`.svg_viewport`), lengths
 relative to the font and the viewport (:mod:`.svg_lengths`), ``<switch>`` and conditional
-attributes (:mod:`.svg_conditions`), and ``<use>`` — whose expansion is counted as it
-goes, so a file of nested ``<use>`` s cannot grow without bound.
+attributes (:mod:`.svg_conditions`), ``<text>`` (its glyphs' outlines, :mod:`.svg_text`), and
+``<use>`` — whose expansion is counted as it goes, so a file of nested ``<use>`` s cannot grow without bound.
 """
 
 from __future__ import annotations
@@ -32,6 +32,7 @@ from .svg_context_paint import NO_CONTEXT, context_of, in_context
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_entities import UNSAFE, check_entities, safe_declaration
 from .svg_flatten import Refusal
+from .svg_text import lay_out
 from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_relative, font_size, is_length
 from .svg_marker_style import marker_longhands
 from .svg_transform_origin import about_origin, parse_origin
@@ -60,10 +61,11 @@ XLINK = "http://www.w3.org/1999/xlink"
 _CONTAINERS = ("svg", "g", "a", "switch")
 _NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linearGradient", "radialGradient",
               "filter", "title", "desc", "metadata", "style", "script")
-_UNSUPPORTED = ("text", "image", "foreignObject")
+_UNSUPPORTED = ("image", "foreignObject")
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
               "stroke-linejoin", "stroke-miterlimit", "visibility", "color", "stroke-dasharray", "stroke-dashoffset",
-              "marker-start", "marker-mid", "marker-end", "clip-rule", "paint-order")
+              "marker-start", "marker-mid", "marker-end", "clip-rule", "paint-order", "font-family", "font-weight",
+              "font-style", "font-stretch", "text-anchor", "letter-spacing", "word-spacing", "font-size")
 _PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask", "mask-type",
                              "color-interpolation")
 # the properties an element's own style is read for: those above, and what a sheet may set that no child inherits
@@ -79,7 +81,8 @@ class Node:
     attrs: dict[str, str]
     line: int
     children: list[Node] = field(default_factory=list)
-    text: str = ""
+    text: str = ""  # its character data (a <style>), or what comes before its first child (text content)
+    tail: str = ""  # inside text content: the character data after it, up to its next sibling
     svg: bool = True  # in the SVG namespace (or none)
     font: tuple[float, float] = (DEFAULT_FONT_SIZE, DEFAULT_FONT_SIZE)  # its font-size and the root's (user units)
     view: tuple[float, float] = DEFAULT_VIEW  # the outermost viewport's size, what vw and vh are of (CSS px)
@@ -182,6 +185,8 @@ def parse(data: bytes) -> Document:
     ids: dict[str, list[Node]] = {}
     count = [0]
     texts: dict[int, tuple[Node, list[str]]] = {}
+    content: dict[tuple[int, str], tuple[Node, list[str]]] = {}  # inside <text>: (node, "text" or "tail")
+    in_text = [0]  # <text> elements open
 
     def declaration(*_: object) -> None:  # an internal DTD subset holds entity declarations only
         raise Refusal(_UNSAFE)
@@ -206,15 +211,21 @@ def parse(data: bytes) -> Document:
         node = Node(tag, attrs, parser.CurrentLineNumber, svg=namespace in ("", SVG_NS))
         (stack[-1].children if stack else roots).append(node)
         stack.append(node)
+        in_text[0] += tag == "text" and node.svg
         if "id" in attrs:
             ids.setdefault(attrs["id"], []).append(node)
 
     def end(name: str) -> None:
-        stack.pop()
+        node = stack.pop()
+        in_text[0] -= node.tag == "text" and node.svg
 
     def text(data: str) -> None:
         if stack and stack[-1].tag == "style":  # pieces joined once at the end: no quadratic copying
             texts.setdefault(id(stack[-1]), (stack[-1], []))[1].append(data)
+        elif in_text[0]:  # text content: before the first child, or after the last child so far
+            node = stack[-1].children[-1] if stack[-1].children else stack[-1]
+            kind = "tail" if stack[-1].children else "text"
+            content.setdefault((id(node), kind), (node, []))[1].append(data)
 
     parser.ElementDeclHandler = parser.AttlistDeclHandler = parser.NotationDeclHandler = declaration
     parser.UnparsedEntityDeclHandler = declaration
@@ -231,6 +242,8 @@ def parse(data: bytes) -> Document:
         raise Refusal(f"expected an <svg> root element, found <{roots[0].tag if roots else ''}>")
     for node, pieces in texts.values():
         node.text = "".join(pieces)
+    for (_, kind), (node, pieces) in content.items():
+        setattr(node, kind, "".join(pieces))
     document = Document(roots[0], ids, sheet_declarations(roots[0]) if texts else {})
     _resolve_fonts(document)
     return document
@@ -269,6 +282,20 @@ def own_style(node: Node, document: Document) -> dict[str, str]:
 
 
 # -- walking --------------------------------------------------------------------------------------
+
+
+def inherited_style(parent: dict[str, str], own: dict[str, str], node: Node) -> dict[str, str]:
+    """An element's style: the inherited properties of its parent's, then its ``own`` (``inherit`` left to
+    the parent's). ``font-size`` is kept computed (user units), so text instanced by a ``<use>`` takes
+    the size of where it is drawn."""
+    style = {k: parent[k] for k in _INHERITED if k in parent}
+    style.update((k, v) for k, v in own.items() if v != "inherit")
+    if "font-size" in own:
+        above = float(parent.get("font-size", DEFAULT_FONT_SIZE))
+        style["font-size"] = repr(font_size(own["font-size"], above, node.font[1], node.view)
+                                  if own["font-size"] != "inherit" else above)
+    return style
+
 
 
 _TRANSFORM_NUMBER = re.compile(r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?|nan|inf(?:inity)?", re.IGNORECASE)
@@ -365,8 +392,7 @@ class _Walk:
                      opacity: float, shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...],
                      masks: tuple[Masking, ...], instance: Node | None) -> Iterator[Drawn]:
         """:meth:`visit` once the node's own style and opacity are read."""
-        style = {k: parent[k] for k in _INHERITED if k in parent}
-        style.update((k, v) for k, v in own.items() if v != "inherit")
+        style = inherited_style(parent, own, node)
         if node is not self.document.root and "transform" in own and node.tag != "symbol":  # SVG 1.1: none on symbols
             step = matrix(own["transform"], node.line)
             if "transform-origin" in own:
@@ -392,18 +418,46 @@ class _Walk:
                         groups=self.groups)
         elif node.tag == "use":
             yield from self.use(node, style, ctm, opacity, shown, clips, masks)
+        elif node.tag == "text":
+            yield from self.text(node, style, ctm, opacity, shown, clips, masks)
         elif node.tag in ("svg", "symbol") and node is not self.document.root:
             yield from self.viewport_children(node, own, style, ctm, opacity, shown, clips, instance, masks)
         elif node.tag in _CONTAINERS:
             children = node.children
             if node.tag == "switch":  # its first child whose conditions hold (SVG 1.1 §5.8.2)
-                chosen = switch_choice(node, SHAPES + _CONTAINERS + ("use",) + _UNSUPPORTED)
+                chosen = switch_choice(node, SHAPES + _CONTAINERS + ("use", "text") + _UNSUPPORTED)
                 children = [chosen] if chosen is not None else []
             for child in children:
                 yield from self.visit(child, style, ctm, opacity, shown, clips, masks)
         elif node.tag in _UNSUPPORTED and shown:
             raise Refusal(f"expected shapes, found <{node.tag}> (line {node.line}); "
                           "convert it to paths in the editor (Inkscape: Path > Object to Path)")
+
+    def text(self, node: Node, style: dict[str, str], ctm: NDArray[np.float64], opacity: float, shown: bool,
+             clips: tuple[tuple[str, NDArray[np.float64]], ...], masks: tuple[Masking, ...]) -> Iterator[Drawn]:
+        """The glyphs of a ``<text>``, a path for each element in it with characters (:mod:`.svg_text`)."""
+        viewport = self.viewport or root_size(self.document.root)
+        for laid in lay_out(node, style, self.content_style, viewport, self.document.ids):  # type: ignore[arg-type]
+            span = laid.node
+            attrs = {"d": laid.d, **({"id": span.attrs["id"]} if "id" in span.attrs else {})}
+            path = Node("path", attrs, span.line, font=span.font, view=span.view)  # type: ignore[arg-type]
+            own = {k: v for k, v in laid.style.items() if not k.startswith("marker")}  # text has none
+            for name in ("fill", "stroke"):
+                if name in own:
+                    own[name] = in_context(own[name], self.context)
+            yield Drawn(path, own, ctm, opacity, shown and laid.visible, self.document, clips,
+                        viewport=self.viewport, masks=masks, groups=self.groups)
+
+    def content_style(self, node: Node, parent: dict[str, str]) -> dict[str, str] | None:
+        """The style of a ``<tspan>``, ``<a>`` or ``<tref>`` in text; None when it is not displayed (or its
+        conditional attributes do not hold)."""
+        self.visited += 1
+        if not conditions_hold(node):
+            return None
+        own = own_style(node, self.document)
+        if own.get("display", "").strip() == "none":
+            return None
+        return inherited_style(parent, own, node)
 
     def viewport_children(self, node: Node, own: dict[str, str], style: dict[str, str], ctm: NDArray[np.float64],
                           opacity: float, shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...],

@@ -162,7 +162,8 @@ def _length(node: Node, name: str, default: float, relative: float) -> float:
 def _box(node: Node, space: NDArray[np.float64], document: Document, reading: Reading, budget: Budget
          ) -> _Box | None:
     """The bounding box ``(x, y, width, height)`` of what ``node`` draws (its geometry, strokes left out), in
-    its user space ``space``; None when it draws nothing."""
+    its user space ``space``; None when it draws nothing. Elements hidden by ``visibility`` are in it, as
+    browsers take them."""
     to_world = reading.to_world
     own = np.eye(3)
     if node is not document.root and "transform" in node.attrs:
@@ -174,10 +175,9 @@ def _box(node: Node, space: NDArray[np.float64], document: Document, reading: Re
         return None
     points = []
     walker = _Walk(document, False)
-    for drawn in walker.visit(node, {}, local, 1.0, True):
-        if drawn.visible:
-            placed = to_world @ space @ drawn.ctm
-            points += reading.outline(drawn, placed)
+    for drawn in walker.visit(node, {}, local, 1.0, True):  # hidden ones count too, undisplayed ones not (SVG 2)
+        placed = to_world @ space @ drawn.ctm
+        points += reading.outline(drawn, placed)
     _count(walker, budget)
     if not points:
         return None

@@ -48,7 +48,8 @@ GROUPS: dict[str, list[str]] = {
     "masks": ["masking/mask"],
     "next to the claims": [
         "painting/stroke-dasharray", "painting/stroke-dashoffset", "painting/marker", "painting/paint-order",
-        "structure/switch", "structure/transform-origin"],
+        "structure/switch", "structure/transform-origin", "paint-servers/pattern", "painting/context",
+        "structure/systemLanguage", "painting/overflow"],
 }
 PASS_IOU, PASS_ERROR = 0.99, 0.02
 SECONDS_PER_TEST = 20

@@ -114,6 +114,16 @@ def test_a_span_takes_its_own_paint_and_a_tref_its_target_s_characters(tmp_path:
     assert tref[:, 0].min() == pytest.approx(a + b + h_left, abs=1.0)  # after "AB" (kerning aside)
 
 
+def test_the_font_shorthand_and_a_postscript_name_name_the_same_face(tmp_path: Path) -> None:
+    drawn = _drawn(tmp_path, '<text id="longhands" x="0" y="100" font-weight="bold" font-size="50">Ab</text>'
+                             '<text id="shorthand" x="0" y="100" style="font: bold 50px/2 \'Noto Sans\', serif">Ab</text>'
+                             '<text id="postscript" x="0" y="100" font-family="NotoSans-Bold" font-size="50">Ab</text>'
+                             '<text id="regular" x="0" y="100" font-size="50">Ab</text>')
+    np.testing.assert_allclose(drawn["shorthand"], drawn["longhands"])
+    np.testing.assert_allclose(drawn["postscript"], drawn["longhands"])
+    assert drawn["regular"].shape != drawn["longhands"].shape or not np.allclose(drawn["regular"], drawn["longhands"])
+
+
 def test_an_unknown_family_still_draws(tmp_path: Path) -> None:
     drawn = _drawn(tmp_path, '<text id="t" x="0" y="100" font-family="No Such Family, fantasy">Hi</text>')
     assert len(drawn["t"]) > 10

@@ -32,7 +32,7 @@ from .svg_context_paint import NO_CONTEXT, context_of, in_context
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_entities import UNSAFE, check_entities, safe_declaration
 from .svg_flatten import Refusal
-from .svg_text import lay_out
+from .svg_text import font_longhands, lay_out
 from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_relative, font_size, is_length
 from .svg_marker_style import marker_longhands
 from .svg_transform_origin import about_origin, parse_origin
@@ -69,7 +69,7 @@ _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "
 _PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask", "mask-type",
                              "color-interpolation")
 # the properties an element's own style is read for: those above, and what a sheet may set that no child inherits
-_OWN = frozenset(_PROPERTIES + ("transform", "overflow", "font-size", "marker", "transform-origin"))
+_OWN = frozenset(_PROPERTIES + ("transform", "overflow", "font-size", "marker", "transform-origin", "font"))
 _UNSAFE = UNSAFE.format(what="a DOCTYPE declaring elements, attributes or notations")
 
 
@@ -289,6 +289,8 @@ def inherited_style(parent: dict[str, str], own: dict[str, str], node: Node) -> 
     the parent's). ``font-size`` is kept computed (user units), so text instanced by a ``<use>`` takes
     the size of where it is drawn."""
     style = {k: parent[k] for k in _INHERITED if k in parent}
+    if "font" in own:  # the shorthand, under the longhands the element gives too
+        own = {**font_longhands(own["font"]), **{k: v for k, v in own.items() if k != "font"}}
     style.update((k, v) for k, v in own.items() if v != "inherit")
     if "font-size" in own:
         above = float(parent.get("font-size", DEFAULT_FONT_SIZE))

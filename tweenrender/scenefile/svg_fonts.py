@@ -4,7 +4,8 @@ and each glyph's outline read by HarfBuzz (uharfbuzz: kerning, ligatures, the sc
 Font files are looked for, in this order, in the folders of the environment variable ``TWEENRENDER_FONT_PATH``
 (separated like ``PATH``), in the system's font folders, and last in the DejaVu Sans shipped with the
 package, so text always draws. Family names match without regard to case (a file is known by its
-typographic family name and its legacy one); among a family's faces the nearest in width, then slant,
+typographic family name, its legacy one, its full name and its PostScript name, as Illustrator writes
+``font-family="'MyriadPro-Regular'"``); among a family's faces the nearest in width, then slant,
 then weight is taken, as CSS Fonts 4 §5.2 orders them. A generic family (``serif``, ``sans-serif``,
 ``monospace``, ``cursive``, ``fantasy``, ``system-ui``) is the first of a few common families that is
 installed. A character the chosen face has no glyph for is drawn in the first face found that has one.
@@ -108,7 +109,7 @@ def _system_folders() -> list[str]:
 
 
 def _faces_in(path: str) -> list[tuple[list[str], _Entry]]:
-    """Each face of the font file ``path``: its family names and what it is ([] when it cannot be read)."""
+    """Each face of the font file ``path``: the names it is known by and what it is ([] when it cannot be read)."""
     import uharfbuzz as hb
 
     try:
@@ -124,7 +125,8 @@ def _faces_in(path: str) -> list[tuple[list[str], _Entry]]:
         if face.glyph_count == 0:
             continue
         names = [face.get_name(hb.OTNameIdPredefined.TYPOGRAPHIC_FAMILY),
-                 face.get_name(hb.OTNameIdPredefined.FONT_FAMILY)]
+                 face.get_name(hb.OTNameIdPredefined.FONT_FAMILY), face.get_name(hb.OTNameIdPredefined.FULL_NAME),
+                 face.get_name(hb.OTNameIdPredefined.POSTSCRIPT_NAME)]
         names = [n for n in dict.fromkeys(names) if n]
         if names:
             found.append((names, _describe(face, path, index)))

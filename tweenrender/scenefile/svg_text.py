@@ -24,7 +24,7 @@ from .svg_flatten import Refusal
 from .svg_fonts import Face, FontRequest, face_for, fallback_for, outline, shape
 from .svg_lengths import DEFAULT_FONT_SIZE, font_relative, is_length
 
-__all__ = ["MAX_CHARACTERS", "TextNode", "Laid", "lay_out"]
+__all__ = ["MAX_CHARACTERS", "TextNode", "Laid", "font_longhands", "lay_out"]
 
 MAX_CHARACTERS = 100_000
 """Characters in one ``<text>``: a keyframe drawing's labels are a few words."""
@@ -34,6 +34,9 @@ _WEIGHTS = {"normal": 400, "bold": 700}
 _WIDTHS = {"ultra-condensed": 1, "extra-condensed": 2, "condensed": 3, "semi-condensed": 4, "normal": 5,
            "semi-expanded": 6, "expanded": 7, "extra-expanded": 8, "ultra-expanded": 9}
 _SEPARATOR = re.compile(r"[\s,]+")
+_FONT_TOKEN = re.compile(r"""'[^']*'|"[^"]*"|[^\s'"]+""")
+_STYLES = ("italic", "oblique")
+_WEIGHT_WORDS = ("bold", "bolder", "lighter")
 
 
 class TextNode(Protocol):
@@ -76,6 +79,32 @@ class _Char:
     span: int
     chain: tuple[int, ...]  # the positioning elements it is in, outermost first
     preserve: bool
+
+
+def font_longhands(value: str) -> dict[str, str]:
+    """The CSS ``font`` shorthand (``italic bold 12px/1.2 "Noto Sans", sans-serif``) as its longhands; {} when
+    it names no size (a system font keyword, or not a font)."""
+    tokens = _FONT_TOKEN.findall(value.strip())
+    found: dict[str, str] = {}
+    for index, token in enumerate(tokens):
+        word = token.lower()
+        size = word.split("/")[0]
+        if size in _SIZE_WORDS or (size[:1].isdigit() or size[:1] == ".") and not word.isdigit():
+            family = " ".join(tokens[index + 1:]).strip()
+            if not family:
+                return {}
+            return {**found, "font-size": token.split("/")[0], "font-family": family}
+        if word in _STYLES:
+            found["font-style"] = word
+        elif word in _WEIGHT_WORDS or word.isdigit():
+            found["font-weight"] = word
+        elif word in _WIDTHS and word != "normal":
+            found["font-stretch"] = word
+    return {}
+
+
+_SIZE_WORDS = ("xx-small", "x-small", "small", "medium", "large", "x-large", "xx-large", "xxx-large", "smaller",
+               "larger")
 
 
 def lay_out(node: TextNode, style: dict[str, str], style_of: StyleOf, viewport: tuple[float, float],

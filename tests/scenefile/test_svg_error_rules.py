@@ -89,3 +89,41 @@ def test_an_ellipse_with_one_radius_takes_it_for_both(tmp_path: Path, radii: str
     picture = _picture(tmp_path, f'<ellipse cx="50" cy="50" {radii} fill="#008000"/>')
     ink = (picture != 255).any(axis=-1)
     assert ink[50, 22] and ink[50, 77] and ink[22, 50] and ink[77, 50] and not ink[50, 18] and not ink[18, 50]
+
+
+SKIPPING = ('<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 10 10">\n'
+            '<path d="M 1 1 L 9 1 L 9 9 x 3"/>\n<rect width="-2" height="3"/>\n<use xlink:href="#nowhere"/>\n'
+            '<circle cx="5" cy="5" r="2"/>\n'
+            '<rect x="1" y="1" width="44mmx" height="2"/>\n</svg>\n')
+
+
+def test_with_v_the_reader_says_in_one_line_what_it_skipped(tmp_path: Path) -> None:
+    from tests.helpers import run_module
+
+    bad = tmp_path / "bad.svg"
+    bad.write_text(SKIPPING, encoding="utf-8")
+    good = tmp_path / "good.svg"
+    good.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10"><rect width="4" height="4"/></svg>',
+                    encoding="utf-8")
+    said = run_module("-v", "render", bad, good, "-o", tmp_path / "frames", "--frames", "0:1")
+    assert said.returncode == 0, said.stderr
+    lines = said.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("tweenrender: warning: bad.svg: drew what is valid, skipped")
+    for part in ("the d of <path> from its first error on (line 2)", "<rect> of negative width (line 3)",
+                 "a <use> of '#nowhere', nothing (line 4)", "width='44mmx', which is not a length (line 6)"):
+        assert part in lines[0], part
+    quiet = run_module("render", bad, good, "-o", tmp_path / "frames2", "--frames", "0:1")
+    assert quiet.returncode == 0 and quiet.stderr == ""
+    clean = run_module("-v", "render", good, good, "-o", tmp_path / "frames3", "--frames", "0:1")
+    assert clean.returncode == 0 and clean.stderr == ""
+
+
+def test_the_library_says_nothing_of_what_it_skipped_unless_asked(tmp_path: Path) -> None:
+    import subprocess
+    import sys
+
+    bad = tmp_path / "bad.svg"
+    bad.write_text(SKIPPING, encoding="utf-8")
+    done = subprocess.run([sys.executable, "-c", f"import tweenrender as tr; tr.load_scene([{str(bad)!r}] * 2)"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0 and done.stderr == "", done.stderr

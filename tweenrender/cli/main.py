@@ -36,7 +36,8 @@ def build_parser() -> argparse.ArgumentParser:
         prog="tweenrender",
         description="Inbetween 2-D keyframe polygons (linear, nonlinear Bézier, rigid, jointed paths) "
                     "and render them to PNG frames or video.")
-    parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of failures")
+    parser.add_argument("-v", "--verbose", action="store_true",
+                        help="say what a drawing's reader skipped by SVG's error rules, and show tracebacks of failures")
     parser.add_argument("--version", action="version", version=f"tweenrender {__version__}")
     subparsers = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name in COMMANDS:
@@ -80,6 +81,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     except KeyboardInterrupt:
         return _interrupted()
+    if args.verbose:
+        _say_warnings()
     try:
         with _terminate_cleanly():
             _sweep_temporaries()
@@ -177,6 +180,17 @@ def _interrupted() -> int:
     # outputs go through temporaries, and the sinks remove theirs on the way out
     print("tweenrender: interrupted; no output was changed", file=sys.stderr)
     return 130
+
+
+def _say_warnings() -> None:
+    """With ``-v``, the library's warnings (what a drawing's reader skipped …) on stderr, a line each."""
+    import logging
+
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter("tweenrender: warning: %(message)s"))
+    logger = logging.getLogger("tweenrender")
+    logger.addHandler(handler)
+    logger.setLevel(logging.WARNING)
 
 
 def _explain(verbose: bool) -> None:

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -47,6 +48,7 @@ from .svg_gradient_paint import with_gradients
 from .svg_paint_order import in_paint_order
 from .svg_patterns import pattern_content
 from .svg_stroke_space import clipped_miters, in_stroke_space
+from .svg_notes import note, noting
 from .svg_pathdata import path_prefix, points_prefix, smooth_controls
 from .svg_viewport import aspect_matrix, parse_view_box, renders
 
@@ -248,38 +250,39 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
     with y flipped. ``tolerance`` is in world units (default 1/5000 of the view box's diagonal).
     """
     try:
-        document = parse(read(Path(svg_path)))
-        box, placed = _root_viewport(document)
-        drawn = [d for d in walk(document, layered=True) if d.visible] if renders(document.root) else []
-        if box is None:  # no viewBox and no size: the elements' own extent
-            box = _extent(drawn)
-        x, y, w, h = box
-        world = (-y - h, x + w, -y)  # the box flipped: ymin, xmax, ymax
-        with np.errstate(all="ignore"):  # a tiny viewBox in a large size overflows: refused below
-            to_world = _FLIP @ placed
+        with noting(Path(svg_path)):
+            document = parse(read(Path(svg_path)))
+            box, placed = _root_viewport(document)
+            drawn = [d for d in walk(document, layered=True) if d.visible] if renders(document.root) else []
+            if box is None:  # no viewBox and no size: the elements' own extent
+                box = _extent(drawn)
+            x, y, w, h = box
+            world = (-y - h, x + w, -y)  # the box flipped: ymin, xmax, ymax
+            with np.errstate(all="ignore"):  # a tiny viewBox in a large size overflows: refused below
+                to_world = _FLIP @ placed
+                if into is not None:
+                    to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP @ placed
+            if not np.isfinite(to_world).all():
+                raise Refusal(f"expected a viewBox whose scale into the drawing's size is finite, found "
+                              f"viewBox {document.root.attrs.get('viewBox', '')!r}")
             if into is not None:
-                to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP @ placed
-        if not np.isfinite(to_world).all():
-            raise Refusal(f"expected a viewBox whose scale into the drawing's size is finite, found "
-                          f"viewBox {document.root.attrs.get('viewBox', '')!r}")
-        if into is not None:
-            world_box = into
-        else:
-            world_box = (x, world[0], world[1], world[2])
-        scale = math.sqrt(abs(_determinant(to_world)))
-        if tolerance is None:
-            tolerance = math.hypot(world_box[2] - world_box[0], world_box[3] - world_box[1]) * _DRAWING_TOLERANCE
-        tol = _check_tolerance(tolerance)
-        budget = Budget(MAX_VERTICES, tol)
-        elements = []
-        for d in drawn:
-            element = _element(d, to_world, scale, tol, budget)
-            if element is not None:
-                elements += [part for ordered in in_paint_order(element, d.style.get("paint-order", ""))
-                             for part in in_stroke_space(ordered, to_world @ d.ctm, clipped_miters(d.style))]
-            if any(d.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
-                elements += _marker_elements(d, to_world, scale, tol, budget)
-        return Drawing(Path(svg_path), world_box, fold_lone_groups(elements), to_world)
+                world_box = into
+            else:
+                world_box = (x, world[0], world[1], world[2])
+            scale = math.sqrt(abs(_determinant(to_world)))
+            if tolerance is None:
+                tolerance = math.hypot(world_box[2] - world_box[0], world_box[3] - world_box[1]) * _DRAWING_TOLERANCE
+            tol = _check_tolerance(tolerance)
+            budget = Budget(MAX_VERTICES, tol)
+            elements = []
+            for d in drawn:
+                element = _element(d, to_world, scale, tol, budget)
+                if element is not None:
+                    elements += [part for ordered in in_paint_order(element, d.style.get("paint-order", ""))
+                                 for part in in_stroke_space(ordered, to_world @ d.ctm, clipped_miters(d.style))]
+                if any(d.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
+                    elements += _marker_elements(d, to_world, scale, tol, budget)
+            return Drawing(Path(svg_path), world_box, fold_lone_groups(elements), to_world)
     except Refusal as refusal:
         raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
 
@@ -677,12 +680,14 @@ def _geometry(node: Node, document: Document, lenient: bool = True,  # type: ign
     if lenient:
         if tag in ("path", "polygon", "polyline"):
             _within_limit(node.attrs.get("d" if tag == "path" else "points", ""), node)
-        if any(node.attrs.get(name, "").strip().startswith("-") for name in ("width", "height", "r")):
-            return None  # SVG: a negative size is an error, and the element is not rendered
+        negative = [name for name in ("width", "height", "r") if node.attrs.get(name, "").strip().startswith("-")]
+        if negative:  # SVG: a negative size is an error, and the element is not rendered
+            note(f"<{tag}> of negative {negative[0]} (line {node.line})")
+            return None
     else:
         _check_syntax(node)
     if tag == "path":
-        d = path_prefix(node.attrs.get("d", ""))[0] if lenient else node.attrs.get("d", "")
+        d = _prefix(path_prefix, node, "d") if lenient else node.attrs.get("d", "")
         if not d:
             return None
         try:
@@ -692,7 +697,7 @@ def _geometry(node: Node, document: Document, lenient: bool = True,  # type: ign
     if tag in ("polygon", "polyline"):
         cls = Polygon if tag == "polygon" else Polyline
         points = node.attrs.get("points", "")
-        return cls({"points": points_prefix(points)[0] if lenient else points})
+        return cls({"points": _prefix(points_prefix, node, "points") if lenient else points})
     if tag == "line":
         return SimpleLine({k: str(length(node, k, 0.0, w if k[0] == "x" else h)) for k in ("x1", "y1", "x2", "y2")})
     if tag == "rect":
@@ -724,6 +729,16 @@ def _geometry(node: Node, document: Document, lenient: bool = True,  # type: ign
         return Ellipse({"cx": str(length(node, "cx", 0.0, w)), "cy": str(length(node, "cy", 0.0, h)),
                         "rx": str(rx), "ry": str(ry)})
     return None
+
+
+def _prefix(prefix: Callable[[str], tuple[str, bool]], node: Node, name: str) -> str:
+    """What SVG draws of the ``d`` or ``points`` attribute ``name``: all of it, or what comes before its first
+    error (noted as skipped)."""
+    text = node.attrs.get(name, "")
+    drawn, whole = prefix(text)
+    if not whole:
+        note(f"the {name} of <{node.tag}> from its first error on (line {node.line})")
+    return drawn
 
 
 def _check_syntax(node: Node) -> None:

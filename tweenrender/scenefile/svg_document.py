@@ -35,6 +35,7 @@ from .svg_flatten import Refusal
 from .svg_text import font_longhands, lay_out
 from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_relative, font_size, is_length
 from .svg_marker_style import marker_longhands
+from .svg_notes import note
 from .svg_transform_origin import about_origin, parse_origin
 from .svg_viewport import nested_viewport, outermost_size, root_size
 
@@ -312,6 +313,7 @@ def matrix(text: str, line: int = 0) -> NDArray[np.float64]:
     try:
         m = Matrix(text)
     except Exception:  # a third-party parser on arbitrary input: what it cannot read is no transform
+        note(f"the transform {text.strip()[:40]!r}, which is not one (line {line})")
         return np.eye(3)
     return np.array([[m.a, m.c, m.e], [m.b, m.d, m.f], [0.0, 0.0, 1.0]])
 
@@ -338,6 +340,7 @@ def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -
     if relative_to_font is not None:
         return relative_to_font
     if not is_length(text):
+        note(f"{name}={text.strip()[:40]!r}, which is not a length (line {node.line})")
         return default  # a length in error: the attribute's initial value, as renderers take it
     try:
         value = Length(text.strip()).value(ppi=96.0, relative_length=relative)
@@ -520,6 +523,8 @@ class _Walk:
             return  # external references are not followed
         target = self.document.ids.get(href[1:])
         if not target or href in self.using or self.loops(href[1:], set()):
+            what = "a loop of references" if target else "nothing"
+            note(f"a <use> of {href[:40]!r}, {what} (line {node.line})")
             return  # SVG: a <use> of nothing, or in a loop of references, is in error and not rendered
         width, height = self.viewport or root_size(self.document.root)
         shift = np.array([[1.0, 0.0, length(node, "x", 0.0, width)], [0.0, 1.0, length(node, "y", 0.0, height)],

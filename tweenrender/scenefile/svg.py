@@ -326,7 +326,14 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
         return None
     box = view_box(d.document) or (0.0, 0.0, 100.0, 100.0)
     tile_tol = tol / max(math.sqrt(abs(_determinant(to_world @ d.ctm))), 1e-300)
-    paint = with_gradients(paint, d.style, d.document, to_world @ d.ctm, contours, (box[2], box[3]),
+    placed, extent = to_world @ d.ctm, contours
+    if d.paint_space is not None:  # a paint server of the context element's: in its space and box
+        space, owner = d.paint_space
+        placed = to_world @ space
+        x0, y0, w, h = _owner_box(owner, space, d, to_world, tol, budget)
+        corners = np.array([[x0, y0, 1.0], [x0 + w, y0, 1.0], [x0 + w, y0 + h, 1.0], [x0, y0 + h, 1.0]])
+        extent = [((placed @ corners.T)[:2].T, True)]
+    paint = with_gradients(paint, d.style, d.document, placed, extent, (box[2], box[3]),
                            lambda node, ctm: pattern_content(node, ctm, d.document, budget, lambda inner: _element(
                                inner, np.eye(3), 1.0, tile_tol, budget)))
     clips = tuple(region for ref in d.clips for region in _clip_regions(ref[0], ref[1], d, to_world, tol, budget,

@@ -28,7 +28,7 @@ from svgelements import Matrix
 
 from .svg_basic_shapes import PREFIX as BASIC_SHAPE, is_basic_shape
 from .svg_conditions import conditions_hold, switch_choice
-from .svg_context_paint import NO_CONTEXT, context_of, in_context
+from .svg_context_paint import NO_CONTEXT, context_of, in_context, source_of
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_entities import UNSAFE, check_entities, safe_declaration
 from .svg_flatten import Refusal
@@ -135,6 +135,9 @@ class Drawn:
     # with a layered walk: the groups with an opacity it is in, outermost first, (number, opacity), whose
     # opacity is then left out of ``opacity`` (:mod:`.svg_groups`)
     groups: tuple[tuple[int, float], ...] = ()
+    # where its fill or stroke is a paint server taken from its context element (context-fill, …): that
+    # element's user space (3x3) and node, whose box and space the paint server is drawn in; None: its own
+    paint_space: tuple[NDArray[np.float64], Node] | None = None
 
 
 def read(path: Path) -> bytes:
@@ -415,12 +418,10 @@ class _Walk:
         elif is_basic_shape(reference) and shown:  # clip-path: circle(…) (:mod:`.svg_basic_shapes`)
             clips = clips + (ClipRef.of(BASIC_SHAPE + reference, ctm, node),)
         if node.tag in SHAPES:
-            for name in ("fill", "stroke"):
-                if name in style:
-                    style[name] = in_context(style[name], self.context)
+            paint_space = self.in_context(style)
             visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
             yield Drawn(node, style, ctm, opacity, visible, self.document, clips, viewport=self.viewport, masks=masks,
-                        groups=self.groups)
+                        groups=self.groups, paint_space=paint_space)
         elif node.tag == "use":
             yield from self.use(node, style, ctm, opacity, shown, clips, masks)
         elif node.tag == "text":
@@ -447,11 +448,19 @@ class _Walk:
             attrs = {"d": laid.d, **({"id": span.attrs["id"]} if "id" in span.attrs else {})}
             path = Node("path", attrs, span.line, font=span.font, view=span.view)  # type: ignore[arg-type]
             own = {k: v for k, v in laid.style.items() if not k.startswith("marker")}  # text has none
-            for name in ("fill", "stroke"):
-                if name in own:
-                    own[name] = in_context(own[name], self.context)
+            paint_space = self.in_context(own)
             yield Drawn(path, own, ctm, opacity, shown and laid.visible, self.document, clips,
-                        viewport=self.viewport, masks=masks, groups=self.groups)
+                        viewport=self.viewport, masks=masks, groups=self.groups, paint_space=paint_space)
+
+    def in_context(self, style: dict[str, str]) -> tuple[NDArray[np.float64], Node] | None:
+        """Replaces ``context-fill`` and ``context-stroke`` in ``style`` by the context's paint; the context
+        element's user space and node where a paint server comes from it (None: none does)."""
+        found = None
+        for name in ("fill", "stroke"):
+            if name in style:
+                found = found or source_of(style[name], self.context)
+                style[name] = in_context(style[name], self.context)
+        return found
 
     def content_style(self, node: Node, parent: dict[str, str]) -> dict[str, str] | None:
         """The style of a ``<tspan>``, ``<a>`` or ``<tref>`` in text; None when it is not displayed (or its
@@ -531,7 +540,7 @@ class _Walk:
                           [0.0, 0.0, 1.0]])
         placed = compose(ctm, shift, node, "the <use> element's x, y transform")
         self.using.append(href)
-        saved, self.context = self.context, context_of(style, self.context)
+        saved, self.context = self.context, context_of(style, self.context, ctm, node)
         try:
             yield from self.visit(target[0], style, placed, opacity, shown, clips, masks, instance=node)
         finally:

@@ -253,7 +253,7 @@ def marker_content(d: Drawn, placed: Placed, memo: dict[object, object]) -> Iter
     from .svg_context_paint import NO_CONTEXT, context_of
 
     walker = _Walk(d.document, False)
-    walker.context = context_of(d.style, NO_CONTEXT)  # context-fill, context-stroke: the marked element's
+    walker.context = context_of(d.style, NO_CONTEXT, d.ctm, d.node)  # context-fill, -stroke: the marked element's
     clips = d.clips
     if placed.rect is not None:
         clips = clips + ((walker.viewport_clip(placed.rect), placed.viewport),)

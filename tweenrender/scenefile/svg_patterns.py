@@ -26,7 +26,7 @@ from .svg_viewport import aspect_matrix, parse_view_box
 __all__ = ["Content", "is_pattern", "read_pattern", "mean_color", "pattern_content"]
 
 
-Content = Callable[[Node, NDArray[np.float64]], tuple[MaskShape, ...]]
+Content = Callable[[Node, NDArray[np.float64]], "tuple[MaskShape, ...] | None"]
 """The shapes drawn by a pattern's children through a 3x3 map of their user units into the pattern's."""
 
 
@@ -90,6 +90,8 @@ def read_pattern(ident: str, document: Document, user_box: tuple[float, float, f
     to_tile = np.array([[1.0, 0.0, x], [0.0, 1.0, y], [0.0, 0.0, 1.0]]) @ inner
     holder = next((node for node in chain if node.children), None)
     shapes = content(holder, to_tile) if holder is not None else ()
+    if shapes is None:
+        return None  # a pattern used inside its own tile: a reference in error, painting nothing
     own = matrix(attribute("patternTransform", "") or "")
     origin_text = chain[0].attrs.get("transform-origin", "")
     if origin_text:  # about the element's box (objectBoundingBox units) or the viewport
@@ -116,16 +118,19 @@ def mean_color(pattern: Pattern) -> Color:
 
 
 def pattern_content(node: Node, ctm: NDArray[np.float64], document: Document, budget: Budget,
-                    element: Callable[[Drawn], object | None]) -> tuple[MaskShape, ...]:
+                    element: Callable[[Drawn], object | None]) -> tuple[MaskShape, ...] | None:
     """The shapes a ``<pattern>`` ``node``'s children draw through ``ctm`` (3x3, into the pattern's units), each
-    read by ``element`` (a shape in those units: a :class:`.svg.Element`, or None); none for a pattern met
-    again inside its own content."""
+    read by ``element`` (a shape in those units: a :class:`.svg.Element`, or None); None for a pattern met
+    again inside its own content, and for the patterns read on the way back to it (SVG: a recursive
+    reference is in error, and what names it paints nothing)."""
     from .svg_document import _Walk
 
-    open_patterns: set[int] = budget.memo.setdefault("patterns being read", set())  # type: ignore[assignment]
-    if id(node) in open_patterns:
-        return ()
-    open_patterns.add(id(node))
+    open_patterns: list[int] = budget.memo.setdefault("patterns being read", [])  # type: ignore[assignment]
+    in_cycle: set[int] = budget.memo.setdefault("patterns in a cycle", set())  # type: ignore[assignment]
+    if id(node) in open_patterns:  # every pattern read since this one leads back to it: all in error
+        in_cycle.update(open_patterns[open_patterns.index(id(node)) + 1:])
+        return None
+    open_patterns.append(id(node))
     try:
         walker = _Walk(document, False)
         out = []
@@ -135,6 +140,9 @@ def pattern_content(node: Node, ctm: NDArray[np.float64], document: Document, bu
                 if e is not None:
                     out.append(MaskShape(e.contours, e.paint, e.fill_rule, e.cap, e.join,  # type: ignore[attr-defined]
                                          e.miter_limit, e.clips, e.masks))  # type: ignore[attr-defined]
+        if id(node) in in_cycle:
+            return None
         return tuple(out)
     finally:
-        open_patterns.discard(id(node))
+        open_patterns.pop()
+        in_cycle.discard(id(node))

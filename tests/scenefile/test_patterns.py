@@ -99,3 +99,21 @@ def test_a_pattern_fades_in_as_its_plain_colour_would(tmp_path: Path) -> None:
     t = np.arange(25)[:, None] / 24
     expected = (1 - t) * turning + t * np.array([0.0, 0.0, 255.0])
     assert np.abs(fading - expected).max() <= 2.0, np.abs(fading - expected).max(axis=1).tolist()
+
+
+def test_a_pattern_used_inside_its_own_tile_paints_nothing_there(tmp_path: Path) -> None:
+    """SVG: a reference that leads back to the pattern being drawn is in error; what names it paints nothing,
+    so each tile here holds only its green outline (read off the rule by hand)."""
+    from tweenrender.scenefile.svg import read_drawing
+
+    path = tmp_path / "recursive.svg"
+    path.write_text(HEAD + '<pattern id="a" patternUnits="userSpaceOnUse" width="10" height="10">'
+                    '<rect width="10" height="10" fill="url(#b)" stroke="#008000"/></pattern>'
+                    '<pattern id="b" patternUnits="userSpaceOnUse" width="10" height="10">'
+                    '<rect width="10" height="10" fill="url(#a)" stroke="#008000"/></pattern>'
+                    '<rect id="ra" width="40" height="20" fill="url(#a)"/>'
+                    '<rect id="rb" y="20" width="40" height="20" fill="url(#b)"/></svg>', encoding="utf-8")
+    for element in read_drawing(path).elements:
+        tile = element.paint.pattern
+        assert tile is not None and [(s.paint.fill, s.paint.stroke) for s in tile.shapes] == \
+            [(None, (0, 128, 0, 255))], element.id

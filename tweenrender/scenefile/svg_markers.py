@@ -209,9 +209,27 @@ def _place(marker: Node, kind: str, index: int, vertex: tuple[NDArray[np.float64
                @ np.array([[1.0, 0.0, -ref[0]], [0.0, 1.0, -ref[1]], [0.0, 0.0, 1.0]]))
     viewport = compose(d.ctm, placing, marker, "the marker's placement")
     content = compose(viewport, fit, marker, "the marker's viewBox")
-    overflow = own_style(marker, d.document).get("overflow", "hidden").strip().lower()
+    overflow = _overflow(marker, d.document)
     rect = None if overflow in ("visible", "auto") else (0.0, 0.0, marker_width, marker_height)
     return Placed(marker, kind, index, content, viewport, rect)
+
+
+def _overflow(marker: Node, document: Document) -> str:
+    """The marker's computed ``overflow`` (``hidden`` by SVG's user-agent sheet); ``inherit`` takes its parent's,
+    which is ``hidden`` for a nested ``<svg>``, a ``<symbol>``, ``<marker>`` or ``<pattern>`` that sets none and
+    ``visible`` (the initial value) for any other element, or with no parent."""
+    value = own_style(marker, document).get("overflow", "hidden").strip().lower()
+    parents: dict[int, Node] | None = None
+    node = marker
+    while value == "inherit":
+        parents = parents if parents is not None else _parents(document, {})
+        parent = parents.get(id(node))
+        if parent is None:
+            return "visible"
+        clipping = parent.tag in ("symbol", "marker", "pattern") or (parent.tag == "svg" and parent is not document.root)
+        value = own_style(parent, document).get("overflow", "hidden" if clipping else "visible").strip().lower()
+        node = parent
+    return value
 
 
 def _parents(document: Document, memo: dict[object, object]) -> dict[int, Node]:

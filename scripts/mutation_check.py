@@ -284,7 +284,7 @@ MUTANTS = [
     Mutant("svg reader: nested viewport scaled by max (slice) not min (meet)", "tweenrender/scenefile/svg_viewport.py",
            'if words[1:2] == ["slice"] else min(sx, sy)', 'if words[1:2] == ["slice"] else max(sx, sy)', DRAWING),
     Mutant("svg reader: display none drawn", "tweenrender/scenefile/svg_document.py",
-           'if own.get("display", "").strip() == "none":', 'if own.get("display", "").strip() == "None":', DRAWING),
+           'return own.get("display", "").strip() == "none"', 'return own.get("display", "").strip() == "None"', DRAWING),
     Mutant("contours: size term of pairing zeroed", "tweenrender/core/contours.py",
            "+ _SIZE_WEIGHT * np.abs(sa[:, None] - sb[None]))", "+ 0.0 * np.abs(sa[:, None] - sb[None]))",
            ("tests/core/test_contours.py",)),

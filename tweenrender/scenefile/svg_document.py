@@ -288,6 +288,11 @@ def own_style(node: Node, document: Document) -> dict[str, str]:
 # -- walking --------------------------------------------------------------------------------------
 
 
+def undisplayed(own: dict[str, str]) -> bool:
+    """Whether an element of ``own`` style has ``display: none``."""
+    return own.get("display", "").strip() == "none"
+
+
 def inherited_style(parent: dict[str, str], own: dict[str, str], node: Node) -> dict[str, str]:
     """An element's style: the inherited properties of its parent's, then its ``own`` (``inherit`` left to
     the parent's). ``font-size`` is kept computed (user units), so text instanced by a ``<use>`` takes
@@ -380,7 +385,7 @@ class _Walk:
         own = own_style(node, self.document)
         if "marker" in own:  # the shorthand: of style sheets only
             own = marker_longhands(own, node, self.document.sheet.get(id(node), ()))
-        if own.get("display", "").strip() == "none":
+        if undisplayed(own):
             if not self.keep_hidden:
                 return
             shown = False
@@ -469,9 +474,7 @@ class _Walk:
         if not conditions_hold(node):
             return None
         own = own_style(node, self.document)
-        if own.get("display", "").strip() == "none":
-            return None
-        return inherited_style(parent, own, node)
+        return None if undisplayed(own) else inherited_style(parent, own, node)
 
     def viewport_children(self, node: Node, own: dict[str, str], style: dict[str, str], ctm: NDArray[np.float64],
                           opacity: float, shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...],

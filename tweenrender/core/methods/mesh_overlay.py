@@ -11,6 +11,7 @@ a triangulation may move towards fatter triangles. Pure numpy.
 from __future__ import annotations
 
 import math
+from heapq import heappop, heappush
 from typing import Sequence
 
 import numpy as np
@@ -124,7 +125,56 @@ class _Polygon:
 def _crossing_count(a: int, b: int, lo: NDArray[np.intp], hi: NDArray[np.intp]) -> int:
     """How many chords ``(lo, hi)`` of the ``m``-gon cross chord ``(a, b)``."""
     a, b = min(a, b), max(a, b)
-    return int(np.count_nonzero(((a < lo) & (lo < b) & (b < hi)) | ((lo < a) & (a < hi) & (hi < b))))
+    return int(np.count_nonzero(_crossing(a, b, lo, hi)))
+
+
+def _crossing(a: int | NDArray[np.intp], b: int | NDArray[np.intp], lo: int | NDArray[np.intp],
+              hi: int | NDArray[np.intp]) -> NDArray[np.bool_]:
+    """Whether chord ``(a, b)`` crosses chord ``(lo, hi)`` of the ``m``-gon (each ``a < b``, ``lo < hi``;
+    either side arrays of one shape): one end strictly between the other's, the other strictly outside."""
+    return ((a < lo) & (lo < b) & (b < hi)) | ((lo < a) & (a < hi) & (hi < b))
+
+
+class _Crossings:
+    """How many chords of one triangulation of the ``m``-gon cross each chord asked about: counted against its
+    chords when first asked, then kept as it flips (a flip changes the count of the chords crossing the
+    chord it takes away or the one it adds, by one each)."""
+
+    def __init__(self, chords: set[tuple[int, int]]) -> None:
+        ends = sorted(chords)
+        self._lo = np.array([lo for lo, _ in ends], dtype=np.intp)  # its chords (C,), each lo < hi
+        self._hi = np.array([hi for _, hi in ends], dtype=np.intp)
+        self._row = {chord: k for k, chord in enumerate(ends)}
+        self._asked_lo = np.zeros(16, dtype=np.intp)  # the chords asked about: the first ``_size`` entries
+        self._asked_hi = np.zeros(16, dtype=np.intp)
+        self._count = np.zeros(16, dtype=np.intp)
+        self._slot: dict[tuple[int, int], int] = {}
+        self._size = 0
+
+    def __call__(self, a: int, b: int) -> int:
+        chord = (min(a, b), max(a, b))
+        k = self._slot.get(chord)
+        if k is None:
+            if self._size == len(self._count):
+                self._asked_lo, self._asked_hi, self._count = (np.concatenate([v, np.zeros_like(v)]) for v in
+                                                                (self._asked_lo, self._asked_hi, self._count))
+            k = self._slot[chord] = self._size
+            self._size += 1
+            self._asked_lo[k], self._asked_hi[k] = chord
+            self._count[k] = _crossing_count(a, b, self._lo, self._hi)
+        return int(self._count[k])
+
+    def flipped(self, gone: tuple[int, int], made: tuple[int, int]) -> list[tuple[int, int]]:
+        """The triangulation's chord ``gone`` became ``made`` (each ``(lo, hi)``): the chords asked about whose
+        count changed."""
+        row = self._row.pop(gone)
+        self._row[made] = row
+        self._lo[row], self._hi[row] = made
+        a, b = self._asked_lo[:self._size], self._asked_hi[:self._size]
+        change = _crossing(a, b, *made).astype(np.intp) - _crossing(a, b, *gone)
+        self._count[:self._size] += change
+        moved = np.flatnonzero(change)
+        return list(zip(a[moved].tolist(), b[moved].tolist()))
 
 
 _FLIP_ROUNDS = 100  # passes of crossing-reducing flips over both triangulations
@@ -134,27 +184,52 @@ def fewer_crossings(m: int, tris0: list[tuple[int, int, int]], tris1: list[tuple
                      pos0: list[tuple[float, float]], pos1: list[tuple[float, float]]
                      ) -> tuple[list[tuple[int, int, int]], list[tuple[int, int, int]]]:
     """Flip edges of either triangulation (each flip valid in its own key) while it lowers the number
-    of crossings between them: fewer Steiner points in the overlay."""
+    of crossings between them: fewer Steiner points in the overlay.
+
+    Each side's chords are tried in order, pass after pass; a chord tried and left is not tried again until its
+    quadrilateral, or a count it was tried on, changes (trying it would leave it again). A chord's crossings with
+    the other's chords are counted once and kept up to date as the other flips, and whether its flip keeps both
+    new triangles fat in its key is worked out once for each quadrilateral: the same flips, in the same order,
+    as trying every chord on every pass and counting afresh."""
     meshes = (_Polygon(m, tris0), _Polygon(m, tris1))
     positions = (pos0, pos1)
+    crossings = (_Crossings(meshes[1].chords), _Crossings(meshes[0].chords))  # side s counts the other's
+    fats: tuple[dict[tuple[int, int, int, int], bool], ...] = ({}, {})
+    settled: tuple[set[tuple[int, int]], ...] = (set(), set())  # chords tried and left, each side
+    tried_across: tuple[dict[tuple[int, int], list[tuple[int, int]]], ...] = ({}, {})  # them by their flip's chord
     for _ in range(_FLIP_ROUNDS):
         changed = False
         for side in (0, 1):
-            mesh, other, pos = meshes[side], meshes[1 - side], positions[side]
-            theirs = np.array(sorted(other.chords), dtype=np.intp).reshape(-1, 2)
-            lo, hi = theirs[:, 0], theirs[:, 1]
-            for a, b in sorted(mesh.chords - other.chords):
-                if (a, b) not in mesh.he:
+            mesh, other, pos, count, fits = meshes[side], meshes[1 - side], positions[side], crossings[side], fats[side]
+            left, across = settled[side], tried_across[side]
+            listed = mesh.chords - other.chords  # this pass's chords, in order
+            queue = sorted(listed - left)  # a sorted list is a heap
+            while queue:
+                a, b = heappop(queue)
+                if (a, b) in left or (a, b) not in mesh.he:
                     continue
                 x, y = mesh.he[(a, b)], mesh.he[(b, a)]
-                if not (fat(pos[a], pos[y], pos[x]) and fat(pos[y], pos[b], pos[x]) and fat(pos[x], pos[a], pos[y])
-                        and fat(pos[b], pos[x], pos[y])):
+                fit = fits.get((a, b, x, y))
+                if fit is None:
+                    fit = fits[(a, b, x, y)] = (fat(pos[a], pos[y], pos[x]) and fat(pos[y], pos[b], pos[x])
+                                                and fat(pos[x], pos[a], pos[y]) and fat(pos[b], pos[x], pos[y]))
+                made = (min(x, y), max(x, y))
+                if not (fit and count(x, y) < count(a, b)):
+                    left.add((a, b))
+                    across.setdefault(made, []).append((a, b))
                     continue
-                before = _crossing_count(a, b, lo, hi)
-                after = _crossing_count(x, y, lo, hi)
-                if after < before:
-                    mesh.flip(a, b)
-                    changed = True
+                mesh.flip(a, b)
+                changed = True
+                for chord in (made, (min(a, x), max(a, x)), (min(x, b), max(x, b)), (min(b, y), max(b, y)),
+                              (min(y, a), max(y, a))):  # the chords whose quadrilateral the flip changed
+                    if chord in left:
+                        left.discard(chord)
+                        if chord in listed and chord > (a, b):
+                            heappush(queue, chord)  # still to come in this pass
+                theirs, their_across = settled[1 - side], tried_across[1 - side]
+                for chord in crossings[1 - side].flipped((a, b), made):
+                    theirs.discard(chord)
+                    theirs.difference_update(their_across.pop(chord, ()))
         if not changed:
             break
     return meshes[0].triangles(), meshes[1].triangles()

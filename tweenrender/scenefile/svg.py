@@ -251,40 +251,46 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
     """
     try:
         with noting(Path(svg_path)):
-            document = parse(read(Path(svg_path)))
-            box, placed = _root_viewport(document)
-            drawn = [d for d in walk(document, layered=True) if d.visible] if renders(document.root) else []
-            if box is None:  # no viewBox and no size: the elements' own extent
-                box = _extent(drawn)
-            x, y, w, h = box
-            world = (-y - h, x + w, -y)  # the box flipped: ymin, xmax, ymax
-            with np.errstate(all="ignore"):  # a tiny viewBox in a large size overflows: refused below
-                to_world = _FLIP @ placed
-                if into is not None:
-                    to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP @ placed
-            if not np.isfinite(to_world).all():
-                raise Refusal(f"expected a viewBox whose scale into the drawing's size is finite, found "
-                              f"viewBox {document.root.attrs.get('viewBox', '')!r}")
-            if into is not None:
-                world_box = into
-            else:
-                world_box = (x, world[0], world[1], world[2])
-            scale = math.sqrt(abs(_determinant(to_world)))
-            if tolerance is None:
-                tolerance = math.hypot(world_box[2] - world_box[0], world_box[3] - world_box[1]) * _DRAWING_TOLERANCE
-            tol = _check_tolerance(tolerance)
-            budget = Budget(MAX_VERTICES, tol)
-            elements = []
-            for d in drawn:
-                element = _element(d, to_world, scale, tol, budget)
-                if element is not None:
-                    elements += [part for ordered in in_paint_order(element, d.style.get("paint-order", ""))
-                                 for part in in_stroke_space(ordered, to_world @ d.ctm, clipped_miters(d.style))]
-                if any(d.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
-                    elements += _marker_elements(d, to_world, scale, tol, budget)
-            return Drawing(Path(svg_path), world_box, fold_lone_groups(elements), to_world)
+            return _read_drawing(Path(svg_path), tolerance, into)
     except Refusal as refusal:
         raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
+
+
+def _read_drawing(svg_path: Path, tolerance: float | None,
+                  into: tuple[float, float, float, float] | None) -> Drawing:
+    """:func:`read_drawing`'s work, refusals raised as :class:`Refusal`."""
+    document = parse(read(Path(svg_path)))
+    box, placed = _root_viewport(document)
+    drawn = [d for d in walk(document, layered=True) if d.visible] if renders(document.root) else []
+    if box is None:  # no viewBox and no size: the elements' own extent
+        box = _extent(drawn)
+    x, y, w, h = box
+    world = (-y - h, x + w, -y)  # the box flipped: ymin, xmax, ymax
+    with np.errstate(all="ignore"):  # a tiny viewBox in a large size overflows: refused below
+        to_world = _FLIP @ placed
+        if into is not None:
+            to_world = _fit((x, world[0], world[1], world[2]), into) @ _FLIP @ placed
+    if not np.isfinite(to_world).all():
+        raise Refusal(f"expected a viewBox whose scale into the drawing's size is finite, found "
+                      f"viewBox {document.root.attrs.get('viewBox', '')!r}")
+    if into is not None:
+        world_box = into
+    else:
+        world_box = (x, world[0], world[1], world[2])
+    scale = math.sqrt(abs(_determinant(to_world)))
+    if tolerance is None:
+        tolerance = math.hypot(world_box[2] - world_box[0], world_box[3] - world_box[1]) * _DRAWING_TOLERANCE
+    tol = _check_tolerance(tolerance)
+    budget = Budget(MAX_VERTICES, tol)
+    elements = []
+    for d in drawn:
+        element = _element(d, to_world, scale, tol, budget)
+        if element is not None:
+            elements += [part for ordered in in_paint_order(element, d.style.get("paint-order", ""))
+                         for part in in_stroke_space(ordered, to_world @ d.ctm, clipped_miters(d.style))]
+        if any(d.style.get(name, "none").strip() != "none" for name in MARKER_PROPERTIES):
+            elements += _marker_elements(d, to_world, scale, tol, budget)
+    return Drawing(Path(svg_path), world_box, fold_lone_groups(elements), to_world)
 
 
 def _fit(box: tuple[float, float, float, float], into: tuple[float, float, float, float]) -> NDArray[np.float64]:

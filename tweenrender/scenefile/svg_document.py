@@ -32,10 +32,10 @@ from .svg_context_paint import NO_CONTEXT, context_of, in_context, source_of
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_entities import UNSAFE, check_entities, safe_declaration
 from .svg_flatten import Refusal
-from .svg_text import font_longhands, lay_out
 from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_relative, font_size, is_length
 from .svg_marker_style import marker_longhands
 from .svg_notes import note
+from .svg_text import font_longhands, lay_out
 from .svg_transform_origin import about_origin, parse_origin
 from .svg_viewport import nested_viewport, outermost_size, root_size
 
@@ -306,7 +306,6 @@ def inherited_style(parent: dict[str, str], own: dict[str, str], node: Node) -> 
         style["font-size"] = repr(font_size(own["font-size"], above, node.font[1], node.view)
                                   if own["font-size"] != "inherit" else above)
     return style
-
 
 
 _TRANSFORM_NUMBER = re.compile(r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?|nan|inf(?:inity)?", re.IGNORECASE)

@@ -73,6 +73,33 @@ def test_a_red_mask_lets_through_its_luminance_or_its_alpha(tmp_path: Path, mask
     assert np.abs(picture[64:192, 64:192] - expected).max() <= 1.5
 
 
+
+def _srgb_to_linear(value: np.ndarray) -> np.ndarray:
+    return np.where(value <= 0.04045, value / 12.92, ((value + 0.055) / 1.055) ** 2.4)
+
+
+@pytest.mark.parametrize("interpolation", ["sRGB", "linearRGB"])
+def test_a_fading_gradient_mask_lets_through_luminance_times_alpha_within_rounding(
+        tmp_path: Path, interpolation: str) -> None:
+    """Transparent white to opaque black across x = 4 … 36: at ``s`` along it the colour is ``1 − s``, the
+    alpha ``s`` (stops interpolated unpremultiplied), so the mask lets through ``L(1 − s) · s`` where ``L``
+    is the identity (sRGB) or the sRGB transfer function's inverse (``color-interpolation="linearRGB"``);
+    green over white is then ``255 (1 − mask)`` in red. Every pixel within 1.5 levels of that: the 8-bit
+    roundings of the gradient's colour and alpha, the mask and the composite (resvg's reference pictures of
+    the same drawings are 1.5 levels off at most, too; the key-frame measure calls a pixel ink beyond 32
+    levels from white, and this curve runs near that line for many columns, so one level there changes
+    many pixels' verdict)."""
+    svg = _svg(tmp_path, "fade", '<linearGradient id="g"><stop offset="0" stop-color="white" stop-opacity="0"/>'
+                                 '<stop offset="1" stop-color="black"/></linearGradient>'
+                                 f'<mask id="m" color-interpolation="{interpolation}"><rect x="4" y="4" width="32" '
+                                 'height="32" fill="url(#g)"/></mask>'
+                                 '<rect width="40" height="40" fill="#008000" mask="url(#m)"/>')
+    red = _picture(svg)[128, :, 0]  # 256 px for 40 units: 6.4 px a unit
+    columns = np.arange(40, 216)  # inside x = 4 … 36 by a pixel and more
+    s = ((columns + 0.5) / 6.4 - 4) / 32
+    colour = _srgb_to_linear(1 - s) if interpolation == "linearRGB" else 1 - s
+    expected = 255 * (1 - colour * s)
+    assert np.abs(red[columns] - expected).max() <= 1.5, np.abs(red[columns] - expected).max()
 def test_an_element_whose_mask_needs_a_box_it_has_not_is_not_drawn(tmp_path: Path) -> None:
     svg = _svg(tmp_path, "line", '<mask id="m"><rect width="40" height="40" fill="white"/></mask>'
                                  '<line x1="0" y1="20" x2="40" y2="20" stroke="black" stroke-width="4" '

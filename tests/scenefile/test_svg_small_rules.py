@@ -175,6 +175,17 @@ def test_rem_is_the_root_elements_font_size(tmp_path: Path) -> None:
     assert (columns.min(), columns.max(), rows.min(), rows.max()) == (10, 39, 10, 29)
 
 
+def test_a_stroke_width_in_em_is_of_the_elements_font_size(tmp_path: Path) -> None:
+    """``stroke-width="0.5em"`` at font-size 20 is 10 units (CSS Values 3 §6.1.1, as any length): a line along
+    y = 25 inks rows 20 to 29, as ``stroke-width="10"`` does; before, it was read as 0.5."""
+    svg = tmp_path / "em-stroke.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="50" height="50" viewBox="0 0 50 50" '
+                   'font-size="20"><path d="M 5 25 H 45" stroke="#000" stroke-width="0.5em"/></svg>')
+    ink = (tr.frame(tr.load_scene(svg), 0.0, size=(50, 50), background="#ffffff")[..., :3] < 128).any(axis=-1)
+    rows, columns = np.nonzero(ink)
+    assert (columns.min(), columns.max(), rows.min(), rows.max()) == (5, 44, 20, 29)
+
+
 def test_a_nested_view_box_origin_moves_its_content(tmp_path: Path) -> None:
     """A nested ``<svg>``'s ``viewBox="50 50 100 100"`` in a 50 × 50 viewport at (10, 20) maps user point
     (50, 50) to (10, 20) at scale 1/2 (SVG 1.1 §7.7): a square from 50 to 150 lands on 10–60 × 20–70."""

@@ -50,6 +50,7 @@ from .svg_patterns import pattern_content
 from .svg_stroke_space import clipped_miters, in_stroke_space
 from .svg_notes import note, noting
 from .svg_pathdata import path_prefix, points_prefix, smooth_controls
+from .svg_lengths import user_units
 from .svg_viewport import aspect_matrix, parse_view_box, renders
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_VERTICES", "SUPPORTED", "SvgError", "Element", "Drawing", "load_svg_points",
@@ -560,13 +561,9 @@ def _miter_limit(text: str | None) -> float:
 
 
 def _stroke_width(text: str, d: Drawn) -> float:
-    from svgelements import Length
-
-    try:
-        value = float(Length(text.strip()).value(ppi=96.0, relative_length=_diagonal(d.document)))
-    except (ValueError, TypeError):
-        return 1.0
-    return value if math.isfinite(value) and value >= 0 else 1.0
+    """``stroke-width`` in user units (percentages of the viewport's normalised diagonal); 1 where in error."""
+    value = user_units(text, d.node.font, d.node.view, _diagonal(d.document))
+    return value if value is not None and value >= 0 else 1.0
 
 
 def _along_path_length(dash: Dash, d: Drawn) -> Dash:

@@ -14,25 +14,11 @@ import math
 import re
 
 from ..model import Dash
-from .svg_lengths import font_relative
+from .svg_lengths import user_units
 
 __all__ = ["read_dash", "along_path_length"]
 
 _SEPARATOR = re.compile(r"\s*,\s*|\s+")
-
-
-def _length(text: str, font: tuple[float, float], diagonal: float) -> float | None:
-    """One length in user units, or None when it cannot be read."""
-    from svgelements import Length
-
-    relative = font_relative(text, *font)
-    if relative is not None:
-        return relative
-    try:
-        value = float(Length(text).value(ppi=96.0, relative_length=diagonal))
-    except (ValueError, TypeError):
-        return None
-    return value if math.isfinite(value) else None
 
 
 def read_dash(style: dict[str, str], font: tuple[float, float], diagonal: float, scale: float) -> Dash | None:
@@ -43,7 +29,7 @@ def read_dash(style: dict[str, str], font: tuple[float, float], diagonal: float,
     if not text or text.lower() == "none":
         return None
     items = [item for item in _SEPARATOR.split(text) if item]
-    lengths = [_length(item, font, diagonal) for item in items]
+    lengths = [user_units(item, font, relative=diagonal) for item in items]
     if not lengths or any(v is None or v < 0 for v in lengths):
         return None  # an invalid value: as none
     values = [float(v) for v in lengths]  # type: ignore[arg-type]
@@ -51,7 +37,7 @@ def read_dash(style: dict[str, str], font: tuple[float, float], diagonal: float,
         values += values
     if not sum(values) > 0:
         return None
-    offset = _length(style.get("stroke-dashoffset", "0").strip() or "0", font, diagonal) or 0.0
+    offset = user_units(style.get("stroke-dashoffset", "0").strip() or "0", font, relative=diagonal) or 0.0
     return Dash(tuple(v * scale for v in values), offset * scale)
 
 

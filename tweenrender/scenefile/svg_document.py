@@ -32,7 +32,7 @@ from .svg_context_paint import NO_CONTEXT, context_of, in_context, source_of
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_entities import UNSAFE, check_entities, safe_declaration
 from .svg_flatten import Refusal
-from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_relative, font_size, is_length
+from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_size, user_units
 from .svg_marker_style import marker_longhands
 from .svg_notes import note
 from .svg_text import font_longhands, lay_out
@@ -338,22 +338,14 @@ def compose(ctm: NDArray[np.float64], step: NDArray[np.float64], node: Node, wha
 def length(node: Node, name: str, default: float = 0.0, relative: float = 1.0) -> float:
     """A length attribute in user units (units at 96 per inch, percentages of ``relative``, ``em``, ``rem``,
     ``ex`` of the element's font: :mod:`.svg_lengths`); ``default`` when it is not a length."""
-    from svgelements import Length
-
     text = node.attrs.get(name)
     if text is None or not text.strip():
         return default
-    relative_to_font = font_relative(text, *node.font, node.view)
-    if relative_to_font is not None:
-        return relative_to_font
-    if not is_length(text):
+    value = user_units(text, node.font, node.view, relative, strict=True)
+    if value is None:
         note(f"{name}={text.strip()[:40]!r}, which is not a length (line {node.line})")
         return default  # a length in error: the attribute's initial value, as renderers take it
-    try:
-        value = Length(text.strip()).value(ppi=96.0, relative_length=relative)
-        return float(value)
-    except (ValueError, TypeError):
-        raise Refusal(f"expected a length for {name}, found {text!r} (line {node.line})") from None
+    return value
 
 
 class _Walk:

@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["DEFAULT_FONT_SIZE", "DEFAULT_VIEW", "font_relative", "font_size", "is_length"]
+__all__ = ["DEFAULT_FONT_SIZE", "DEFAULT_VIEW", "font_relative", "font_size", "is_length", "user_units"]
 
 DEFAULT_FONT_SIZE = 16.0
 """``medium``, the initial ``font-size`` (CSS px, = user units)."""
@@ -84,3 +84,22 @@ def is_length(text: str) -> bool:
     """Whether ``text`` is a number with an absolute unit, a percentage or no unit (CSS's grammar): what
     is not (``44mmx``, ``auto``) is in error, and the attribute takes its initial value."""
     return _ABSOLUTE.match(text) is not None
+
+
+def user_units(text: str, font: tuple[float, float] = (DEFAULT_FONT_SIZE, DEFAULT_FONT_SIZE),
+               view: tuple[float, float] = DEFAULT_VIEW, relative: float = 1.0, *, strict: bool = False) -> float | None:
+    """``text`` as a length in user units: the units above of ``font`` (``(font-size, root's)``) and ``view``,
+    else absolute units at 96 per inch and percentages of ``relative`` (svgelements); None where it is not a
+    length (with ``strict``, by CSS's grammar: :func:`is_length`) or its value is not finite."""
+    value = font_relative(text, *font, view)
+    if value is None:
+        if strict and not is_length(text):
+            return None
+        from svgelements import Length
+
+        try:
+            found = Length(text.strip()).value(ppi=96.0, relative_length=relative)
+        except (ValueError, TypeError):
+            return None
+        value = float(found) if isinstance(found, (int, float)) else math.nan
+    return value if math.isfinite(value) else None

@@ -22,7 +22,7 @@ from typing import Protocol
 
 from .svg_flatten import Refusal
 from .svg_fonts import Face, FontRequest, face_for, fallback_for, outline, shape
-from .svg_lengths import DEFAULT_FONT_SIZE, font_relative, is_length
+from .svg_lengths import DEFAULT_FONT_SIZE, user_units
 
 __all__ = ["MAX_CHARACTERS", "TextNode", "Laid", "font_longhands", "lay_out"]
 
@@ -225,17 +225,11 @@ def _positions(chars: list[_Char], elements: list[TextNode], viewport: tuple[flo
 
 def _length_list(node: TextNode, name: str, relative: float) -> list[float]:
     """A list of lengths (``x="10 20 30"``) in user units; reading stops at the first that is not a length."""
-    from svgelements import Length
-
     values = []
     for text in _SEPARATOR.split(node.attrs.get(name, "").strip()):
-        if not text:
-            break
-        value = font_relative(text, *node.font, node.view)
+        value = user_units(text, node.font, node.view, relative, strict=True) if text else None
         if value is None:
-            if not is_length(text):
-                break
-            value = float(Length(text).value(ppi=96.0, relative_length=relative))
+            break
         values.append(value)
     return values
 
@@ -308,16 +302,11 @@ def _face_of(primary: Face, request: FontRequest, char: str) -> Face:
 
 
 def _spacing(span: _Span, name: str) -> float:
-    """``letter-spacing`` or ``word-spacing`` in user units (``normal``: 0)."""
+    """``letter-spacing`` or ``word-spacing`` in user units (``normal``, a percentage, what is not a length: 0)."""
     text = span.style.get(name, "normal").strip()
-    if text == "normal" or not text:
+    if text == "normal" or not text or text.endswith("%"):
         return 0.0
-    value = font_relative(text, *span.node.font, span.node.view)
-    if value is None and is_length(text) and not text.endswith("%"):
-        from svgelements import Length
-
-        value = float(Length(text).value(ppi=96.0))
-    return value or 0.0
+    return user_units(text, span.node.font, span.node.view, strict=True) or 0.0
 
 
 def _path(placed: _Placed) -> str:

@@ -17,6 +17,8 @@ import re
 import numpy as np
 from numpy.typing import NDArray
 
+from .svg_lengths import user_units
+
 __all__ = ["about_origin", "parse_origin"]
 
 _FRACTIONS = {"left": 0.0, "top": 0.0, "center": 0.5, "right": 1.0, "bottom": 1.0}
@@ -50,10 +52,6 @@ def parse_origin(text: str, box: tuple[float, float], font: tuple[float, float],
 
 def _coordinate(word: str, side: float, font: tuple[float, float], view: tuple[float, float]) -> float | None:
     """One coordinate of the origin: a keyword or a percentage of ``side``, or a length (user units)."""
-    from svgelements import Length
-
-    from .svg_lengths import font_relative
-
     if word in _FRACTIONS:
         return _FRACTIONS[word] * side
     if word.endswith("%"):
@@ -64,15 +62,7 @@ def _coordinate(word: str, side: float, font: tuple[float, float], view: tuple[f
         return value if math.isfinite(value) else None
     if not _NUMBER_FIRST.match(word):
         return None
-    relative = font_relative(word, *font, view)
-    if relative is not None:
-        return relative
-    try:
-        found = Length(word).value(ppi=96.0)
-        value = float(found) if isinstance(found, (int, float)) else math.nan
-    except (ValueError, TypeError):
-        return None
-    return value if math.isfinite(value) else None
+    return user_units(word, font, view)
 
 
 def about_origin(transform: NDArray[np.float64], origin: tuple[float, float] | None) -> NDArray[np.float64]:

@@ -17,6 +17,8 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
+from .svg_lengths import user_units
+
 __all__ = ["Viewport", "aspect_matrix", "nested_viewport", "outermost_size", "parse_view_box", "renders", "root_size"]
 
 
@@ -83,32 +85,17 @@ def _length(text: str | None, relative: float, default: float, font: tuple[float
             view: tuple[float, float] = (100.0, 100.0)) -> float:
     """A length attribute in user units (units at 96 per inch, percentages of ``relative``, ``em``, ``rem``
     and ``ex`` of ``font``, viewport units of ``view``); ``default`` when missing or unreadable."""
-    from svgelements import Length
-
-    from .svg_lengths import font_relative
-
-    if text is None or not text.strip():
-        return default
-    relative_to_font = font_relative(text, *font, view)
-    if relative_to_font is not None:
-        return relative_to_font
-    try:
-        value = float(Length(text.strip()).value(ppi=96.0, relative_length=relative))
-    except (ValueError, TypeError):
-        return default
-    return value if math.isfinite(value) else default
+    value = None if text is None or not text.strip() else user_units(text, font, view, relative)
+    return default if value is None else value
 
 
 def renders(root: Node) -> bool:
     """Whether the root ``<svg>`` draws anything: a ``width`` or ``height`` of zero or less disables its
     rendering (SVG 1.1 §7.2; a negative one is in error, and renderers draw nothing either), and so does a
     ``viewBox`` of zero width or height."""
-    from .svg_lengths import font_relative, is_length
-
     for name in ("width", "height"):
-        text = root.attrs.get(name, "").strip()
-        readable = is_length(text) or font_relative(text, *root.font) is not None
-        if readable and _length(text, 1.0, 1.0, root.font) <= 0:
+        value = user_units(root.attrs.get(name, ""), root.font, strict=True)
+        if value is not None and value <= 0:
             return False
     return not _zero_view_box(root.attrs.get("viewBox"))
 

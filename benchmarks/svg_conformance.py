@@ -50,6 +50,7 @@ GROUPS: dict[str, list[str]] = {
         "painting/stroke-dasharray", "painting/stroke-dashoffset", "painting/marker", "painting/paint-order",
         "structure/switch", "structure/transform-origin", "paint-servers/pattern", "painting/context",
         "structure/systemLanguage", "painting/overflow"],
+    "pictures": ["structure/image"],
 }
 PASS_IOU, PASS_ERROR = 0.99, 0.02
 SECONDS_PER_TEST = 20

@@ -535,6 +535,11 @@ MUTANTS = [
     Mutant("scene writer: the scene saved for drawings not announced", "tweenrender/preview/edits.py",
            "                    self.announce(str(path))", "                    pass", PREVIEW_EDITS),
     # -- the SVG reader: units, cascade, viewports, error rules ----------------------------------------
+    Mutant("svg reader: an <image>'s preserveAspectRatio ignored", "tweenrender/scenefile/svg_image.py",
+           'fit = aspect_matrix(box, w, h, node.attrs.get("preserveAspectRatio", "xMidYMid meet").strip())',
+           'fit = aspect_matrix(box, w, h, "none")', ("tests/scenefile/test_svg_images.py",)),
+    Mutant("svg reader: pixelated pictures blended", "tweenrender/scenefile/svg_image.py",
+           "rendering not in _NEAREST)", "True)", ("tests/scenefile/test_svg_images.py",)),
     Mutant("svg reader: Q read as a millimetre", "tweenrender/scenefile/svg_lengths.py",
            "return number * 96.0 / 25.4 / 4.0", "return number * 96.0 / 25.4", SVG_UNITS),
     Mutant("svg reader: ex a whole em", "tweenrender/scenefile/svg_lengths.py",

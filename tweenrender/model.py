@@ -145,14 +145,21 @@ class Pattern:
     plane; ``matrix`` ``(a, b, c, d, e, f)`` maps the pattern's units to the world (as a gradient's), and
     ``opacity`` multiplies the whole tile (``fill-opacity`` or ``stroke-opacity``); ``share`` is how much of
     the paint the tile is, the rest its plain colour beneath (1 at a key; between a key with a pattern and
-    one without, the pattern fades in or out). Patterns are equal only to themselves (their shapes hold
-    arrays)."""
+    one without, the pattern fades in or out). A picture (SVG's ``<image>``) is a pattern of one tile,
+    ``image`` ``(H, W, 4)`` straight RGBA over the tile ``(0, 0, W, H)`` (a pixel a unit), not repeated: its
+    edge pixels reach on (the element drawn with it covers no more than the picture), blended or, without
+    ``smooth``, the nearest. ``beneath`` is what lies under the share the tile is not (between two keys'
+    patterns, the first key's; None: the plain colour). Patterns are equal only to themselves (their shapes
+    hold arrays)."""
 
     tile: tuple[float, float, float, float]
     matrix: tuple[float, float, float, float, float, float]
     shapes: tuple[MaskShape, ...]
     opacity: float = 1.0
     share: float = 1.0
+    image: NDArray[np.uint8] | None = None
+    smooth: bool = True
+    beneath: Pattern | None = None
 
 
 @dataclass(frozen=True, slots=True)

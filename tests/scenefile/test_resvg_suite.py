@@ -20,7 +20,8 @@ from tests.scenefile.test_key_frames import measures
 
 SUITE = DATA / "resvg"
 FONTS = SUITE / "fonts"
-TESTS = sorted(p.relative_to(SUITE).as_posix() for p in SUITE.glob("*/*/*.svg"))
+DRAWINGS = SUITE / "tests"  # as in the suite, beside its ``resources`` (pictures the tests link to)
+TESTS = sorted(p.relative_to(DRAWINGS).as_posix() for p in DRAWINGS.glob("*/*/*.svg"))
 EXPECTED_FAILURES = set((SUITE / "expected-failures.txt").read_text().split())
 
 
@@ -38,7 +39,7 @@ def _over_white(rgba: np.ndarray) -> np.ndarray:
 def _scores(name: str) -> tuple[float, float]:
     import imageio.v3 as iio
 
-    svg = SUITE / name
+    svg = DRAWINGS / name
     reference = _over_white(iio.imread(svg.with_suffix(".png"), mode="RGBA"))
     height, width = reference.shape[:2]
     try:
@@ -52,7 +53,7 @@ def _scores(name: str) -> tuple[float, float]:
 
 def test_the_selection_is_the_suite_with_its_licence() -> None:
     assert len(TESTS) >= 500 and (SUITE / "LICENSE").read_text().startswith("The MIT License")
-    assert all((SUITE / name).with_suffix(".png").exists() for name in TESTS)
+    assert all((DRAWINGS / name).with_suffix(".png").exists() for name in TESTS)
     assert EXPECTED_FAILURES <= set(TESTS), sorted(EXPECTED_FAILURES - set(TESTS))
 
 

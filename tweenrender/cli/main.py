@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import logging
 import os
 import signal
 import sys
@@ -81,8 +82,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     except KeyboardInterrupt:
         return _interrupted()
-    if args.verbose:
-        _say_warnings()
+    handler = _say_warnings() if args.verbose else None
+    try:
+        return _run(args)
+    finally:
+        if handler is not None:  # a library user's next call says nothing unless asked
+            logging.getLogger("tweenrender").removeHandler(handler)
+
+
+def _run(args: argparse.Namespace) -> int:
+    """:func:`main` once the arguments are read: the command run, its failures said in one line."""
     try:
         with _terminate_cleanly():
             _sweep_temporaries()
@@ -182,15 +191,15 @@ def _interrupted() -> int:
     return 130
 
 
-def _say_warnings() -> None:
-    """With ``-v``, the library's warnings (what a drawing's reader skipped …) on stderr, a line each."""
-    import logging
-
+def _say_warnings() -> logging.Handler:
+    """With ``-v``, the library's warnings (what a drawing's reader skipped …) on stderr, a line each: the
+    handler that says them."""
     handler = logging.StreamHandler(sys.stderr)
     handler.setFormatter(logging.Formatter("tweenrender: warning: %(message)s"))
     logger = logging.getLogger("tweenrender")
     logger.addHandler(handler)
     logger.setLevel(logging.WARNING)
+    return handler
 
 
 def _explain(verbose: bool) -> None:

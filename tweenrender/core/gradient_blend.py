@@ -7,7 +7,8 @@ turns and stretches with the element and is each key's own gradient at its key. 
 blends as a gradient of that one colour, and a key without fill as the other key's gradient at alpha 0
 (each stop's alpha times the other key's share, as a plain colour blends with none); gradients of different
 kinds (linear, radial) or spreads take the nearer key's. Gradient strokes blend the same way, with the stroke's colour as a key's plain colour.
-A pattern is the nearer key's (a key without one: its plain colour), carried by the element's box likewise.
+Patterns (and pictures) are carried by the element's box likewise, the second key's over the first's by ``t``
+(a key without one: its plain colour).
 """
 
 from __future__ import annotations
@@ -125,24 +126,29 @@ def blend_stroke_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, 
 def carry_pattern(pattern0: Pattern | None, pattern1: Pattern | None, box0: Box, box1: Box, box: Box, t: float
                   ) -> Pattern | None:
     """The pattern at eased ``t`` between keys painted with ``pattern0`` (element's box ``box0``) and
-    ``pattern1`` (``box1``), for an inbetween whose box is ``box``: the nearer key's where both have one, else
-    the one there is, fading in (out) with ``t`` (its :attr:`~tweenrender.model.Pattern.share`, the plain
-    colour beneath the rest); placed relative to the inbetween's box as it was to that key's; None where
-    neither has one."""
+    ``pattern1`` (``box1``), for an inbetween whose box is ``box``, each placed relative to the inbetween's box
+    as it was to its key's: where both keys have one, the second over the first by ``t`` (its
+    :attr:`~tweenrender.model.Pattern.share`, the first :attr:`~tweenrender.model.Pattern.beneath` it); where
+    one has, that one fading in (out) with ``t`` over the paint's plain colour; None where neither has one."""
     if pattern0 is not None and pattern1 is not None:
-        (near, near_box), share = ((pattern0, box0) if t < 0.5 else (pattern1, box1)), 1.0
-    elif pattern1 is not None:
-        (near, near_box), share = (pattern1, box1), min(max(t, 0.0), 1.0)
-    elif pattern0 is not None:
-        (near, near_box), share = (pattern0, box0), min(max(1.0 - t, 0.0), 1.0)
-    else:
-        return None
-    if share <= 0.0:
-        return None
-    frames = _frame(near_box), _frame(box)
+        if t <= 0.0 or t >= 1.0:
+            return _carried(pattern0, box0, box, 1.0) if t <= 0.0 else _carried(pattern1, box1, box, 1.0)
+        return replace(_carried(pattern1, box1, box, t), beneath=_carried(pattern0, box0, box, 1.0))
+    if pattern1 is not None:
+        share = min(max(t, 0.0), 1.0)
+        return _carried(pattern1, box1, box, share) if share > 0.0 else None
+    if pattern0 is not None:
+        share = min(max(1.0 - t, 0.0), 1.0)
+        return _carried(pattern0, box0, box, share) if share > 0.0 else None
+    return None
+
+
+def _carried(pattern: Pattern, key_box: Box, box: Box, share: float) -> Pattern:
+    """``pattern``, placed relative to its key's element box ``key_box``, placed so relative to ``box``."""
+    frames = _frame(key_box), _frame(box)
     if frames[0] is None or frames[1] is None:
-        return replace(near, share=share)
-    a, b, c, d, e, f = near.matrix
+        return replace(pattern, share=share)
+    a, b, c, d, e, f = pattern.matrix
     placed = frames[1] @ np.linalg.solve(frames[0], np.array([[a, c, e], [b, d, f], [0.0, 0.0, 1.0]]))
-    return Pattern(near.tile, (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
-                               float(placed[0, 2]), float(placed[1, 2])), near.shapes, near.opacity, share)
+    return replace(pattern, matrix=(float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]),
+                                    float(placed[1, 1]), float(placed[0, 2]), float(placed[1, 2])), share=share)

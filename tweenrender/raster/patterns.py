@@ -29,6 +29,8 @@ def pattern_shader(pattern: Pattern, viewport: Viewport) -> skia.Shader | None:
     matrix = skia.Matrix.MakeAll(*(float(v) for v in full[0]), *(float(v) for v in full[1]), 0.0, 0.0, 1.0)
     if not matrix.invert(skia.Matrix()):
         return None
+    if pattern.image is not None:
+        return _picture_shader(pattern, matrix)
     tile = skia.Rect.MakeWH(w, h)
     recorder = skia.PictureRecorder()
     canvas = recorder.beginRecording(tile)
@@ -43,6 +45,19 @@ def pattern_shader(pattern: Pattern, viewport: Viewport) -> skia.Shader | None:
         canvas.restore()
     picture = recorder.finishRecordingAsPicture()
     return picture.makeShader(skia.TileMode.kRepeat, skia.TileMode.kRepeat, skia.FilterMode.kLinear, matrix, tile)
+
+
+def _picture_shader(pattern: Pattern, matrix: skia.Matrix) -> skia.Shader:
+    """A picture's shader (its pixels, straight RGBA, premultiplied here), edge pixels reaching on."""
+    pixels = np.ascontiguousarray(pattern.image)
+    image = skia.Image.fromarray(pixels, colorType=skia.ColorType.kRGBA_8888_ColorType,
+                                 alphaType=skia.AlphaType.kUnpremul_AlphaType)
+    sampling = skia.SamplingOptions(skia.FilterMode.kLinear if pattern.smooth else skia.FilterMode.kNearest)
+    shader = image.makeShader(skia.TileMode.kClamp, skia.TileMode.kClamp, sampling, matrix)
+    if pattern.opacity < 1.0:
+        shader = skia.Shaders.Blend(skia.BlendMode.kDstIn, shader,
+                                    skia.Shaders.Color(skia.Color4f(0.0, 0.0, 0.0, max(pattern.opacity, 0.0))))
+    return shader
 
 
 def _draw(canvas: skia.Canvas, shape: object) -> None:
@@ -74,20 +89,26 @@ def paint_shaders(paint: Paint, viewport: Viewport) -> tuple[skia.Shader | None,
     fill = stroke = None
     if paint.fill is not None:
         if paint.pattern is not None:
-            fill = _over_colour(pattern_shader(paint.pattern, viewport), paint.pattern, paint.fill)
+            fill = _over_colour(pattern_shader(paint.pattern, viewport), paint.pattern, paint.fill, viewport)
         elif paint.gradient is not None:
             fill = gradient_shader(paint.gradient, viewport)
     if paint.stroke is not None:
         if paint.stroke_pattern is not None:
-            stroke = _over_colour(pattern_shader(paint.stroke_pattern, viewport), paint.stroke_pattern, paint.stroke)
+            stroke = _over_colour(pattern_shader(paint.stroke_pattern, viewport), paint.stroke_pattern, paint.stroke,
+                                  viewport)
         elif paint.stroke_gradient is not None:
             stroke = gradient_shader(paint.stroke_gradient, viewport)
     return fill, stroke
 
 
-def _over_colour(shader: skia.Shader | None, pattern: Pattern, colour: tuple[int, int, int, int]) -> skia.Shader | None:
-    """A pattern fading in or out (its share below 1): a cross-fade from its paint's plain colour."""
+def _over_colour(shader: skia.Shader | None, pattern: Pattern, colour: tuple[int, int, int, int],
+                 viewport: Viewport) -> skia.Shader | None:
+    """A pattern that is part of the paint (its share below 1) over what lies beneath it: the pattern it
+    cross-fades from, or the paint's plain colour."""
     if shader is None or pattern.share >= 1.0:
         return shader
-    r, g, b, a = colour
-    return skia.Shaders.Lerp(float(pattern.share), skia.Shaders.Color(skia.Color(int(r), int(g), int(b), int(a))), shader)
+    beneath = pattern_shader(pattern.beneath, viewport) if pattern.beneath is not None else None
+    if beneath is None:
+        r, g, b, a = colour
+        beneath = skia.Shaders.Color(skia.Color(int(r), int(g), int(b), int(a)))
+    return skia.Shaders.Lerp(float(pattern.share), beneath, shader)

@@ -28,14 +28,14 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SceneError, did_you_mean
-from ..model import Color, Contour, Dash, Mask, MaskShape, Paint, frozen_points
+from ..model import Color, Contour, Dash, Mask, MaskShape, Paint, Pattern, frozen_points
 from .svg_basic_shapes import PREFIX as BASIC_SHAPE
 from .svg_document import SHAPES, Document, Drawn, Node, compose, length, matrix, parse, read, walk
 from .svg_flatten import Budget, Refusal, distinct, flatten, subpaths, zero_length_segment
@@ -43,6 +43,7 @@ from .svg_color import parse_color
 from .svg_dashes import read_dash
 from .svg_marker_style import MARKER_PROPERTIES
 from .svg_gradients import stop_color
+from .svg_image import PlacedImage
 from .svg_groups import fold_lone_groups
 from .svg_gradient_paint import with_gradients
 from .svg_paint_order import in_paint_order
@@ -146,6 +147,7 @@ def load_svg_contours(svg_path: Path, element_id: str, tolerance: float = DEFAUL
         if not isinstance(element_id, str) or not element_id:
             raise Refusal(f"expected a non-empty element id, found {element_id!r}")
         document = parse(read(Path(svg_path)))
+        document.folder = Path(svg_path).resolve().parent
         node = _find(document, element_id)
         drawn = next((d for d in walk(document, keep_hidden=True) if d.node is node), None)
         if drawn is None:
@@ -261,6 +263,7 @@ def _read_drawing(svg_path: Path, tolerance: float | None,
                   into: tuple[float, float, float, float] | None) -> Drawing:
     """:func:`read_drawing`'s work, refusals raised as :class:`Refusal`."""
     document = parse(read(Path(svg_path)))
+    document.folder = Path(svg_path).resolve().parent
     box, placed = _root_viewport(document)
     drawn = [d for d in walk(document, layered=True) if d.visible] if renders(document.root) else []
     if box is None:  # no viewBox and no size: the elements' own extent
@@ -343,6 +346,8 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
     paint = with_gradients(paint, d.style, d.document, placed, extent, (box[2], box[3]),
                            lambda node, ctm: pattern_content(node, ctm, d.document, budget, lambda inner: _element(
                                inner, np.eye(3), 1.0, tile_tol, budget)))
+    if d.image is not None:
+        paint = replace(paint, pattern=_picture(d.image, placed))
     clips = tuple(region for ref in d.clips for region in _clip_regions(ref[0], ref[1], d, to_world, tol, budget,
                                                                           owner=getattr(ref, "owner", None)))
     return Element(d.node.attrs.get("id"), d.node.tag, d.node.line,
@@ -350,12 +355,20 @@ def _element(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, 
                    miter, tuple(c for c in clips if c is not None), masks, d.groups)
 
 
+def _picture(image: PlacedImage, placed: NDArray[np.float64]) -> Pattern:
+    """An ``<image>``'s picture as the pattern its rectangle is filled with, ``placed`` (3x3) its user space
+    in the world."""
+    full = placed @ image.matrix
+    height, width = image.pixels.shape[:2]
+    return Pattern((0.0, 0.0, float(width), float(height)), (float(full[0, 0]), float(full[1, 0]), float(full[0, 1]),
+                                                           float(full[1, 1]), float(full[0, 2]), float(full[1, 2])),
+                   (), image=image.pixels, smooth=image.smooth)
+
+
 def _marker_elements(d: Drawn, to_world: NDArray[np.float64], scale: float, tol: float, budget: Budget,
                      chain: tuple[int, ...] = ()) -> list[Element]:
     """The shapes of ``d``'s markers as elements of their own, in paint order (:mod:`.svg_markers`); a marker
     met again inside its own content (``chain``: the markers being drawn) is left out."""
-    from dataclasses import replace
-
     from .svg_markers import marker_content, placements
 
     shape = _geometry(d.node, d.document, True, d.viewport)

@@ -13,6 +13,9 @@ attributes (:mod:`.svg_conditions`), ``<text>`` (its glyphs' outlines, :mod:`.sv
 
 from __future__ import annotations
 
+import gzip
+import hashlib
+import io
 import math
 import os
 import re
@@ -32,12 +35,13 @@ from .svg_context_paint import NO_CONTEXT, context_of, in_context, source_of
 from .svg_css import MAX_STYLE_WORK, Declarations, cascade, sheet_declarations, style_attribute
 from .svg_entities import UNSAFE, check_entities, safe_declaration
 from .svg_flatten import Refusal
+from .svg_image import PlacedImage, image_data, is_drawing, place_picture, placement
 from .svg_lengths import DEFAULT_FONT_SIZE, DEFAULT_VIEW, font_size, user_units
 from .svg_marker_style import marker_longhands
 from .svg_notes import note
 from .svg_text import font_longhands, lay_out
 from .svg_transform_origin import about_origin, parse_origin
-from .svg_viewport import nested_viewport, outermost_size, root_size
+from .svg_viewport import nested_viewport, outermost_size, parse_view_box, renders, root_size
 
 __all__ = ["MAX_FILE_BYTES", "MAX_ELEMENTS", "MAX_DEPTH", "MAX_EXPANDED", "MAX_RULE_MATCHES", "SHAPES", "Node", "Document",
            "Drawn", "Masking", "read", "parse"]
@@ -62,11 +66,12 @@ XLINK = "http://www.w3.org/1999/xlink"
 _CONTAINERS = ("svg", "g", "a", "switch")
 _NOT_DRAWN = ("defs", "symbol", "clipPath", "mask", "marker", "pattern", "linearGradient", "radialGradient",
               "filter", "title", "desc", "metadata", "style", "script")
-_UNSUPPORTED = ("image", "foreignObject")
+_UNSUPPORTED = ("foreignObject",)
 _INHERITED = ("fill", "fill-opacity", "fill-rule", "stroke", "stroke-opacity", "stroke-width", "stroke-linecap",
               "stroke-linejoin", "stroke-miterlimit", "visibility", "color", "stroke-dasharray", "stroke-dashoffset",
               "marker-start", "marker-mid", "marker-end", "clip-rule", "paint-order", "font-family", "font-weight",
-              "font-style", "font-stretch", "text-anchor", "letter-spacing", "word-spacing", "font-size")
+              "font-style", "font-stretch", "text-anchor", "letter-spacing", "word-spacing", "font-size",
+              "image-rendering")
 _PROPERTIES = _INHERITED + ("opacity", "display", "stop-color", "stop-opacity", "clip-path", "mask", "mask-type",
                              "color-interpolation")
 # the properties an element's own style is read for: those above, and what a sheet may set that no child inherits
@@ -97,6 +102,7 @@ class Document:
     root: Node
     ids: dict[str, list[Node]]
     sheet: dict[int, tuple[Declarations, ...]] = field(default_factory=dict)
+    folder: Path | None = None  # the drawing's folder, what an <image>'s relative path is of (None: not read)
 
 
 class ClipRef(tuple):  # type: ignore[type-arg]
@@ -138,6 +144,21 @@ class Drawn:
     # where its fill or stroke is a paint server taken from its context element (context-fill, …): that
     # element's user space (3x3) and node, whose box and space the paint server is drawn in; None: its own
     paint_space: tuple[NDArray[np.float64], Node] | None = None
+    # an <image>'s picture, placed in its user space (its node then a rectangle path over the part it covers)
+    image: PlacedImage | None = None
+
+
+def _gunzip(data: bytes, line: int) -> bytes:
+    """A gzip-compressed drawing (``.svgz``) in an ``<image>`` unpacked, refused past :data:`MAX_FILE_BYTES`."""
+    try:
+        with gzip.GzipFile(fileobj=io.BytesIO(data)) as unpacked:
+            out = unpacked.read(MAX_FILE_BYTES + 1)
+    except (OSError, EOFError):
+        raise Refusal(f"expected a gzip-compressed drawing in <image>, found data that cannot be unpacked "
+                      f"(line {line})") from None
+    if len(out) > MAX_FILE_BYTES:
+        raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes in <image>, found more (line {line})")
+    return out
 
 
 def read(path: Path) -> bytes:
@@ -362,6 +383,7 @@ class _Walk:
         self.looping: dict[str, bool] = {}  # id → whether a <use> of it leads back to itself
         self.viewport: tuple[float, float] | None = None  # the nested viewport's size; None: the root's
         self.context = NO_CONTEXT  # the fill and stroke of the <use> around (context-fill, context-stroke)
+        self.shown_drawings: frozenset[bytes] = frozenset()  # digests of the drawings <image> shows, outermost first
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
               shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = (),
@@ -422,12 +444,14 @@ class _Walk:
             yield from self.use(node, style, ctm, opacity, shown, clips, masks)
         elif node.tag == "text":
             yield from self.text(node, style, ctm, opacity, shown, clips, masks)
+        elif node.tag == "image":
+            yield from self.image(node, style, ctm, opacity, shown, clips, masks)
         elif node.tag in ("svg", "symbol") and node is not self.document.root:
             yield from self.viewport_children(node, own, style, ctm, opacity, shown, clips, instance, masks)
         elif node.tag in _CONTAINERS:
             children = node.children
             if node.tag == "switch":  # its first child whose conditions hold (SVG 1.1 §5.8.2)
-                chosen = switch_choice(node, SHAPES + _CONTAINERS + ("use", "text") + _UNSUPPORTED)
+                chosen = switch_choice(node, SHAPES + _CONTAINERS + ("use", "text", "image") + _UNSUPPORTED)
                 children = [chosen] if chosen is not None else []
             for child in children:
                 yield from self.visit(child, style, ctm, opacity, shown, clips, masks)
@@ -447,6 +471,80 @@ class _Walk:
             paint_space = self.in_context(own)
             yield Drawn(path, own, ctm, opacity, shown and laid.visible, self.document, clips,
                         viewport=self.viewport, masks=masks, groups=self.groups, paint_space=paint_space)
+
+    def image(self, node: Node, style: dict[str, str], ctm: NDArray[np.float64], opacity: float, shown: bool,
+              clips: tuple[tuple[str, NDArray[np.float64]], ...], masks: tuple[Masking, ...]) -> Iterator[Drawn]:
+        """An ``<image>`` (:mod:`.svg_image`): a picture is a rectangle over the part of its user space it
+        covers, filled with it; a drawing's shapes are drawn there; nothing where it draws nothing."""
+        found = image_data(node, self.document.folder)
+        if found is None:
+            return
+        data, folder = found
+        viewport = self.viewport or root_size(self.document.root)
+        if is_drawing(data):
+            yield from self.drawing(node, data, folder, viewport, ctm, opacity, shown, clips, masks)
+            return
+        placed = place_picture(node, style, data, viewport)
+        if placed is None:
+            return
+        x, y, w, h = placed.rect
+        attrs = {"d": f"M {x!r} {y!r} H {x + w!r} V {y + h!r} H {x!r} Z",
+                 **({"id": node.attrs["id"]} if "id" in node.attrs else {})}
+        path = Node("path", attrs, node.line, font=node.font, view=node.view)
+        own = {k: v for k, v in style.items() if not k.startswith("marker") and not k.startswith("stroke")}
+        own.update({"fill": "#000000", "fill-opacity": "1", "fill-rule": "nonzero", "stroke": "none"})
+        visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
+        yield Drawn(path, own, ctm, opacity, visible, self.document, clips, viewport=self.viewport, masks=masks,
+                    groups=self.groups, image=placed)
+
+    def drawing(self, node: Node, data: bytes, folder: Path | None, viewport: tuple[float, float],
+                ctm: NDArray[np.float64], opacity: float, shown: bool,
+                clips: tuple[tuple[str, NDArray[np.float64]], ...], masks: tuple[Masking, ...]) -> Iterator[Drawn]:
+        """The shapes of an SVG drawing shown by the ``<image>`` ``node``, placed in its viewport and cut off
+        there, with the clips and masks on the ``<image>``; nothing where an ``<image>`` of that drawing is
+        already being drawn (a drawing showing itself is drawn once inside itself, as browsers do)."""
+        key = hashlib.sha256(data).digest()
+        if key in self.shown_drawings:
+            note(f"an <image> that shows a drawing it is in (line {node.line})")
+            return
+        if data[:2] == b"\x1f\x8b":
+            data = _gunzip(data, node.line)
+        inner = parse(data)
+        inner.folder = folder
+        if not renders(inner.root):
+            return
+        size = outermost_size(inner.root)
+        box = parse_view_box(inner.root.attrs.get("viewBox")) or (0.0, 0.0, *size)
+        placed = placement(node, viewport, size, box)
+        if placed is None:
+            return
+        matrix, rect = placed
+        walk = _Walk(inner, self.keep_hidden, self.layered)
+        walk.shown_drawings = self.shown_drawings | {key}
+        walk.groups, walk.group_count, walk.visited = self.groups, self.group_count, self.visited
+        # the <image>'s own clips and masks name elements of this drawing: lent to the other under names no
+        # file can write
+        lent_clips: list[tuple[str, NDArray[np.float64]]] = []
+        for ref in clips:
+            lent = walk.lend(self.document, ref[0])
+            lent_clips.append(ClipRef.of(lent, ref[1], getattr(ref, "owner", None)) if lent != ref[0] else ref)
+        lent_masks = tuple((walk.lend(self.document, ident), space, owner) for ident, space, owner in masks)
+        cut = ClipRef.of(walk.viewport_clip(rect), ctm, node)
+        try:
+            yield from walk.visit(inner.root, {}, compose(ctm, matrix, node, "the <image>'s placement"), opacity,
+                                  shown, (*lent_clips, cut), lent_masks)
+        finally:
+            self.visited, self.group_count = walk.visited, walk.group_count
+
+    def lend(self, other: Document, ident: str) -> str:
+        """The id under which the element ``ident`` of ``other`` (a clip path, a mask) is known in this walk's
+        drawing, put there under a name no file can write; ``ident`` itself where ``other`` has no such id."""
+        nodes = other.ids.get(ident)
+        if not nodes or ident.startswith(BASIC_SHAPE):
+            return ident
+        lent = f"\0lent {id(other)} {ident}"
+        self.document.ids.setdefault(lent, nodes)
+        return lent
 
     def in_context(self, style: dict[str, str]) -> tuple[NDArray[np.float64], Node] | None:
         """Replaces ``context-fill`` and ``context-stroke`` in ``style`` by the context's paint; the context

@@ -277,7 +277,7 @@ def marker_content(d: Drawn, placed: Placed, memo: dict[object, object]) -> Iter
         clips = clips + ((walker.viewport_clip(placed.rect), placed.viewport),)
     style = _inherited(placed.marker, d.document, memo)
     for child in placed.marker.children:
-        if child.tag in SHAPES + ("g", "use", "svg", "switch", "a"):
+        if child.tag in SHAPES + ("g", "use", "svg", "switch", "a", "image", "text"):
             yield from walker.visit(child, style, placed.content, d.opacity, True, clips, d.masks)
     visited = int(memo.get("marker visits", 0)) + walker.visited  # type: ignore[call-overload]
     memo["marker visits"] = visited

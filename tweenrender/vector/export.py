@@ -185,7 +185,7 @@ def _windings(shape: Shape, at: ShapeAt) -> tuple[bool, ...]:
 
 
 def _refuse_uncarried(shape: Shape, at: ShapeAt) -> None:
-    """A vector file cannot carry cross-fading contours, masks nor group opacity: refuse, naming the element."""
+    """A vector file cannot carry cross-fading contours, masks, group opacity nor pictures: refuse, naming the element."""
     if at.fade is not None:
         raise OptionError(f"element {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which the "
                           "vector formats do not carry; render a video or PNG frames", "format")
@@ -196,6 +196,9 @@ def _refuse_uncarried(shape: Shape, at: ShapeAt) -> None:
     if at.masks:
         raise OptionError(f"element {shape.name!r}: it is masked (an SVG <mask>), which the vector formats do not "
                           "carry; render a video or PNG frames, or use a clip-path in the drawing", "format")
+    if any(p is not None and p.image is not None for p in (at.paint.pattern, at.paint.stroke_pattern)):
+        raise OptionError(f"element {shape.name!r}: it is a picture (an SVG <image>), which the vector formats do "
+                          "not carry yet; render a video or PNG frames", "format")
 
 
 def _gradient_looks(shapes: list[ShapeAt], segments: NDArray[np.intp]) -> list[tuple[str, str] | None]:

@@ -68,6 +68,13 @@ CASES = {
                                                          '</clipPath><g clip-path="url(#c)"><image x="2" y="2" '
                                                          'width="36" height="36" href="pic.png"/></g>',
     "a JPEG file": '<image x="2" y="8" width="36" height="24" href="pic.jpg"/>',
+    # as Figma writes a picture fill: a pattern of the box, using a picture kept in <defs>
+    "a pattern using a picture, as Figma writes it": '<rect x="4" y="6" width="32" height="24" rx="3" '
+                                                     'fill="url(#p0)"/><defs><pattern id="p0" '
+                                                     'patternContentUnits="objectBoundingBox" width="1" height="1">'
+                                                     '<use xlink:href="#i0" transform="scale(0.0833333 0.125)"/>'
+                                                     f'</pattern><image id="i0" width="12" height="8" '
+                                                     f'xlink:href="{EMBEDDED}"/></defs>',
 }
 DRAWING = ('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 20 10"><rect width="20" height="10" fill="#3366cc"/>'
            '<circle cx="10" cy="5" r="4" fill="#ffcc00"/><path d="M 2 8 L 18 2" stroke="#000" stroke-width="1"/></svg>')

@@ -61,7 +61,8 @@ def _picture_shader(pattern: Pattern, matrix: skia.Matrix) -> skia.Shader:
 
 
 def _draw(canvas: skia.Canvas, shape: object) -> None:
-    """One shape of a tile (a :class:`~tweenrender.model.MaskShape`, the pattern's units) in its plain colours."""
+    """One shape of a tile (a :class:`~tweenrender.model.MaskShape`, the pattern's units) in its plain colours,
+    or a picture's pixels."""
     paint = shape.paint  # type: ignore[attr-defined]
     path = skia.Path()
     for contour in shape.contours:  # type: ignore[attr-defined]
@@ -72,7 +73,12 @@ def _draw(canvas: skia.Canvas, shape: object) -> None:
     path.setFillType(skia.PathFillType.kEvenOdd if even else skia.PathFillType.kWinding)
     opacity = max(min(paint.opacity, 1.0), 0.0)
     if paint.fill is not None and paint.fill[3] > 0:
-        canvas.drawPath(path, skia.Paint(AntiAlias=True, Color=paint_color(paint.fill, opacity)))
+        fill = skia.Paint(AntiAlias=True, Color=paint_color(paint.fill, opacity))
+        picture = paint.pattern
+        if picture is not None and picture.image is not None:  # a picture in the tile: its pixels
+            a, b, c, d, e, f = picture.matrix
+            fill.setShader(_picture_shader(picture, skia.Matrix.MakeAll(a, c, e, b, d, f, 0.0, 0.0, 1.0)))
+        canvas.drawPath(path, fill)
     if paint.stroke is not None and paint.stroke[3] > 0 and paint.stroke_width > 0:
         stroke = skia.Paint(AntiAlias=True, Style=skia.Paint.kStroke_Style, Color=paint_color(paint.stroke, opacity),
                             StrokeWidth=float(paint.stroke_width))

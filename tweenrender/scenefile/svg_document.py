@@ -492,7 +492,7 @@ class _Walk:
                  **({"id": node.attrs["id"]} if "id" in node.attrs else {})}
         path = Node("path", attrs, node.line, font=node.font, view=node.view)
         own = {k: v for k, v in style.items() if not k.startswith("marker") and not k.startswith("stroke")}
-        own.update({"fill": "#000000", "fill-opacity": "1", "fill-rule": "nonzero", "stroke": "none"})
+        own.update({"fill": placed.mean_colour(), "fill-opacity": "1", "fill-rule": "nonzero", "stroke": "none"})
         visible = shown and style.get("visibility", "visible") not in ("hidden", "collapse")
         yield Drawn(path, own, ctm, opacity, visible, self.document, clips, viewport=self.viewport, masks=masks,
                     groups=self.groups, image=placed)

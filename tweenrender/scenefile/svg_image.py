@@ -68,6 +68,14 @@ class PlacedImage:
     rect: tuple[float, float, float, float]
     smooth: bool
 
+    def mean_colour(self) -> str:
+        """The picture's mean colour (each pixel weighted by its alpha), as CSS ``#rrggbb``: the plain colour it
+        stands on while it fades in or out, and stands for where one colour is drawn."""
+        rgba = self.pixels.reshape(-1, 4).astype(np.float64)
+        weight = rgba[:, 3].sum()
+        mean = rgba[:, :3].T @ rgba[:, 3] / weight if weight > 0 else np.zeros(3)
+        return "#" + "".join(f"{int(round(v)):02x}" for v in mean)
+
 
 def image_data(node: Node, folder: Path | None) -> tuple[bytes, Path | None] | None:
     """The bytes ``node`` (an ``<image>``) names and the folder relative paths inside them are of (a file's;

@@ -78,15 +78,15 @@ def lottie_path_at(prop: dict, frame: float) -> tuple[np.ndarray, np.ndarray, np
 
 
 def svg_path_points(d: str) -> list[tuple[np.ndarray, bool]]:
-    """The subpaths an SVG ``d`` of ``M``, ``L``, ``C`` and ``Z`` (``l`` and ``c`` relative to the pen) draws:
+    """The subpaths an SVG ``d`` of ``M``, ``L``, ``C`` and ``Z`` (``l``, ``c`` relative to the pen; ``z``) draws:
     ``[(points (P, 2), closed)]``."""
     out: list[tuple[np.ndarray, bool]] = []
     for sub in re.findall(r"M[^M]*", d):
-        tokens = re.findall(r"[MLCZlc]|-?[\d.]+(?:e-?\d+)?", sub)
+        tokens = re.findall(r"[MLCZlcz]|-?(?:\d+\.?\d*|\.\d+)(?:e-?\d+)?", sub)
         pen, start, pieces, closed = np.zeros(2), np.zeros(2), [], False
         command, numbers = "", []
         for token in tokens + ["M"]:
-            if token in "MLCZlc":
+            if token in "MLCZlcz":
                 if command == "M":
                     pen = start = np.array(numbers[:2])
                     pieces.append(pen[None])
@@ -100,7 +100,7 @@ def svg_path_points(d: str) -> list[tuple[np.ndarray, bool]]:
                         c = np.array(numbers[k:k + 6]).reshape(3, 2) + (pen if command == "c" else 0.0)
                         pieces.append(cubic(pen, c[0], c[1], c[2]))
                         pen = c[2]
-                elif command == "Z":
+                elif command in "Zz":
                     pieces.append(np.stack([pen, start]))
                     closed = True
                 command, numbers = token, []

@@ -53,17 +53,43 @@ def animate(name: str, frames: tuple[int, ...], values: list[str], total: int, t
 
 
 def path_data(paths: list[Array], closed: tuple[bool, ...], lines: list[Array] | None = None) -> str:
-    """One path's ``d``: ``M x,y L x,y … Z`` per contour of straight edges (``(L, 2)`` pixels), ``M x,y C
-    x,y x,y x,y … Z`` per cubic Bézier contour (``(M, 3, 2)``: in control point, vertex, out control point),
-    an ``L`` for each span ``lines`` (one ``(M,)`` bool per contour, by the vertex it leaves) marks straight."""
+    """One path's ``d``, short: per contour an absolute ``M`` then ``l`` per straight edge (``(L, 2)`` pixels),
+    or ``c`` per span of a cubic Bézier contour (``(M, 3, 2)``: in control point, vertex, out control point;
+    ``l`` for each span ``lines``, one ``(M,)`` bool per contour by the vertex it leaves, marks straight),
+    ``z`` where closed. Points are rounded to :data:`PIXEL_DIGITS` decimals first and each relative step is
+    the difference of rounded points, so the path is the rounded absolute one, with no error summed along
+    it; a command is not repeated, numbers drop their leading zero and a minus sign parts them."""
     parts = []
     for index, (points, shut) in enumerate(zip(paths, closed)):
         if points.ndim == 3:
             parts.append(_curve_data(points, shut, None if lines is None else lines[index]))
             continue
-        coords = [f"{number(x, PIXEL_DIGITS)},{number(y, PIXEL_DIGITS)}" for x, y in points.tolist()]
-        parts.append("M" + coords[0] + " L" + " ".join(coords[1:]) + (" Z" if shut else ""))
-    return " ".join(parts)
+        rounded = _rounded(points)
+        steps = np.diff(rounded, axis=0)
+        parts.append("M" + _numbers(rounded[0]) + ("l" + _numbers(steps.ravel()) if len(steps) else "")
+                     + ("z" if shut else ""))
+    return "".join(parts)
+
+
+def _rounded(points: Array) -> Array:
+    """``points`` rounded as they are written (:data:`PIXEL_DIGITS` decimals)."""
+    return np.round(np.asarray(points, dtype=np.float64), PIXEL_DIGITS)
+
+
+def _numbers(values: Array) -> str:
+    """Numbers of path data, as short as SVG's grammar reads them: no leading zero, a space between two
+    but where a minus sign parts them."""
+    out = []
+    for value in np.asarray(values, dtype=np.float64).ravel().tolist():
+        text = number(value, PIXEL_DIGITS)
+        if text.startswith("0."):
+            text = text[1:]
+        elif text.startswith("-0."):
+            text = "-" + text[2:]
+        if out and not text.startswith("-"):
+            out.append(" ")
+        out.append(text)
+    return "".join(out)
 
 
 def straight_spans(curves: Array) -> Array:
@@ -75,17 +101,18 @@ def straight_spans(curves: Array) -> Array:
 
 
 def _curve_data(points: Array, closed: bool, lines: Array | None) -> str:
-    """``M`` and one ``C`` (``L`` where ``lines (M,)`` says so) per span of a cubic Bézier contour ``(M, 3, 2)``
-    (closed: back to its first vertex), the points written to :data:`PIXEL_DIGITS` decimals."""
-    def pair(xy: Array) -> str:
-        return f"{number(float(xy[0]), PIXEL_DIGITS)},{number(float(xy[1]), PIXEL_DIGITS)}"
-
+    """``M``, then ``c`` (``l`` where ``lines (M,)`` says so) per span of a cubic Bézier contour ``(M, 3, 2)``
+    (closed: back to its first vertex), relative to the rounded pen (:func:`path_data`)."""
+    rounded = _rounded(points)
     count = len(points)
     spans = [(k, k + 1) for k in range(count - 1)] + ([(count - 1, 0)] if closed and count > 1 else [])
-    text = "M" + pair(points[0, 1])
+    text, command = "M" + _numbers(rounded[0, 1]), ""
     for a, b in spans:
-        if lines is not None and lines[a]:
-            text += " L" + pair(points[b, 1])
-        else:
-            text += " C" + pair(points[a, 2]) + " " + pair(points[b, 0]) + " " + pair(points[b, 1])
-    return text + (" Z" if closed else "")
+        pen = rounded[a, 1]
+        straight = lines is not None and bool(lines[a])
+        letter = "l" if straight else "c"
+        values = rounded[b, 1] - pen if straight else np.concatenate(
+            [rounded[a, 2] - pen, rounded[b, 0] - pen, rounded[b, 1] - pen])
+        text += (letter if letter != command else " ") + _numbers(values)
+        command = letter
+    return text + ("z" if closed else "")

@@ -221,3 +221,18 @@ def test_two_pictures_cross_fade_between_keys(tmp_path: Path) -> None:
     reds, blues = [int(p[0]) for p in middle], [int(p[2]) for p in middle]
     assert reds[0] > reds[1] > reds[2] and blues[0] < blues[1] < blues[2], middle
     assert all(20 < value < 235 for value in reds + blues), middle
+
+
+def test_a_picture_used_again_is_decoded_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Three ``<use>`` copies of one ``<image>``: one decoding, the three shapes sharing its pixels."""
+    from tweenrender.scenefile import svg_image
+
+    calls = []
+    decode = svg_image._decode
+    monkeypatch.setattr(svg_image, "_decode", lambda data, line: calls.append(line) or decode(data, line))
+    svg = tmp_path / "copies.svg"
+    svg.write_text(HEAD + f'<defs><image id="p" width="10" height="10" href="{EMBEDDED}"/></defs>'
+                          '<use href="#p"/><use href="#p" x="15"/><use href="#p" y="15"/></svg>')
+    drawing = tr.load_scene(svg)
+    pictures = [shape.keys[0].paint.pattern.image for shape in drawing.shapes]
+    assert len(calls) == 1 and len(pictures) == 3 and all(p is pictures[0] for p in pictures)

@@ -47,11 +47,26 @@ def pattern_shader(pattern: Pattern, viewport: Viewport) -> skia.Shader | None:
     return picture.makeShader(skia.TileMode.kRepeat, skia.TileMode.kRepeat, skia.FilterMode.kLinear, matrix, tile)
 
 
-def _picture_shader(pattern: Pattern, matrix: skia.Matrix) -> skia.Shader:
-    """A picture's shader (its pixels, straight RGBA, premultiplied here), edge pixels reaching on."""
-    pixels = np.ascontiguousarray(pattern.image)
-    image = skia.Image.fromarray(pixels, colorType=skia.ColorType.kRGBA_8888_ColorType,
+_PICTURES: dict[int, tuple[np.ndarray, skia.Image]] = {}  # the pictures made lately, by their pixels' id
+_KEPT_PICTURES = 8
+
+
+def _picture(pixels: np.ndarray) -> skia.Image:
+    """The skia image of ``pixels (H, W, 4)`` (straight RGBA), made once while it is drawn frame after frame."""
+    found = _PICTURES.get(id(pixels))
+    if found is not None and found[0] is pixels:
+        return found[1]
+    image = skia.Image.fromarray(np.ascontiguousarray(pixels), colorType=skia.ColorType.kRGBA_8888_ColorType,
                                  alphaType=skia.AlphaType.kUnpremul_AlphaType)
+    if len(_PICTURES) >= _KEPT_PICTURES:
+        _PICTURES.pop(next(iter(_PICTURES)))
+    _PICTURES[id(pixels)] = (pixels, image)  # the pixels kept with it: their id is not reused meanwhile
+    return image
+
+
+def _picture_shader(pattern: Pattern, matrix: skia.Matrix) -> skia.Shader:
+    """A picture's shader (its pixels, straight RGBA, premultiplied by skia), edge pixels reaching on."""
+    image = _picture(pattern.image)  # type: ignore[arg-type]
     sampling = skia.SamplingOptions(skia.FilterMode.kLinear if pattern.smooth else skia.FilterMode.kNearest)
     shader = image.makeShader(skia.TileMode.kClamp, skia.TileMode.kClamp, sampling, matrix)
     if pattern.opacity < 1.0:

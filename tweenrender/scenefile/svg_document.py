@@ -103,6 +103,7 @@ class Document:
     ids: dict[str, list[Node]]
     sheet: dict[int, tuple[Declarations, ...]] = field(default_factory=dict)
     folder: Path | None = None  # the drawing's folder, what an <image>'s relative path is of (None: not read)
+    pictures: dict[bytes, NDArray[np.uint8] | None] = field(default_factory=dict)  # decoded, by data digest
 
 
 class ClipRef(tuple):  # type: ignore[type-arg]
@@ -383,7 +384,7 @@ class _Walk:
         self.looping: dict[str, bool] = {}  # id → whether a <use> of it leads back to itself
         self.viewport: tuple[float, float] | None = None  # the nested viewport's size; None: the root's
         self.context = NO_CONTEXT  # the fill and stroke of the <use> around (context-fill, context-stroke)
-        self.shown_drawings: frozenset[bytes] = frozenset()  # digests of the drawings <image> shows, outermost first
+        self.shown_drawings: frozenset[bytes] = frozenset()  # digests of the drawings the walk is inside
 
     def visit(self, node: Node, parent: dict[str, str], ctm: NDArray[np.float64], opacity: float,
               shown: bool, clips: tuple[tuple[str, NDArray[np.float64]], ...] = (),
@@ -484,7 +485,7 @@ class _Walk:
         if is_drawing(data):
             yield from self.drawing(node, data, folder, viewport, ctm, opacity, shown, clips, masks)
             return
-        placed = place_picture(node, style, data, viewport)
+        placed = place_picture(node, style, data, viewport, self.document.pictures)
         if placed is None:
             return
         x, y, w, h = placed.rect

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import base64
 import binascii
+import hashlib
 import io
 import re
 import urllib.parse
@@ -91,11 +92,19 @@ def is_drawing(data: bytes) -> bool:
     return start.startswith(b"\x1f\x8b") or start[:1] == b"<"
 
 
-def place_picture(node: Node, style: dict[str, str], data: bytes, viewport: tuple[float, float]
-                  ) -> PlacedImage | None:
+def place_picture(node: Node, style: dict[str, str], data: bytes, viewport: tuple[float, float],
+                  decoded: dict[bytes, NDArray[np.uint8] | None] | None = None) -> PlacedImage | None:
     """The picture in ``data`` as ``node`` (an ``<image>`` with the resolved ``style``) draws it, placed in its
-    user space; None where it draws nothing. ``viewport`` is what its percentages are of."""
-    pixels = _decode(data, node.line)
+    user space; None where it draws nothing. ``viewport`` is what its percentages are of; ``decoded`` keeps
+    the pictures decoded so far by their data's digest (a picture used again is decoded once, its pixels
+    shared)."""
+    key = hashlib.sha256(data).digest()
+    if decoded is None or key not in decoded:
+        pixels = _decode(data, node.line)
+        if decoded is not None:
+            decoded[key] = pixels
+    else:
+        pixels = decoded[key]
     if pixels is None:
         return None
     height, width = pixels.shape[:2]

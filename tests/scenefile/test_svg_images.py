@@ -151,11 +151,16 @@ def test_a_picture_is_carried_with_its_element_between_keys(tmp_path: Path) -> N
     assert tuple(picture[row, 5 * 8]) == (255, 255, 255) and tuple(picture[row, 5 * 42]) == (255, 255, 255)
 
 
+BROKEN_SVGZ = _data_url(b"\x1f\x8b broken", "image/svg+xml")
+
+
 def test_what_cannot_be_read_draws_nothing_and_is_said_with_v(tmp_path: Path) -> None:
     svg = tmp_path / "broken.svg"
     svg.write_text(HEAD + '<image width="20" height="20" href="https://example.com/a.png"/>'
                           '<image y="20" width="20" height="20" href="missing.png"/>'
                           '<image x="20" width="20" height="20" href="data:image/png;base64,AAAA"/>'
+                          '<image x="20" y="20" width="10" height="10" href="data:image/svg+xml,&lt;svg"/>'
+                          f'<image x="20" y="30" width="10" height="10" href="{BROKEN_SVGZ}"/>'
                           '<rect x="30" y="30" width="10" height="10" fill="green"/></svg>')
     picture = tr.frame(tr.load_scene(svg), 0.0, size=(40, 40), background="#ffffff")[..., :3]
     assert (picture[:30, :30] == 255).all()
@@ -166,7 +171,8 @@ def test_what_cannot_be_read_draws_nothing_and_is_said_with_v(tmp_path: Path) ->
     lines = [line for line in said.stderr.splitlines() if "<image>" in line]  # a line a drawing
     assert len(lines) == 1 and all(what in lines[0] for what in ("'https://example.com/a.png', which is not "
                                                                   "fetched", "'missing.png', a file that cannot be "
-                                                                  "read", "not a PNG")), said.stderr
+                                                                  "read", "not a PNG", "a drawing that cannot be "
+                                                                  "read")), said.stderr
     quiet = run_main("render", str(svg), str(good), "-o", str(tmp_path / "frames2"), "--frames", "0:1")
     assert quiet.returncode == 0 and quiet.stderr == ""
 

@@ -149,16 +149,15 @@ class Drawn:
     image: PlacedImage | None = None
 
 
-def _gunzip(data: bytes, line: int) -> bytes:
-    """A gzip-compressed drawing (``.svgz``) in an ``<image>`` unpacked, refused past :data:`MAX_FILE_BYTES`."""
+def _gunzip(data: bytes) -> bytes:
+    """A gzip-compressed drawing (``.svgz``) unpacked; refused past :data:`MAX_FILE_BYTES` or where it cannot be."""
     try:
         with gzip.GzipFile(fileobj=io.BytesIO(data)) as unpacked:
             out = unpacked.read(MAX_FILE_BYTES + 1)
     except (OSError, EOFError):
-        raise Refusal(f"expected a gzip-compressed drawing in <image>, found data that cannot be unpacked "
-                      f"(line {line})") from None
+        raise Refusal("expected gzip-compressed data, found data that cannot be unpacked") from None
     if len(out) > MAX_FILE_BYTES:
-        raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes in <image>, found more (line {line})")
+        raise Refusal(f"expected a drawing of at most {MAX_FILE_BYTES} bytes, found more")
     return out
 
 
@@ -508,9 +507,11 @@ class _Walk:
         if key in self.shown_drawings:
             note(f"an <image> that shows a drawing it is in (line {node.line})")
             return
-        if data[:2] == b"\x1f\x8b":
-            data = _gunzip(data, node.line)
-        inner = parse(data)
+        try:
+            inner = parse(_gunzip(data) if data[:2] == b"\x1f\x8b" else data)
+        except Refusal as refusal:  # as a browser shows a broken image: nothing, and the rest of the drawing
+            note(f"an <image> of a drawing that cannot be read (line {node.line}): {str(refusal)[:80]}")
+            return
         inner.folder = folder
         if not renders(inner.root):
             return

@@ -10,7 +10,8 @@ used), cut off at the viewport. A picture's ``image-rendering: pixelated`` (``op
 ``crisp-edges``) samples the nearest pixel, anything else blends them; it is turned as its EXIF
 orientation says (CSS ``image-orientation: from-image``); a GIF or WebP shows its first frame. A drawing's
 shapes are read as the drawing's own (:mod:`.svg_document`), so they morph like any others. What cannot be
-read (a missing file, a web address, data that is no picture, a drawing that shows itself) draws nothing,
+read (a missing file, a web address, data that is no picture or no well-formed drawing, a drawing that
+shows itself) draws nothing,
 as browsers draw a broken image in SVG, said with ``-v``; a picture of more than :data:`MAX_PIXELS` pixels
 or a file over :data:`MAX_FILE_BYTES` is refused.
 """

@@ -146,8 +146,7 @@ def load_svg_contours(svg_path: Path, element_id: str, tolerance: float = DEFAUL
         tol = _check_tolerance(tolerance)
         if not isinstance(element_id, str) or not element_id:
             raise Refusal(f"expected a non-empty element id, found {element_id!r}")
-        document = parse(read(Path(svg_path)))
-        document.folder = Path(svg_path).resolve().parent
+        document = _document(Path(svg_path))
         node = _find(document, element_id)
         drawn = next((d for d in walk(document, keep_hidden=True) if d.node is node), None)
         if drawn is None:
@@ -259,11 +258,17 @@ def read_drawing(svg_path: Path, tolerance: float | None = None,
         raise SvgError(svg_path, None, str(refusal)) from refusal.__cause__
 
 
+def _document(svg_path: Path) -> Document:
+    """The drawing at ``svg_path`` parsed, knowing its folder (what an ``<image>``'s relative path is of)."""
+    document = parse(read(svg_path))
+    document.folder = svg_path.resolve().parent
+    return document
+
+
 def _read_drawing(svg_path: Path, tolerance: float | None,
                   into: tuple[float, float, float, float] | None) -> Drawing:
     """:func:`read_drawing`'s work, refusals raised as :class:`Refusal`."""
-    document = parse(read(Path(svg_path)))
-    document.folder = Path(svg_path).resolve().parent
+    document = _document(svg_path)
     box, placed = _root_viewport(document)
     drawn = [d for d in walk(document, layered=True) if d.visible] if renders(document.root) else []
     if box is None:  # no viewBox and no size: the elements' own extent

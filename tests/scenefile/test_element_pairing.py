@@ -140,3 +140,37 @@ def test_of_drawings_drawn_by_strokes_alone_an_outline_pairs_with_an_outline_not
     rings = [(radius(p.k0), radius(p.k1)) for track in tracks_of(scene) for segment in track.segments
              for p in segment.pairs if p.moving and p.closed]
     assert len(rings) == 1 and rings[0] == (pytest.approx(10.0, rel=0.01), pytest.approx(4.0, rel=0.01))
+
+
+def _disc(cx: float, cy: float, r: float, count: int = 48) -> np.ndarray:
+    angles = np.linspace(0.0, 2.0 * np.pi, count, endpoint=False)
+    return np.stack([cx + r * np.cos(angles), cy + r * np.sin(angles)], axis=1)
+
+
+def test_a_solid_shape_pairs_with_the_solid_shape_of_its_area_not_with_pieces_spread_over_its_box() -> None:
+    """A heart becoming a sun drawn as a disc and, as one element, eight small rays around it (twemoji's
+    2600): the rays' box is the heart's, but their ink is a fifth of it; the disc, in a smaller box, holds
+    nearly the heart's area. The heart becomes the disc and the rays grow (were it the rays, the heart would
+    shrink into one ray while the disc grew out of it)."""
+    orange = (255, 172, 51, 255)
+    heart = Element(None, "path", 1, (Contour(_disc(18, 18, 15, 64)),), Paint(fill=(0, 0, 0, 255)),
+                    "nonzero", "butt", "miter", 4.0)
+    rays = tuple(Contour(_disc(18 + 16 * np.cos(a), 18 + 16 * np.sin(a), 2, 16))
+                 for a in np.linspace(0.0, 2.0 * np.pi, 8, endpoint=False))
+    sun = [Element(None, "path", 1, rays, Paint(fill=orange), "nonzero", "butt", "miter", 4.0),
+           Element(None, "circle", 2, (Contour(_disc(18, 18, 10)),), Paint(fill=orange), "nonzero", "butt",
+                   "miter", 4.0)]
+    assert (0, 1) in match_elements([heart], sun, float(np.hypot(36, 36)))
+
+
+def test_a_ring_drawn_as_an_outline_with_a_hole_pairs_by_the_area_it_encloses() -> None:
+    """A page (a filled rectangle) becoming a thin ring (a disc with a hole, one element) with a bar across
+    it: the ring's ink is nearer the bar's than the page's, but it encloses the page's area; the page becomes
+    the ring."""
+    page = Element(None, "rect", 1, (Contour(np.array([[4, 2], [32, 2], [32, 34], [4, 34]], float)),),
+                   Paint(fill=(0, 0, 0, 255)), "nonzero", "butt", "miter", 4.0)
+    ring = Element(None, "path", 1, (Contour(_disc(18, 18, 15)), Contour(_disc(18, 18, 14.5)[::-1])),
+                   Paint(fill=(0, 0, 0, 255)), "nonzero", "butt", "miter", 4.0)
+    bar = Element(None, "rect", 2, (Contour(np.array([[8, 16.5], [28, 16.5], [28, 19.5], [8, 19.5]], float)),),
+                  Paint(fill=(0, 0, 0, 255)), "nonzero", "butt", "miter", 4.0)
+    assert (0, 0) in match_elements([page], [ring, bar], float(np.hypot(36, 36)))

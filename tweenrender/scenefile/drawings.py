@@ -23,7 +23,8 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from ..core.contours import centre_of_area
+from ..core.contours import centre_of_area, roles
+from ..core.geometry import signed_area
 from ..core.correspondence.assignment import min_cost_assignment
 from ..core.timing.easing import Easing
 from ..errors import SceneError
@@ -243,7 +244,7 @@ def _costs(a: Sequence[Element], b: Sequence[Element], diagonal: float) -> np.nd
     def features(elements: Sequence[Element]) -> tuple[np.ndarray, ...]:
         centres = np.array([_centre(e) for e in elements])
         extents = [_size(e) for e in elements]
-        sizes = np.log(extents)
+        sizes = np.log([_enclosed_size(e, extent) for e, extent in zip(elements, extents)])
         colours = [e.paint.fill or e.paint.stroke for e in elements]
         lab = srgb_to_oklab(np.array([c[:3] if c is not None else (0, 0, 0) for c in colours], float) / 255.0)
         lab[[c is None for c in colours]] = np.nan
@@ -280,6 +281,19 @@ def _looped(element: Element, size: float) -> bool:
     the element's (:func:`_size`)."""
     return any(c.closed or (len(c.points) > 2 and float(np.hypot(*(c.points[0] - c.points[-1]))) <= 1e-6 * size)
                for c in element.contours)
+
+
+def _enclosed_size(element: Element, extent: float) -> float:
+    """The element's size for pairing: for a filled element, √(2 × the area its outer contours enclose), holes
+    not taken away (a square's is its diagonal); else, or where that area is nil, its ``extent``
+    (:func:`_size`). Pieces spread over a box are as small as their area (a sun's rays are not its disc),
+    and a ring drawn as an outline with a hole is as big as the disc it rings."""
+    if element.paint.fill is None:
+        return extent
+    points = [c.points for c in element.contours]
+    kinds = roles(points, [c.closed and len(p) >= 3 for c, p in zip(element.contours, points)])
+    enclosed = sum(abs(float(signed_area(p))) for p, kind in zip(points, kinds) if kind == "outer")
+    return float(np.sqrt(2.0 * enclosed)) if enclosed > 1e-6 * extent * extent else extent
 
 
 def _size(element: Element) -> float:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import tweenrender as tr
 from tests.helpers import DATA
@@ -28,3 +29,12 @@ def test_a_drawing_sheet_shows_its_keys_filled_with_their_own_paint(tmp_path: Pa
     assert columns.min() > 1280 * 0.5  # only towards the end of the strip, where the truck is
     rows = np.flatnonzero(red.any(axis=1))
     assert rows.max() - rows.min() > picture.shape[0] / 3  # in both rows
+
+
+@pytest.mark.parametrize(("value", "label"), [(1 / 12, "0.083"), (0.5, "0.5"), (1.0, "1"), (10.0, "10"),
+                                              (-0.0004, "0"), (-0.5, "-0.5"), (1234.5678, "1234.568")])
+def test_a_sheet_labels_times_to_the_millisecond(value: float, label: str) -> None:
+    """Eleven in-betweens of a second fall every 1/12 s: labelled 0.083 s, not 0.0833333 s."""
+    from tweenrender.raster.plots.storyboard import seconds
+
+    assert seconds(value) == label

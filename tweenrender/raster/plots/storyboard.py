@@ -28,7 +28,7 @@ from ..painter import Painter
 from ..surface import Raster, contours_path
 from ...core.view import Box, Viewport
 
-__all__ = ["SheetLayout", "sheet_layout", "draw_sheet", "inbetween_times", "is_drawing"]
+__all__ = ["SheetLayout", "sheet_layout", "draw_sheet", "inbetween_times", "is_drawing", "seconds"]
 
 _INK: Color = (30, 34, 45, 255)
 _SOFT: Color = (30, 34, 45, 150)
@@ -89,12 +89,12 @@ def draw_sheet(scene: Scene, tracks: Sequence[Track], methods: Sequence[str], vi
     room = layout.width - 2 * layout.pad
     title_size = min(size, size * room / max(font(size, bold=True).measureText(title), 1.0))  # fit, never clip
     raster.text(title, layout.pad, layout.title * 0.56, title_size, _INK, bold=True)
-    spacing = f", every {times[1] - times[0]:g} s" if len(times) > 1 else ""
-    legend = (f"bold: keys at {', '.join(f'{k:g}' for k in _key_times(scene))} s  ·  "
+    spacing = f", every {seconds(times[1] - times[0])} s" if len(times) > 1 else ""
+    legend = (f"bold: keys at {', '.join(seconds(k) for k in _key_times(scene))} s  ·  "
               f"thin: {len(times)} inbetweens{spacing}" + ("  ·  lines: vertex paths" if paths else "")
               + f"  ·  red ticks: where each frame falls ({scene.fps:g} fps)")
     if is_drawing(scene):
-        legend = (f"keys at {', '.join(f'{k:g}' for k in _key_times(scene))} s and {len(times)} inbetweens{spacing}, "
+        legend = (f"keys at {', '.join(seconds(k) for k in _key_times(scene))} s and {len(times)} inbetweens{spacing}, "
                   "as drawn; thin lines: the outlines" + ("; vertex paths" if paths else ""))
     raster.text(legend, layout.pad, layout.title * 0.9, size * 0.62, _SOFT)
     for row, method in enumerate(methods):
@@ -106,7 +106,7 @@ def draw_sheet(scene: Scene, tracks: Sequence[Track], methods: Sequence[str], vi
         raster.text(method, layout.pad, top + layout.label * 0.72, label, _INK, bold=True)
         if len(mids):
             ratios = scene_perimeter_ratio(tracks, shape_methods, mids)
-            words = "  ·  ".join(f"{m:g} s: {r:.5f}" for m, r in zip(mids[:6], ratios[:6]))
+            words = "  ·  ".join(f"{seconds(m)} s: {r:.5f}" for m, r in zip(mids[:6], ratios[:6]))
             note = f"perimeter ratio at mid-segment  {words}"
             raster.text(note, layout.pad + font(label, bold=True).measureText(method) + label,
                         top + layout.label * 0.72, label * 0.72, _SOFT)
@@ -194,9 +194,14 @@ def _filmstrip(raster: Raster, scene: Scene, tracks: Sequence[Track], method: st
                 if all(np.all(np.isfinite(p)) for p in pixels):
                     canvas.drawPath(skia_path(pixels, closed=True) if all(at.closed) else
                                     contours_path(pixels, at.closed), stroke_paint(_OVERLAY, 0.7))
-        words = f"{when:g} s" + (" key" if when in keys else "")
+        words = f"{seconds(when)} s" + (" key" if when in keys else "")
         raster.text(words, 2.0, height - 0.4 * caption, caption, _INK if when in keys else _SOFT, bold=when in keys)
         canvas.restore()
+
+
+def seconds(value: float) -> str:
+    """A time as a label: to the millisecond, no trailing zeros (``1/12`` → ``"0.083"``)."""
+    return f"{round(value, 3) + 0.0:.3f}".rstrip("0").rstrip(".")
 
 
 def _key_times(scene: Scene) -> list[float]:

@@ -55,3 +55,30 @@ def test_the_energy_is_four_for_a_rotation_and_infinite_for_a_flip() -> None:
     assert symmetric_dirichlet(turn)[0] == 4.0
     assert np.isinf(symmetric_dirichlet(flip)[0])
     assert np.isclose(symmetric_dirichlet(stretch)[0], 4 + 1 + 0.25 + 1)  # s1² + s2² + s1⁻² + s2⁻²
+
+
+def test_the_fits_normal_matrix_is_gt_c_g_entry_for_entry() -> None:
+    """The normal matrix summed from each triangle's share equals ``Gᵀ diag(c_rq) G`` block by block, built
+    from the gradient operator with scipy's sparse products, on a grid mesh with a held border and random
+    weights (symmetric 2 × 2 per triangle, some zero)."""
+    from scipy.sparse import bmat, diags
+
+    from tweenrender.core.methods.mesh_distortion import NormalPattern, gradient_operator
+
+    rng = np.random.default_rng(5)
+    n = 6
+    points = np.array([[i, j] for j in range(n) for i in range(n)], float) + rng.uniform(-0.2, 0.2, (n * n, 2))
+    tri = np.array([t for j in range(n - 1) for i in range(n - 1) for t in
+                    ([j * n + i, j * n + i + 1, (j + 1) * n + i + 1], [j * n + i, (j + 1) * n + i + 1, (j + 1) * n + i])])
+    rest = _rest(points, tri)
+    border = {v for v in range(n * n) if v % n in (0, n - 1) or v // n in (0, n - 1)}
+    free = np.array([v for v in range(n * n) if v not in border])
+    a = rng.normal(size=(len(tri), 2, 2))
+    weight = a @ a.transpose(0, 2, 1)
+    weight[rng.random(len(tri)) < 0.2] = 0.0
+    g = gradient_operator(tri, rest, n * n).tocsc()[:, free]
+    blocks = [[g.T @ diags(np.repeat(weight[:, r, q], 2)) @ g for q in range(2)] for r in range(2)]
+    expected = bmat(blocks).toarray()
+    expected += 1e-12 * expected.diagonal().mean() * np.eye(len(expected))
+    got = NormalPattern(tri, rest, free, n * n).matrix(weight).toarray()
+    assert np.allclose(got, expected, rtol=1e-12, atol=1e-12 * np.abs(expected).max())

@@ -70,7 +70,8 @@ def least_distortion(x: Array, tri: Triangles, rest: Array, weights: Array, free
     operator = gradient_operator(tri, rest, len(x)).tocsc()
     held_rows = np.setdiff1d(np.arange(len(x)), free)
     g_held = operator[:, held_rows]
-    parts = (operator[:, free].tocsr(), [g_held @ x[held_rows, r] for r in range(2)])
+    parts = (operator[:, free].tocsr(), [g_held @ x[held_rows, r] for r in range(2)],
+             NormalPattern(tri, rest, free, len(x)))
     energy = _energy(x, tri, rest, weights, used)
     for _ in range(rounds):
         goal = _slim_goal(x, tri, rest, weights, used, parts, free)
@@ -120,10 +121,9 @@ def _slim_goal(x: Array, tri: Triangles, rest: Array, weights: Array, used: NDAr
     weights for the symmetric Dirichlet energy (the held rows kept); None where the solve fails.
     ``parts``: the gradient operator's free columns ``(2F, P)`` and the held rows' share of each
     Jacobian row, one ``(2F,)`` per coordinate."""
-    from scipy.sparse import bmat, diags
     from scipy.sparse.linalg import splu
 
-    g_free, held = parts
+    g_free, held, pattern = parts
     u, sigma, rotation = _polar2(edge_matrix(x, tri) @ rest)
     sigma = np.maximum(sigma, 1e-12)
     # the energy s² + s⁻² per singular value: SLIM's weight sqrt(f'(s) / (2 (s - 1))) in closed form
@@ -131,11 +131,9 @@ def _slim_goal(x: Array, tri: Triangles, rest: Array, weights: Array, used: NDAr
     square = np.einsum("fij,fj,fkj->fik", u, w2, u) * weights[:, None, None]  # a·Wᵀ W = a·U diag(w²) Uᵀ
     pulled = square @ rotation  # a·Wᵀ W R: (F, 2, 2), row r for coordinate r
     c = [[np.repeat(square[:, r, q], 2) for q in range(2)] for r in range(2)]
-    blocks = [[g_free.T @ diags(c[r][q]) @ g_free for q in range(2)] for r in range(2)]
-    normal = bmat(blocks, format="csc")
+    normal = pattern.matrix(square)
     rhs = np.concatenate([g_free.T @ (pulled[:, r, :].reshape(-1) - c[r][0] * held[0] - c[r][1] * held[1])
                           for r in range(2)])
-    normal = normal + 1e-12 * float(normal.diagonal().mean() or 1.0) * sparse_identity(normal.shape[0])
     try:
         lu = splu(normal, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
         solved = lu.solve(rhs)
@@ -146,6 +144,46 @@ def _slim_goal(x: Array, tri: Triangles, rest: Array, weights: Array, used: NDAr
     out = np.array(x)
     out[free, 0], out[free, 1] = solved[:len(free)], solved[len(free):]
     return out
+
+
+class NormalPattern:
+    """The normal matrix of SLIM's weighted fit, ``Gᵀ C G`` over the free vertices' two coordinates
+    (``(2P, 2P)``, coordinate-major), assembled from each triangle's share: triangle f adds
+    ``C_f[r, q] · L_f[i, j]`` at row ``r·P + free index of corner i``, column ``q·P + … of corner j``, where
+    ``L_f = g_fᵀ g_f`` (``(3, 3)``, ``g_f`` its corners' gradients) and ``C_f`` its ``(2, 2)`` weight. The
+    sparsity and each share's place in it are worked out once a descent; a round only sums the shares
+    (one ``bincount``), with a vanishing ``1e-12 ×`` mean diagonal added to the diagonal."""
+
+    def __init__(self, tri: Triangles, rest: Array, free: NDArray[np.intp], vertices: int) -> None:
+        grads = np.stack([-(rest[:, 0, :] + rest[:, 1, :]), rest[:, 0, :], rest[:, 1, :]], axis=-1)  # (F, 2, 3)
+        self.local = np.einsum("fki,fkj->fij", grads, grads)  # (F, 3, 3)
+        index = np.full(vertices, -1, dtype=np.int64)
+        index[free] = np.arange(len(free))
+        corner = index[tri]  # (F, 3)
+        size = 2 * len(free)
+        self.size = size
+        r = np.arange(2)[None, :, None, None, None]
+        q = np.arange(2)[None, None, :, None, None]
+        ci = corner[:, None, None, :, None]
+        cj = corner[:, None, None, None, :]
+        self.kept = np.broadcast_to((ci >= 0) & (cj >= 0), (len(tri), 2, 2, 3, 3))
+        rows = np.broadcast_to(r * len(free) + ci, self.kept.shape)[self.kept]
+        cols = np.broadcast_to(q * len(free) + cj, self.kept.shape)[self.kept]
+        keys = np.concatenate([cols * size + rows, np.arange(size, dtype=np.int64) * (size + 1)])
+        unique, self.slot = np.unique(keys, return_inverse=True)
+        self.diagonal = self.slot[len(rows):]
+        self.slot = self.slot[:len(rows)]
+        self.indices = (unique % size).astype(np.int32)
+        self.indptr = np.searchsorted(unique // size, np.arange(size + 1)).astype(np.int32)
+
+    def matrix(self, weight: Array):  # noqa: ANN201 - a scipy sparse matrix
+        """The normal matrix for each triangle's weight ``weight (F, 2, 2)``, in compressed columns."""
+        from scipy.sparse import csc_matrix
+
+        shares = weight[:, :, :, None, None] * self.local[:, None, None, :, :]  # (F, 2, 2, 3, 3)
+        data = np.bincount(self.slot, weights=shares[self.kept], minlength=len(self.indices))
+        data[self.diagonal] += 1e-12 * (float(data[self.diagonal].mean()) or 1.0)
+        return csc_matrix((data, self.indices, self.indptr), shape=(self.size, self.size))
 
 
 def _rotations(angle: Array) -> Array:

@@ -20,7 +20,7 @@ from numpy.typing import NDArray
 
 from .mesh import edge_matrix
 
-__all__ = ["distortion", "gradient_operator", "least_distortion", "orientations", "sparse_identity",
+__all__ = ["NormalPattern", "distortion", "gradient_operator", "least_distortion", "orientations", "sparse_identity",
            "symmetric_dirichlet"]
 
 Array = NDArray[np.float64]

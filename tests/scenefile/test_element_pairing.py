@@ -174,3 +174,20 @@ def test_a_ring_drawn_as_an_outline_with_a_hole_pairs_by_the_area_it_encloses() 
     bar = Element(None, "rect", 2, (Contour(np.array([[8, 16.5], [28, 16.5], [28, 19.5], [8, 19.5]], float)),),
                   Paint(fill=(0, 0, 0, 255)), "nonzero", "butt", "miter", 4.0)
     assert (0, 0) in match_elements([page], [ring, bar], float(np.hypot(36, 36)))
+
+
+def test_bootstraps_heart_becomes_twemojis_sun_disc_not_a_ray() -> None:
+    """The real pair behind the test above: twemoji's 2600 draws its rays as one path of eight pieces and its
+    disc as ``<circle r="10">`` in a 36-unit view; fitted into the heart's 16-unit view the disc's radius is
+    10 × 16 / 36. The heart's key at 1 s is that disc (its area π r²), and every ray grows."""
+    import tweenrender as tr
+
+    icons = Path(__file__).resolve().parents[1] / "data" / "icons"
+    assert '<circle cx="18" cy="18" r="10"' in (icons / "twemoji" / "2600.svg").read_text()
+    scene = tr.load_scene([icons / "bootstrap" / "heart-fill.svg", icons / "twemoji" / "2600.svg"])
+    shown = [shape for shape in scene.shapes if not shape.keys[0].hidden and not shape.keys[-1].hidden]
+    assert len(shown) == 1
+    (disc,) = shown[0].keys[-1].contours
+    x, y = disc.points[:, 0], disc.points[:, 1]
+    area = abs(0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
+    assert area == pytest.approx(np.pi * (10 * 16 / 36) ** 2, rel=0.01)

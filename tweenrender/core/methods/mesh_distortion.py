@@ -170,9 +170,8 @@ class NormalPattern:
         rows = np.broadcast_to(r * len(free) + ci, self.kept.shape)[self.kept]
         cols = np.broadcast_to(q * len(free) + cj, self.kept.shape)[self.kept]
         keys = np.concatenate([cols * size + rows, np.arange(size, dtype=np.int64) * (size + 1)])
-        unique, self.slot = np.unique(keys, return_inverse=True)
-        self.diagonal = self.slot[len(rows):]
-        self.slot = self.slot[:len(rows)]
+        unique, slots = np.unique(keys, return_inverse=True)
+        self.slot, self.diagonal = slots[:len(rows)], slots[len(rows):]  # each share's place; the diagonal's
         self.indices = (unique % size).astype(np.int32)
         self.indptr = np.searchsorted(unique // size, np.arange(size + 1)).astype(np.int32)
 

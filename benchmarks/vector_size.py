@@ -35,7 +35,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 import tweenrender as tr  # noqa: E402
 from tweenrender.encode.animated_svg import svg_document  # noqa: E402
 from tweenrender.encode.lottie import lottie_document  # noqa: E402
-from tweenrender.encode.vector_data import PIXEL_DIGITS, STRAIGHT, VectorClip, VectorRun  # noqa: E402
+from tweenrender.encode.vector_data import HANDLE_DIGITS, PIXEL_DIGITS, SCALE_DIGITS, STRAIGHT, VectorClip, VectorRun  # noqa: E402
 from tweenrender.pipeline.library import render_job  # noqa: E402
 from tweenrender.plan.options import RenderOptions  # noqa: E402
 from tweenrender.vector.export import vector_clip  # noqa: E402
@@ -68,16 +68,22 @@ def _draw(curve: np.ndarray, closed: bool) -> np.ndarray:
                            + 3 * (1 - u) * u ** 2 * curve[b, 0] + u ** 3 * curve[b, 1] for a, b in ends])
 
 
-def _played(frames: np.ndarray, keys: tuple[int, ...], path: np.ndarray, eases: tuple) -> np.ndarray:
-    """A path's keyframes ``(K, …)`` as written, played at clip ``frames (T,)``: ``(T, M, 3, 2)``."""
+def _keyed(frames: np.ndarray, keys: tuple[int, ...], values: np.ndarray, eases: tuple) -> np.ndarray:
+    """Values ``(K, …)`` keyed at ``keys``, played straight between keyframes through each span's cubic-bezier
+    timing at clip ``frames (T,)``: ``(T, …)``."""
     keys_at = np.array(keys)
-    values = _as_written(path)
     index = np.clip(np.searchsorted(keys_at, frames, side="right") - 1, 0, len(keys_at) - 1)
     following = np.minimum(index + 1, len(keys_at) - 1)
     span = np.maximum(keys_at[following] - keys_at[index], 1)
-    timing = np.array([*eases, STRAIGHT])[index]
+    timing = np.round(np.array([*eases, STRAIGHT]), HANDLE_DIGITS)[index]  # as written
     s = bezier_timing(np.clip((frames - keys_at[index]) / span, 0.0, 1.0), timing)
-    return values[index] + s[:, None, None, None] * (values[following] - values[index])
+    s = s.reshape(-1, *([1] * (values.ndim - 1)))
+    return values[index] + s * (values[following] - values[index])
+
+
+def _played(frames: np.ndarray, keys: tuple[int, ...], path: np.ndarray, eases: tuple) -> np.ndarray:
+    """A path's keyframes ``(K, …)`` as written, played at clip ``frames (T,)``: ``(T, M, 3, 2)``."""
+    return _keyed(frames, keys, _as_written(path), eases)
 
 
 def replayed_error(run: VectorRun, own: bool) -> float:
@@ -89,6 +95,12 @@ def replayed_error(run: VectorRun, own: bool) -> float:
     for i, (closed, exact) in enumerate(zip(run.closed, run.exact_contours())):
         keys, path, eases = run.keys_of(i) if own else (run.path_frames, run.paths[i], run.eases)
         played = _played(frames, keys, path, eases)
+        move = run.move_of(i) if own else None
+        if move is not None:  # a still path placed by its keyed position and scale, as written
+            anchor = np.round(move.anchor, PIXEL_DIGITS)
+            place = _keyed(frames, move.frames, np.round(move.centres, PIXEL_DIGITS), move.eases)  # (T, 2)
+            scale = _keyed(frames, move.frames, np.round(move.scales * 100, SCALE_DIGITS) / 100, move.eases)  # (T,)
+            played = place[:, None, None] + scale[:, None, None, None] * (played - anchor)
         for f in range(len(frames)):
             drawn = _draw(played[f], closed)
             line = np.concatenate([exact[f], exact[f][:1]]) if closed else exact[f]

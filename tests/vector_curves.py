@@ -122,3 +122,30 @@ def lottie_error(prop: dict, frame: float, exact: np.ndarray) -> float:
     """How far the Lottie path ``prop`` played at ``frame`` is from the exact polyline ``(L, 2)``."""
     v, i, o, closed = lottie_path_at(prop, frame)
     return distance(drawn(v, i, o, closed), exact, closed)
+
+
+def lottie_value_at(prop: dict, frame: float) -> np.ndarray:
+    """A keyed (or still) Lottie property of numbers (a position, a scale) at ``frame``, moved straight between
+    keyframes through the span's ``o``/``i`` timing, held before the first and after the last."""
+    if prop["a"] == 0:
+        return np.atleast_1d(np.array(prop["k"], float))
+    keys = prop["k"]
+    times = [k["t"] for k in keys]
+    values = np.array([k["s"] for k in keys], float)
+    if frame <= times[0] or frame >= times[-1]:
+        return values[0 if frame <= times[0] else -1]
+    index = int(np.searchsorted(times, frame, side="right")) - 1
+    key = keys[index]
+    s = timing((frame - times[index]) / (times[index + 1] - times[index]),
+               (key["o"]["x"][0], key["o"]["y"][0], key["i"]["x"][0], key["i"]["y"][0]))
+    return values[index] + s * (values[index + 1] - values[index])
+
+
+def lottie_placed(transform: dict, frame: float, points: np.ndarray) -> np.ndarray:
+    """``points (P, 2)`` placed by a Lottie group's transform (``tr``: anchor, position, scale in percent; no
+    turn) at ``frame``: ``position + scale · (points - anchor)``."""
+    assert transform["r"] == {"a": 0, "k": 0}
+    anchor = lottie_value_at(transform["a"], frame)[:2]
+    position = lottie_value_at(transform["p"], frame)[:2]
+    scale = lottie_value_at(transform["s"], frame)[:2] / 100.0
+    return position + scale * (points - anchor)

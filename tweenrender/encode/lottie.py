@@ -5,7 +5,9 @@ One shape layer per run (an element over the frames of one segment and one paint
 the list on top; in it one group: a ``sh`` path per contour (straight edges: in and out tangents
 zero; holes are sibling paths), the stroke (``st``) above the fill (``fl``, ``r`` 1 nonzero,
 2 even-odd), and the group's transform (contours growing from a point: a group per stroke width
-above one of the fill). The layer's opacity is the paint's, so fill and stroke fade together as
+above one of the fill). A contour that only grows, shrinks and moves is a still path in a group of its own,
+whose transform's position and scale are keyed: the fill and stroke of the group above draw it with the
+others, holes and all. The layer's opacity is the paint's, so fill and stroke fade together as
 one picture; gradient fills and clip paths (the layer's masks, or a matte layer just above it) as
 :mod:`.lottie_paint` writes them. A full-size rectangle layer at the bottom is the background.
 """
@@ -18,7 +20,7 @@ from typing import Any
 
 from .atomic import replacing
 from .lottie_paint import gradient_fill, masks, matte, refuse_unsupported, stretched_fill
-from .lottie_values import animated, path_item, percent, scalar, static, transform
+from .lottie_values import animated, moved_group, path_item, percent, scalar, static, transform
 from .vector_data import Array, VectorClip, VectorRun
 
 __all__ = ["lottie_document", "lottie_text", "write_lottie"]
@@ -73,7 +75,9 @@ def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
     paths = []
     for i, shut in enumerate(run.closed):
         keyframes, points, eases = run.keys_of(i)  # each contour keyed on its own
-        paths.append(path_item(f"contour {i}", i, keyframes, points, shut, eases))
+        item = path_item(f"contour {i}", i, keyframes, points, shut, eases)
+        move = run.move_of(i)
+        paths.append(item if move is None else moved_group(item, move))
     groups = run.stroke_groups() if run.stroke is not None else []
     gradient = run.gradient
     stretched = run.gradient_paths is not None

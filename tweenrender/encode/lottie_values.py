@@ -6,9 +6,9 @@ from typing import Any
 
 import numpy as np
 
-from .vector_data import PIXEL_DIGITS, STRAIGHT, Array, Handles
+from .vector_data import HANDLE_DIGITS, PIXEL_DIGITS, SCALE_DIGITS, STRAIGHT, Array, ContourMove, Handles
 
-__all__ = ["DIGITS", "compact", "static", "animated", "scalar", "percent", "transform", "contour", "path_item"]
+__all__ = ["DIGITS", "compact", "static", "animated", "scalar", "percent", "transform", "contour", "path_item", "moved_group"]
 
 DIGITS = PIXEL_DIGITS  # pixels are written to a hundredth
 
@@ -35,9 +35,10 @@ def animated(frames: tuple[int, ...], values: list[Any], eases: tuple[Handles, .
 
 
 def _short(value: float) -> float | int:
-    """A timing handle as written: a whole one as an integer (``0``, not ``0.0``), the same number in fewer
-    characters."""
-    return int(value) if float(value).is_integer() else float(value)
+    """A timing handle as written: to :data:`~.vector_data.HANDLE_DIGITS` decimals, a whole one as an integer
+    (``0``, not ``0.0``)."""
+    rounded = round(float(value), HANDLE_DIGITS) + 0.0
+    return int(rounded) if rounded.is_integer() else rounded
 
 
 def scalar(prop: dict[str, Any]) -> dict[str, Any]:
@@ -98,3 +99,15 @@ def path_item(name: str, index: int, frames: tuple[int, ...], points: Array, clo
               eases: tuple[Handles, ...] = ()) -> dict[str, Any]:
     """A path shape item (``sh``) named ``name``: :func:`contour` of ``points (K, L, 2)`` at ``frames``."""
     return {"ty": "sh", "nm": name, "ind": index, "ks": contour(frames, points, closed, eases)}
+
+
+def moved_group(item: dict[str, Any], move: ContourMove) -> dict[str, Any]:
+    """A group holding the path ``item`` (one still keyframe) placed by ``move``: its transform's anchor is the
+    move's anchor, its position and scale keyed together (same frames, same timing), so every drawn point moves
+    straight between keyframes as the move's do."""
+    position = animated(move.frames, [compact(c) for c in move.centres], move.eases)
+    scale = animated(move.frames, [[v, v, 100] for v in np.round(move.scales * 100.0, SCALE_DIGITS).tolist()],
+                     move.eases)
+    place = {"ty": "tr", "o": static(100), "r": static(0), "p": position, "a": static(compact(move.anchor)),
+             "s": scale}
+    return {"ty": "gr", "nm": item["nm"], "it": [item, place]}

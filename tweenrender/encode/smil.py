@@ -6,7 +6,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from .vector_data import PIXEL_DIGITS, STRAIGHT, Array, Handles
+from .vector_data import HANDLE_DIGITS, PIXEL_DIGITS, STRAIGHT, Array, Handles
 
 __all__ = ["number", "hex_colour", "path_data", "straight_spans", "clip_timing", "animate"]
 
@@ -45,7 +45,7 @@ def animate(name: str, frames: tuple[int, ...], values: list[str], total: int, t
         times, values, splines = [0.0, *times], [values[0], *values], [held, *splines]
     times, values, splines = [*times, 1.0], [*values, values[-1]], [*splines, held]
     spline = "" if all(s == STRAIGHT for s in splines) else ' calcMode="spline" keySplines="' + ";".join(
-        " ".join(number(v, 6) for v in s) for s in splines) + '"'
+        " ".join(number(v, HANDLE_DIGITS) for v in s) for s in splines) + '"'
     tag = "animate" if transform is None else f'animateTransform type="{transform}"'
     return (f'<{tag} attributeName="{name}" {timing} '
             + ('additive="sum" ' if additive else "")

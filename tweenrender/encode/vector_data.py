@@ -5,14 +5,14 @@ Built by :mod:`tweenrender.vector.export`; written by :mod:`.lottie` and :mod:`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..model import Color
 
-__all__ = ["PIXEL_DIGITS", "Handles", "STRAIGHT", "GradientKeys", "ClipPathKeys", "VectorRun", "VectorClip"]
+__all__ = ["PIXEL_DIGITS", "SCALE_DIGITS", "HANDLE_DIGITS", "Handles", "STRAIGHT", "GradientKeys", "ClipPathKeys", "ContourMove", "VectorRun", "VectorClip"]
 
 Array = NDArray[np.float64]
 
@@ -20,6 +20,13 @@ Array = NDArray[np.float64]
 PIXEL_DIGITS = 2
 """Decimals the files write a path's pixels with (a hundredth: each point moves at most 0.0071 px, which the
 keyframes leave room for; a thousandth wrote one more digit a number for nothing a player shows)."""
+
+SCALE_DIGITS = 3
+"""Decimals to which the files write a scale, in percent (a still contour placed by a :class:`ContourMove`)."""
+
+HANDLE_DIGITS = 6
+"""Decimals to which the files write a timing's handles: a span's progress moves by about a millionth, a thousandth
+of a pixel on a path crossing a thousand."""
 
 Handles = tuple[float, float, float, float]
 """A CSS ``cubic-bezier(x1, y1, x2, y2)``: the timing between two keyframes."""
@@ -65,6 +72,23 @@ class ClipPathKeys:
 
 
 @dataclass(frozen=True)
+class ContourMove:
+    """A still contour's place over time: drawn at ``centres[k] + scales[k] · (x - anchor)`` at clip frame
+    ``frames[k]`` (``centres (K, 2)`` and ``anchor (2,)`` pixels, ``scales (K,)`` fractions), straight between
+    keyframes through each span's ``eases`` (K - 1), held before the first and after the last."""
+
+    frames: tuple[int, ...]
+    centres: Array
+    scales: Array
+    eases: tuple[Handles, ...]
+    anchor: Array
+
+    def shifted(self, offset: int) -> "ContourMove":
+        """The same move with its frames ``offset`` later."""
+        return replace(self, frames=tuple(f + offset for f in self.frames))
+
+
+@dataclass(frozen=True)
 class VectorRun:
     """One element drawn over clip frames ``first .. stop - 1``, as keyframes.
 
@@ -86,7 +110,9 @@ class VectorRun:
     each contour keyed on its own, for files that animate contours apart (Lottie), as ``(frames, path,
     eases)`` per contour (``None``: the run's keyframes). ``dash``: per contour, ``(P, C + 1)``, the stroke's
     dash lengths (dash, gap, …; the same even count C at every paint keyframe) then its offset, in pixels, for
-    the contour drawn from its vertex 0 (``None``: solid).
+    the contour drawn from its vertex 0 (``None``: solid). ``contour_moves``: per contour, a :class:`ContourMove`
+    placing its one still keyframe in :attr:`contour_keys` (a contour that only grows, shrinks and moves), or
+    ``None`` (``None`` for all: no contour moves so).
     """
 
     element: str
@@ -113,6 +139,12 @@ class VectorRun:
     exact_lengths: tuple[int, ...] = ()
     contour_keys: tuple[tuple[tuple[int, ...], Array, tuple[Handles, ...]], ...] | None = None
     dash: tuple[Array, ...] | None = None
+    contour_moves: tuple[ContourMove | None, ...] | None = None
+
+    def move_of(self, index: int) -> ContourMove | None:
+        """Contour ``index``'s place over time where its path (:meth:`keys_of`, then one still keyframe) only grows,
+        shrinks and moves (:attr:`contour_moves`); ``None``: drawn where its path says."""
+        return None if self.contour_moves is None else self.contour_moves[index]
 
     def keys_of(self, index: int) -> tuple[tuple[int, ...], Array, tuple[Handles, ...]]:
         """Contour ``index``'s own keyframes where it has them (:attr:`contour_keys`), else the run's:

@@ -25,9 +25,10 @@ from numpy.typing import NDArray
 from .curves import Blend, RIDGE, STRAIGHT_RIDGE, distance_to_polyline, fit_curves, free_points, with_fixed_points
 from .dash_keys import contour_dashes, dash_rows
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
+from .scaled_keys import scaled_contour
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
 from ..encode.formats import is_vector, listing, names, writer
-from ..encode.vector_data import PIXEL_DIGITS, STRAIGHT, Handles, VectorClip, VectorRun
+from ..encode.vector_data import PIXEL_DIGITS, STRAIGHT, ContourMove, Handles, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Scene, Shape
 from ..core.view import Viewport
@@ -362,7 +363,30 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
                     exact_lengths=tuple(s.shape[1] for s in samples),
                     contour_keys=contour_keys,
                     dash=None if dashes is None else tuple(d[pick] for d in dashes))
-    return replace(run, gradient_paths=gradient_frame_paths(run, max_error, keyed_curves))
+    run = replace(run, gradient_paths=gradient_frame_paths(run, max_error, keyed_curves))
+    return _with_moves(run, samples, max_error)
+
+
+def _with_moves(run: VectorRun, samples: list[Array], max_error: float) -> VectorRun:
+    """``run`` with each contour that only grows, shrinks and moves (``samples (F, L_i, 2)`` from the run's first
+    frame) keyed as a still path under a keyed scale and position (:mod:`.scaled_keys`) where that is shorter; not
+    where the stroke's width or dashes are the contour's own, or the fill is drawn in a gradient's frame."""
+    if run.contour_widths is not None or run.dash is not None or run.gradient_paths is not None:
+        return run
+    keys = [run.keys_of(i) for i in range(len(samples))]
+    moves: list[ContourMove | None] = []
+    for index, (s, shut) in enumerate(zip(samples, run.closed)):
+        frames, path, eases = keys[index]
+        scaled = scaled_contour(s, shut, max_error * CURVE_SHARE,
+                                lambda fitted: _key_tolerance(max_error, fitted) - _ROUNDING, len(frames))
+        if scaled is None:
+            moves.append(None)
+            continue
+        moves.append(scaled.move.shifted(run.first))
+        keys[index] = ((run.first,), scaled.curve, ())
+    if all(m is None for m in moves):
+        return run
+    return replace(run, contour_keys=tuple(keys), contour_moves=tuple(moves))
 
 
 def keyed_curves(samples: list[Array], closed: tuple[bool, ...], max_error: float

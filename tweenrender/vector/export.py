@@ -378,7 +378,8 @@ def _with_moves(run: VectorRun, samples: list[Array], max_error: float) -> Vecto
     for index, (s, shut) in enumerate(zip(samples, run.closed)):
         frames, path, eases = keys[index]
         scaled = scaled_contour(s, shut, max_error * CURVE_SHARE,
-                                lambda fitted: _key_tolerance(max_error, fitted) - _ROUNDING, len(frames))
+                                # less the rounding of the written position and anchor (the path's is in the rest)
+                                lambda fitted: _key_tolerance(max_error, fitted) - 2 * _ROUNDING, len(frames))
         if scaled is None:
             moves.append(None)
             continue

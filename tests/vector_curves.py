@@ -61,20 +61,28 @@ def lottie_path_at(prop: dict, frame: float) -> tuple[np.ndarray, np.ndarray, np
         value = prop["k"]
         return (np.array(value["v"], float), np.array(value["i"], float), np.array(value["o"], float),
                 bool(value["c"]))
-    keys = prop["k"]
-    times = [k["t"] for k in keys]
-    values = [k["s"][0] for k in keys]
+    values = [k["s"][0] for k in prop["k"]]
     arrays = [np.array([[v[name] for v in values]], float)[0] for name in ("v", "i", "o")]  # (K, M, 2) each
-    closed = bool(values[0]["c"])
+    index, s = _span_at(prop["k"], frame)
+    v, i, o = (_between(a, index, s) for a in arrays)
+    return v, i, o, bool(values[0]["c"])
+
+
+def _span_at(keys: list[dict], frame: float) -> tuple[int, float]:
+    """Where ``frame`` falls among Lottie keyframes ``keys``: the keyframe before it and the share of the way to the
+    next through the span's ``o``/``i`` timing (0 before the first keyframe; at the last, share 0 from it)."""
+    times = [k["t"] for k in keys]
     if frame <= times[0] or frame >= times[-1]:
-        index = 0 if frame <= times[0] else len(keys) - 1
-        return arrays[0][index], arrays[1][index], arrays[2][index], closed
+        return (0 if frame <= times[0] else len(keys) - 1), 0.0
     index = int(np.searchsorted(times, frame, side="right")) - 1
     key = keys[index]
-    s = timing((frame - times[index]) / (times[index + 1] - times[index]),
-               (key["o"]["x"][0], key["o"]["y"][0], key["i"]["x"][0], key["i"]["y"][0]))
-    v, i, o = (a[index] + s * (a[index + 1] - a[index]) for a in arrays)
-    return v, i, o, closed
+    return index, timing((frame - times[index]) / (times[index + 1] - times[index]),
+                         (key["o"]["x"][0], key["o"]["y"][0], key["i"]["x"][0], key["i"]["y"][0]))
+
+
+def _between(values: np.ndarray, index: int, s: float) -> np.ndarray:
+    """``values (K, …)`` the share ``s`` of the way from keyframe ``index`` to the next (itself when ``s`` is 0)."""
+    return values[index] if s == 0.0 else values[index] + s * (values[index + 1] - values[index])
 
 
 def svg_path_points(d: str) -> list[tuple[np.ndarray, bool]]:
@@ -129,16 +137,8 @@ def lottie_value_at(prop: dict, frame: float) -> np.ndarray:
     keyframes through the span's ``o``/``i`` timing, held before the first and after the last."""
     if prop["a"] == 0:
         return np.atleast_1d(np.array(prop["k"], float))
-    keys = prop["k"]
-    times = [k["t"] for k in keys]
-    values = np.array([k["s"] for k in keys], float)
-    if frame <= times[0] or frame >= times[-1]:
-        return values[0 if frame <= times[0] else -1]
-    index = int(np.searchsorted(times, frame, side="right")) - 1
-    key = keys[index]
-    s = timing((frame - times[index]) / (times[index + 1] - times[index]),
-               (key["o"]["x"][0], key["o"]["y"][0], key["i"]["x"][0], key["i"]["y"][0]))
-    return values[index] + s * (values[index + 1] - values[index])
+    index, s = _span_at(prop["k"], frame)
+    return _between(np.array([k["s"] for k in prop["k"]], float), index, s)
 
 
 def lottie_placed(transform: dict, frame: float, points: np.ndarray) -> np.ndarray:

@@ -14,21 +14,22 @@ after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013
 3. where a triangle would flip (det ≤ 0) — on real drawings, most in-betweens: a growing contour's
    triangles, an overlay's twisted ones — the vertices are projected onto the injective set: they
    descend from a valid start toward the targets, never letting a triangle turn over
-   (:mod:`.mesh_distortion`). They do so at ``_GRID − 1`` grid points ``k / _GRID``, each the nearer to its
-   targets of two descents, one from the grid point below (reached the same way from key 0), one from the
-   grid point above (from key 1); an in-between is the blend of the two grid points about it, continuous in
-   ``s`` and ending on the keys, or, where that blend turns a triangle over, a descent from the nearer.
-   It depends on ``s`` alone, so a render's blocks of frames and a report's measures agree. The grid
-   points' descents take at most ``_WORK`` triangle-rounds in all (each round a sparse factorisation):
-   a larger mesh takes fewer rounds a grid point, and one too large for a round each (above some 20 000
-   triangles) the convex-combination solve as it is. Where the
-   convex-combination solve (valid by Tutte and Floater) is nearer the targets by that energy — the
-   descent held back behind a triangle it may not turn over, as when two pieces trade places — that
-   solve is taken as it is. A local-global projection
-   (each flipped triangle's target replaced by the nearest Jacobian with a positive determinant) and then
-   a blend toward the convex-combination solve, as this step did before, turned the flipped triangles
-   back at almost no in-between of real pairs and kept almost nothing of the fit: measured on held-out
-   pairs in docs/methods.md.
+   (:mod:`.mesh_distortion`). Two chains of descents do so at ``_GRID − 1`` grid points ``k / _GRID``:
+   one from key 0 upward, each grid point from the one below, one from key 1 downward. The grid points'
+   descents take at most ``_WORK`` triangle-rounds in all (each round a sparse factorisation): a larger
+   mesh takes fewer rounds a grid point, and one too large for a round each (above some 20 000
+   triangles) the convex-combination solve as it is;
+4. an in-between is drawn from the mean-value weights (:mod:`.tutte`) of the grid points about it, each
+   chain's blended by where ``s`` lies between them, the chain from key 0 weighing ``1 − s`` and the one
+   from key 1 ``s``: a convex combination of valid triangulations' weights, so valid (Floater and Gotsman
+   1999), continuous in ``s``, and on the keys at the ends. Where a chain could not keep up with its
+   targets (triangles that must grow a thousandfold, a slit's collapsed ones), the two chains end far
+   apart; picking the nearer chain at each grid point, as this step did before, then jumped from one to
+   the other between two frames (at the last frame step, often: a pop), where the weights now move from
+   one to the other over the whole segment. Where the fits of both grid points about ``s`` keep every
+   triangle's orientation, the fit of ``s``'s own targets is drawn where it does too.
+
+It depends on ``s`` alone, so a render's blocks of frames and a report's measures agree.
 
 Every triangle positively oriented and the frame convex and held make the mesh an embedding at
 every t (a locally injective map with a simple boundary is injective), so no contour crosses itself
@@ -43,7 +44,8 @@ from numpy.typing import NDArray
 from ..contours import inside
 from .compatible import CompatibleMesh
 from .mesh import edge_matrix
-from .mesh_distortion import distortion, gradient_operator, least_distortion, orientations, sparse_identity
+from .mesh_distortion import gradient_operator, least_distortion, orientations, sparse_identity
+from .tutte import ConvexEmbedding
 
 __all__ = ["ShapeKeepingSolve", "material_triangles"]
 
@@ -52,7 +54,6 @@ Array = NDArray[np.float64]
 _AIR = 1e-2  # weight of a triangle between the contours, against one inside a filled region
 _GRID = 16  # grid points between the keys whose kept vertices the in-betweens between them blend
 _LINK = 15  # rounds of the descent toward a grid point's targets, at most
-_DESCENT = 4  # and toward an in-between's, where the blend of its grid points turns a triangle over
 _WORK = 600_000  # triangle-rounds of descent a mesh's grid points may take in all (fewer rounds on larger meshes)
 
 
@@ -69,9 +70,10 @@ def material_triangles(mesh: CompatibleMesh, cuts: list[int], closed: list[bool]
 
 class ShapeKeepingSolve:
     """The shape-keeping positions of every mesh vertex at ``s`` in [0, 1]: call with ``s`` and the
-    convex-combination positions ``(V, 2)`` at ``s`` (for step 4) for ``(V, 2)``."""
+    convex-combination positions ``(V, 2)`` at ``s`` (drawn where the mesh is too large for a descent, and
+    a vanishing pull of the fit) for ``(V, 2)``. ``embedding`` (:mod:`.tutte`): the mesh's, if one is at hand."""
 
-    def __init__(self, mesh: CompatibleMesh, material: NDArray[np.bool_]) -> None:
+    def __init__(self, mesh: CompatibleMesh, material: NDArray[np.bool_], embedding: ConvexEmbedding | None = None) -> None:
         p0, p1, tri = mesh.p0, mesh.p1, mesh.triangles
         self.mesh, self.tri = mesh, tri
         e0, e1 = edge_matrix(p0, tri), edge_matrix(p1, tri)  # (F, 2, 2), edges as columns
@@ -93,7 +95,8 @@ class ShapeKeepingSolve:
         fixed[mesh.frame] = True
         self.free, self.fixed = np.flatnonzero(~fixed), np.flatnonzero(fixed)
         self._system: tuple[object, object, Array, float] | None = None
-        self._chain: dict[int, Array] = {}
+        self.embedding = embedding or ConvexEmbedding(mesh)
+        self._mean_values: dict[tuple[int, int], Array] = {}
         self._sides: dict[tuple[int, int], Array] = {}
         self._fits: dict[int, Array | None] = {}
         # rounds of the descent per grid point, within the work bound (0: the mesh takes the convex solve)
@@ -135,42 +138,29 @@ class ShapeKeepingSolve:
             return np.array(self.mesh.p0)
         if s >= 1.0:
             return np.array(self.mesh.p1)
-        target = self.targets(s)
-        x = self._solve(target, convex)
-        if self._valid(x):
-            return x
-        if not self.rounds:
-            return convex  # a mesh too large for the descent's work bound
-        rest = self._rest(target)
         k = min(int(s * _GRID), _GRID - 1)
         share = s * _GRID - k
-        below, above = self._link(k), self._link(k + 1)
-        kept = (1.0 - share) * below + share * above  # the grid points' answers, blended: continuous in s
-        if not self._valid(kept):
-            kept = least_distortion(below if share <= 0.5 else above, self.tri, rest, self.base, self.free,
-                                    min(_DESCENT, self.rounds))
-        if not self._valid(kept) or distortion(convex, self.tri, rest, self.base) <= distortion(kept, self.tri, rest,
-                                                                                                 self.base):
-            return convex  # the descent held back by a triangle it may not turn over (pieces trading places)
-        return kept
+        if self._fit(k) is not None and self._fit(k + 1) is not None:
+            x = self._solve(self.targets(s), convex)
+            if self._valid(x):
+                return x
+        if not self.rounds:
+            return convex  # a mesh too large for the descent's work bound
+        weights = np.zeros(len(self.embedding.rows))
+        for step, part in ((-1, 1.0 - s), (1, s)):  # the chain from key 0 weighs 1 − s, the one from key 1 s
+            weights += part * ((1.0 - share) * self._weights(k, step) + share * self._weights(k + 1, step))
+        return self.embedding(weights)
+
+    def _weights(self, k: int, step: int) -> Array:
+        """The mean-value weights ``(E,)`` of grid point ``k`` as the chain ``step`` reaches it (:meth:`_side`)."""
+        key = (k, step)
+        if key not in self._mean_values:
+            self._mean_values[key] = self.embedding.weights(self._side(k, step))
+        return self._mean_values[key]
 
     def _rest(self, target: Array) -> Array:
         """The inverse edge matrices ``(F, 2, 2)`` of the triangles as ``target (F, 2, 2)`` shapes them."""
         return self.inv0 @ np.linalg.inv(target)
-
-    def _link(self, k: int) -> Array:
-        """The kept vertices ``(V, 2)`` at grid point ``s = k / _GRID`` (key 0 at k = 0, key 1 at k = _GRID): the fit
-        of the targets where it turns no triangle over, else the nearer to them (by the energy the descent lowers)
-        of the descents from the grid points on either side, each reached the same way from its key; each
-        grid point thus starts near its own targets and depends on ``k`` alone."""
-        found = self._fit(k)
-        if found is None:
-            found = self._chain.get(k)
-        if found is None:
-            rest = self._rest(self.targets(k / _GRID))
-            found = min((self._side(k, -1), self._side(k, 1)), key=lambda x: distortion(x, self.tri, rest, self.base))
-            self._chain[k] = found
-        return found
 
     def _fit(self, k: int) -> Array | None:
         """The keys at k = 0 and ``_GRID``, the least-squares fit of grid point k's targets where it turns no

@@ -44,6 +44,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..balance import coincident_runs, spread
 from ..contours import inside, roles
 from .bounded_distortion import ShapeKeepingSolve, material_triangles
+from .tutte import ConvexEmbedding, mean_value_weights
 from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
 from ..geometry import area, best_fit_rotation, centroid, rotate
 from .paths import as_times, rigid
@@ -54,7 +55,6 @@ __all__ = ["carried_points", "injective", "injective_contours", "injective_fallb
 Array = NDArray[np.float64]
 
 _CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
-_FLAT = 1e8  # tan(θ/2) is kept within [1/_FLAT, _FLAT]
 _TOUCH = 1e-6  # a vertex two contours share is moved this share of the key's size into one of them
 _RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off by this share of its size
 _cache: Remembered[tuple[Callable[[Array], list[Array]], str | None, "_Paths | None"]] = Remembered(_CACHE)
@@ -62,31 +62,6 @@ _EVALUATED = 32  # evaluations kept, by keys and t: a report asks for a method's
 _EVALUATED_BYTES = 32 << 20  # and at most this many bytes of them (a render's blocks of frames pass through)
 _FRAME_BYTES = 16 << 20  # a pair of keys' solved frames kept by their t, at most this many bytes
 _evaluated: Remembered[list[Array]] = Remembered(_EVALUATED, lambda v: sum(f.nbytes for f in v), _EVALUATED_BYTES)
-
-
-def mean_value_weights(points: Array, triangles: NDArray[np.intp]) -> tuple[NDArray[np.intp], NDArray[np.intp], Array]:
-    """Floater's mean-value weights of a triangulation ``points (V, 2)``, ``triangles (F, 3)``
-    (counter-clockwise): ``(rows, cols, w)`` with one entry per directed edge ``i → j``, in the order
-    of ``np.unique`` over ``i·V + j``, ``w`` normalised so each row sums to 1."""
-    v = len(points)
-    i = triangles.reshape(-1)
-    j = np.roll(triangles, -1, axis=1).reshape(-1)
-    k = np.roll(triangles, -2, axis=1).reshape(-1)
-    a, b = points[j] - points[i], points[k] - points[i]
-    la, lb = np.linalg.norm(a, axis=1), np.linalg.norm(b, axis=1)
-    sine, cosine = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]), (a * b).sum(axis=1)  # times la·lb
-    # tan(θ/2) = sin / (1 + cos) = (1 - cos) / sin, each where it does not cancel
-    with np.errstate(divide="ignore", invalid="ignore"):
-        half = np.where(cosine >= 0, sine / (la * lb + cosine), (la * lb - cosine) / sine)
-    # a triangle flat to rounding (an overlay sliver) keeps a finite, positive weight
-    half = np.clip(np.nan_to_num(half, nan=_FLAT, posinf=_FLAT), 1.0 / _FLAT, _FLAT)
-    codes = np.concatenate([i * v + j, i * v + k])
-    values = np.concatenate([half / la, half / lb])
-    unique, where = np.unique(codes, return_inverse=True)
-    w = np.bincount(where, weights=values, minlength=len(unique))
-    rows, cols = unique // v, unique % v
-    w /= np.bincount(rows, weights=w, minlength=v)[rows]
-    return rows, cols, w
 
 
 def injective_mesh(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> CompatibleMesh | None:
@@ -107,22 +82,9 @@ class _Paths:
         self.phi = _rigid_turn(k0 - self.c0, k1 - self.c1)
         a0, a1 = k0 - self.c0, rotate(k1 - self.c1, -self.phi)
         self.mesh = mesh = compatible_triangulation(a0, a1, cuts, closed)
-        rows, cols, self.w0 = mean_value_weights(mesh.p0, mesh.triangles)
-        rows1, cols1, self.w1 = mean_value_weights(mesh.p1, mesh.triangles)
-        if not (np.array_equal(rows, rows1) and np.array_equal(cols, cols1)):
-            raise CompatibleError("the two keys' meshes differ")
-        size = len(mesh.p0)
-        fixed = np.zeros(size, dtype=bool)
-        fixed[mesh.frame] = True
-        free = np.flatnonzero(~fixed)
-        slot = np.full(size, -1)
-        slot[free] = np.arange(len(free))
-        keep = ~fixed[rows]
-        self.inner = keep & ~fixed[cols]
-        self.outer = keep & fixed[cols]
-        self.rows, self.cols, self.slot, self.free = rows, cols, slot, free
+        self.embedding = ConvexEmbedding(mesh)
+        self.w0, self.w1 = self.embedding.weights(mesh.p0), self.embedding.weights(mesh.p1)
         self.n = len(k0)
-        self.frame = mesh.p0[mesh.frame]
         self.cuts, self.closed = list(cuts), list(closed)
         # a closed contour's area counts for its region, minus where it is a hole (inside an odd number of
         # others, as the mesh keeps in both keys), whichever way it winds
@@ -130,7 +92,7 @@ class _Paths:
         kinds = roles([a0[cuts[c]:cuts[c + 1]] for c in shut], [True] * len(shut))
         self.signs = {c: (-1.0 if kind == "hole" else 1.0) for c, kind in zip(shut, kinds)}
         self.areas = (self._area(a0), self._area(a1))
-        self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed))
+        self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed), self.embedding)
         self._solved: dict[float, Array] = {}  # each t's frame before its turn, by t: the same for any other t
 
     def _frame(self, s: float) -> Array:
@@ -138,19 +100,7 @@ class _Paths:
         a report asks for its measures' t, the sweep and the clip's frames, which share some t)."""
         found = self._solved.get(s)
         if found is None:
-            from scipy.sparse import csc_matrix, identity
-            from scipy.sparse.linalg import splu
-
-            mesh, size = self.mesh, len(self.free)
-            r_in, c_in = self.slot[self.rows[self.inner]], self.slot[self.cols[self.inner]]
-            r_out = self.slot[self.rows[self.outer]]
-            boundary = mesh.p0[self.cols[self.outer]]
-            w = (1.0 - s) * self.w0 + s * self.w1
-            matrix = identity(size, format="csc") - csc_matrix((w[self.inner], (r_in, c_in)), shape=(size, size))
-            rhs = np.zeros((size, 2))
-            np.add.at(rhs, r_out, w[self.outer][:, None] * boundary)
-            convex = np.array(mesh.p0)
-            convex[self.free] = splu(matrix).solve(rhs)
+            convex = self.embedding((1.0 - s) * self.w0 + s * self.w1)
             kept = self.keeping(s, convex)[:self.n]
             found = self._sized(kept - kept.mean(axis=0), s)  # its vertex mean on the straight path
             if (len(self._solved) + 1) * found.nbytes <= _FRAME_BYTES:

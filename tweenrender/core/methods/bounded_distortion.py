@@ -20,9 +20,11 @@ after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013
    mesh takes fewer rounds a grid point, and one too large for a round each (above some 20 000
    triangles) the convex-combination solve as it is;
 4. an in-between is drawn from the mean-value weights (:mod:`.tutte`) of the grid points about it, each
-   chain's blended by where ``s`` lies between them, the chain from key 0 weighing ``1 − s`` and the one
-   from key 1 ``s``: a convex combination of valid triangulations' weights, so valid (Floater and Gotsman
-   1999), continuous in ``s``, and on the keys at the ends. Where a chain could not keep up with its
+   chain's blended by where ``s`` lies between them, the chain from key 0 weighing ``1 − u`` and the one
+   from key 1 ``u = 3s² − 2s³``: a convex combination of valid triangulations' weights, so valid (Floater
+   and Gotsman 1999), continuous in ``s``, and on the keys at the ends, where ``u`` is flat, so the other
+   chain's share, however far it lies, grows slowly out of each key (blended by ``s`` itself, a share of
+   1/24 of a far chain moved the frame next to a key by 3 × the clip's median step). Where a chain could not keep up with its
    targets (triangles that must grow a thousandfold, a slit's collapsed ones), the two chains end far
    apart; picking the nearer chain at each grid point, as this step did before, then jumped from one to
    the other between two frames (at the last frame step, often: a pop), where the weights now move from
@@ -147,7 +149,8 @@ class ShapeKeepingSolve:
         if not self.rounds:
             return convex  # a mesh too large for the descent's work bound
         weights = np.zeros(len(self.embedding.rows))
-        for step, part in ((-1, 1.0 - s), (1, s)):  # the chain from key 0 weighs 1 − s, the one from key 1 s
+        u = s * s * (3.0 - 2.0 * s)  # the chain from key 1's share: flat at both keys
+        for step, part in ((-1, 1.0 - u), (1, u)):
             weights += part * ((1.0 - share) * self._weights(k, step) + share * self._weights(k + 1, step))
         return self.embedding(weights)
 

@@ -22,13 +22,13 @@ after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013
 4. an in-between is drawn from the mean-value weights (:mod:`.tutte`) of the grid points about it, each
    chain's blended by where ``s`` lies between them, the chain from key 0 weighing ``1 − u`` and the one
    from key 1 ``u = 3s² − 2s³``: a convex combination of valid triangulations' weights, so valid (Floater
-   and Gotsman 1999), continuous in ``s``, and on the keys at the ends, where ``u`` is flat, so the other
-   chain's share, however far it lies, grows slowly out of each key (blended by ``s`` itself, a share of
-   1/24 of a far chain moved the frame next to a key by 3 × the clip's median step). Where a chain could not keep up with its
-   targets (triangles that must grow a thousandfold, a slit's collapsed ones), the two chains end far
-   apart; picking the nearer chain at each grid point, as this step did before, then jumped from one to
-   the other between two frames (at the last frame step, often: a pop), where the weights now move from
-   one to the other over the whole segment. Where the fits of both grid points about ``s`` keep every
+   and Gotsman 1999), continuous in ``s``, and on the keys at the ends. Where a chain could not keep up
+   with its targets (triangles that must grow a thousandfold, a slit's collapsed ones), the two chains
+   end far apart; picking the nearer chain at each grid point, as this step did before, then jumped from
+   one to the other between two frames (often at the last frame step: a pop), where the weights now move
+   from one to the other over the whole segment. ``u`` is flat at the keys, so a far chain's share grows
+   slowly out of each key (blended by ``s`` itself, a share of 1/24 of a far chain moved the frame next
+   to a key by 3 × the clip's median step). Where the fits of both grid points about ``s`` keep every
    triangle's orientation, the fit of ``s``'s own targets is drawn where it does too.
 
 It depends on ``s`` alone, so a render's blocks of frames and a report's measures agree.

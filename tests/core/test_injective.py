@@ -17,7 +17,8 @@ import tweenrender as tr
 from tests.core.exact_tangles import parents_of, tangled
 from tests.helpers import DATA
 from tweenrender.core.geometry import rotate
-from tweenrender.core.methods.injective import injective, injective_contours, injective_mesh, mean_value_weights
+from tweenrender.core.methods.injective import injective, injective_contours, injective_mesh
+from tweenrender.core.methods.tutte import mean_value_weights
 from tweenrender.core.methods.registry import interpolate
 from tweenrender.core.methods.qcurves import auto_choice
 from tweenrender.core.timing.timeline import build_track, pair_paths
@@ -272,9 +273,9 @@ def test_each_t_is_solved_once_whatever_set_of_t_asks_for_it(monkeypatch: pytest
     solves: list[float] = []
     original = bounded_distortion.ShapeKeepingSolve.__call__
 
-    def counted(self, s, convex):  # type: ignore[no-untyped-def]
+    def counted(self, s):  # type: ignore[no-untyped-def]
         solves.append(s)
-        return original(self, s, convex)
+        return original(self, s)
 
     monkeypatch.setattr(bounded_distortion.ShapeKeepingSolve, "__call__", counted)
     k0, k1 = _spiral_and_star()

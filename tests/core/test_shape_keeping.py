@@ -75,11 +75,11 @@ def test_each_target_turns_and_stretches_by_a_share_of_its_triangles_change() ->
 
 def test_the_solve_gives_the_keys_at_the_ends_and_every_triangle_its_orientation_between() -> None:
     solve, mesh = _solve_for("octicons/check-circle-24", "heroicons/check-circle")
-    np.testing.assert_array_equal(solve(0.0, mesh.p0), mesh.p0)
-    np.testing.assert_array_equal(solve(1.0, mesh.p0), mesh.p1)
+    np.testing.assert_array_equal(solve(0.0), mesh.p0)
+    np.testing.assert_array_equal(solve(1.0), mesh.p1)
     tri = mesh.triangles
     for s in (0.25, 0.5, 0.75):
-        x = solve(s, mesh.p0)  # a stand-in fallback: the result must be valid by itself or be it
+        x = solve(s)
         a, b = x[tri[:, 1]] - x[tri[:, 0]], x[tri[:, 2]] - x[tri[:, 0]]
         assert np.all((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])[solve.good] > 0), s
 
@@ -158,15 +158,17 @@ def test_the_descent_keeps_within_its_work_bound(monkeypatch: pytest.MonkeyPatch
     solve, mesh = _solve_for("lucide/moon", "lucide/star")
     triangles = len(mesh.triangles)
     for s in T:
-        solve(float(s), mesh.p0)
+        solve(float(s))
     per_link = min(bd._LINK, bd._WORK // (2 * (bd._GRID - 1) * triangles))
     assert 0 < len(rounds) <= 2 * (bd._GRID - 1) * per_link  # the in-betweens blend the grid points: no rounds of their own
     monkeypatch.setattr(bd, "_WORK", 2 * (bd._GRID - 1) * triangles - 1)  # not one round per grid point
     solve, mesh = _solve_for("lucide/moon", "lucide/star")
     rounds.clear()
-    for s in (0.3, 0.5, 0.7):
-        convex = mesh.p0 + 0.0
-        assert solve(s, convex) is convex or np.array_equal(solve(s, convex), convex)
+    from tweenrender.core.methods.tutte import mean_value_weights
+
+    w0, w1 = mean_value_weights(mesh.p0, mesh.triangles)[2], mean_value_weights(mesh.p1, mesh.triangles)[2]
+    for s in (0.3, 0.5, 0.7):  # the convex-combination solve: the keys' weights blended
+        np.testing.assert_array_equal(solve(s), solve.embedding((1 - s) * w0 + s * w1))
     assert rounds == []
 
 

@@ -71,11 +71,9 @@ def material_triangles(mesh: CompatibleMesh, cuts: list[int], closed: list[bool]
 
 
 class ShapeKeepingSolve:
-    """The shape-keeping positions of every mesh vertex at ``s`` in [0, 1]: call with ``s`` and the
-    convex-combination positions ``(V, 2)`` at ``s`` (drawn where the mesh is too large for a descent, and
-    a vanishing pull of the fit) for ``(V, 2)``. ``embedding`` (:mod:`.tutte`): the mesh's, if one is at hand."""
+    """The shape-keeping positions of every mesh vertex at ``s`` in [0, 1]: call with ``s`` for ``(V, 2)``."""
 
-    def __init__(self, mesh: CompatibleMesh, material: NDArray[np.bool_], embedding: ConvexEmbedding | None = None) -> None:
+    def __init__(self, mesh: CompatibleMesh, material: NDArray[np.bool_]) -> None:
         p0, p1, tri = mesh.p0, mesh.p1, mesh.triangles
         self.mesh, self.tri = mesh, tri
         e0, e1 = edge_matrix(p0, tri), edge_matrix(p1, tri)  # (F, 2, 2), edges as columns
@@ -97,7 +95,8 @@ class ShapeKeepingSolve:
         fixed[mesh.frame] = True
         self.free, self.fixed = np.flatnonzero(~fixed), np.flatnonzero(fixed)
         self._system: tuple[object, object, Array, float] | None = None
-        self.embedding = embedding or ConvexEmbedding(mesh)
+        self.embedding = ConvexEmbedding(mesh)
+        self.w0, self.w1 = self.embedding.weights(p0), self.embedding.weights(p1)
         self._mean_values: dict[tuple[int, int], Array] = {}
         self._sides: dict[tuple[int, int], Array] = {}
         self._fits: dict[int, Array | None] = {}
@@ -135,7 +134,11 @@ class ShapeKeepingSolve:
     def _valid(self, x: Array) -> bool:
         return bool(np.all(orientations(x, self.tri)[self.good] > 0.0)) and bool(np.all(np.isfinite(x)))
 
-    def __call__(self, s: float, convex: Array) -> Array:
+    def convex(self, s: float) -> Array:
+        """The convex-combination solve at ``s``: the keys' mean-value weights blended, ``(V, 2)`` (maths §5.9)."""
+        return self.embedding((1.0 - s) * self.w0 + s * self.w1)
+
+    def __call__(self, s: float) -> Array:
         if s <= 0.0:
             return np.array(self.mesh.p0)
         if s >= 1.0:
@@ -143,11 +146,11 @@ class ShapeKeepingSolve:
         k = min(int(s * _GRID), _GRID - 1)
         share = s * _GRID - k
         if self._fit(k) is not None and self._fit(k + 1) is not None:
-            x = self._solve(self.targets(s), convex)
+            x = self._solve(self.targets(s), self.convex(s))
             if self._valid(x):
                 return x
         if not self.rounds:
-            return convex  # a mesh too large for the descent's work bound
+            return self.convex(s)  # a mesh too large for the descent's work bound
         weights = np.zeros(len(self.embedding.rows))
         u = s * s * (3.0 - 2.0 * s)  # the chain from key 1's share: flat at both keys
         for step, part in ((-1, 1.0 - u), (1, u)):

@@ -44,13 +44,12 @@ from numpy.typing import ArrayLike, NDArray
 from ..balance import coincident_runs, spread
 from ..contours import inside, roles
 from .bounded_distortion import ShapeKeepingSolve, material_triangles
-from .tutte import ConvexEmbedding, mean_value_weights
 from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
 from ..geometry import area, best_fit_rotation, centroid, rotate
 from .paths import as_times, rigid
 from ..memo import Remembered
 
-__all__ = ["carried_points", "injective", "injective_contours", "injective_fallback", "injective_mesh", "mean_value_weights"]
+__all__ = ["carried_points", "injective", "injective_contours", "injective_fallback", "injective_mesh"]
 
 Array = NDArray[np.float64]
 
@@ -82,8 +81,6 @@ class _Paths:
         self.phi = _rigid_turn(k0 - self.c0, k1 - self.c1)
         a0, a1 = k0 - self.c0, rotate(k1 - self.c1, -self.phi)
         self.mesh = mesh = compatible_triangulation(a0, a1, cuts, closed)
-        self.embedding = ConvexEmbedding(mesh)
-        self.w0, self.w1 = self.embedding.weights(mesh.p0), self.embedding.weights(mesh.p1)
         self.n = len(k0)
         self.cuts, self.closed = list(cuts), list(closed)
         # a closed contour's area counts for its region, minus where it is a hole (inside an odd number of
@@ -92,7 +89,7 @@ class _Paths:
         kinds = roles([a0[cuts[c]:cuts[c + 1]] for c in shut], [True] * len(shut))
         self.signs = {c: (-1.0 if kind == "hole" else 1.0) for c, kind in zip(shut, kinds)}
         self.areas = (self._area(a0), self._area(a1))
-        self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed), self.embedding)
+        self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed))
         self._solved: dict[float, Array] = {}  # each t's frame before its turn, by t: the same for any other t
 
     def _frame(self, s: float) -> Array:
@@ -100,8 +97,7 @@ class _Paths:
         a report asks for its measures' t, the sweep and the clip's frames, which share some t)."""
         found = self._solved.get(s)
         if found is None:
-            convex = self.embedding((1.0 - s) * self.w0 + s * self.w1)
-            kept = self.keeping(s, convex)[:self.n]
+            kept = self.keeping(s)[:self.n]
             found = self._sized(kept - kept.mean(axis=0), s)  # its vertex mean on the straight path
             if (len(self._solved) + 1) * found.nbytes <= _FRAME_BYTES:
                 self._solved[s] = found

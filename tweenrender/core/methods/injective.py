@@ -12,13 +12,14 @@ After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
 3. in each key every vertex but the frame's is the mean-value combination
    (Floater 2003: positive weights) of its neighbours; at ``t`` the weights are
    blended, ``λ(t) = (1-t)·λ(0) + t·λ(1)`` (t clamped to [0, 1]), and the
-   vertices solve ``x_i = Σ_j λ_ij(t)·x_j`` with the frame held (one sparse LU
-   per frame). By Tutte and Floater the result is a valid triangulation at every
+   vertices solve ``x_i = Σ_j λ_ij(t)·x_j`` with the frame held (one sparse LU,
+   :mod:`.tutte`). By Tutte and Floater the result is a valid triangulation at every
    t, so no contour crosses itself or another, and a hole stays in its outline;
 4. that solve is valid but lets the shape wander and distort; the in-between drawn is the
    shape-keeping solve of :mod:`.bounded_distortion` (each triangle turning and stretching by
-   a share of its own change, made injective by projection), reached by a descent that never turns
-   a triangle over where it alone cannot keep every triangle's orientation;
+   a share of its own change), made injective by descents that never turn a triangle over, at
+   grid points from either key, whose weights are blended as in step 3 (the solve of step 3
+   itself is drawn only for a mesh too large to descend);
 5. the contours are centred (their vertex mean follows the straight path) and scaled about it
    to the keys' interpolated area, ``(1-t)·A0 + t·A1`` (closed contours' signed areas summed):
    a similarity keeps them simple;

@@ -89,3 +89,27 @@ def test_auto_never_strays_past_straight_paths_to_tangle_less() -> None:
             assert worst("auto") <= worst("linear") + 0.02 + 1e-3
             measured += 1
     assert measured
+
+
+def test_a_contour_crossing_itself_in_a_key_counts_against_no_method() -> None:
+    # a square that ends as a figure eight crosses itself near that key whatever the method: auto's count
+    # of tangled t leaves it out (stats still reports it), and still counts two squares trading places,
+    # which overlap (shapely) at t = 0.35 .. 0.6 of the quality sweep
+    from tweenrender.core.methods.qcurves import candidate_quality
+    from tweenrender.core.tangles import contact_times
+
+    bow0 = np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float) + [20.0, 0.0]
+    bow1 = np.array([[0, 0], [2, 2], [2, 0], [0, 2]], dtype=float) + [20.0, 0.0]
+    a0, b0 = _square(0.0, 0.0, 4.0), _square(10.0, 1.0, 3.0)
+    a1, b1 = _square(10.0, 1.0, 4.0), _square(0.0, 0.0, 3.0)
+    k0s, k1s, closed = [bow0, a0, b0], [bow1, a1, b1], [True, True, True]
+    t = QUALITY_T[:, None, None]
+    frames = [(1.0 - t) * k0 + t * k1 for k0, k1 in zip(k0s, k1s)]
+    overlap = [round(float(x), 2) for k, x in enumerate(QUALITY_T)
+               if Polygon(frames[1][k]).intersection(Polygon(frames[2][k])).area > 0]  # touching at .3, .65
+    assert overlap == [0.35, 0.4, 0.45, 0.5, 0.55, 0.6]
+    bowed = [round(float(x), 2) for k, x in enumerate(QUALITY_T)
+             if not LineString(np.vstack([frames[0][k], frames[0][k][:1]])).is_simple]
+    assert bowed and bowed[-1] == 0.95  # the figure eight crosses itself from some t on
+    assert candidate_quality(frames, k0s, k1s, closed)[0] == len(overlap)
+    assert len(contact_times(frames, closed, QUALITY_T, k0s, k1s)[0]) == len(set(overlap) | set(bowed))

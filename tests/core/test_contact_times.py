@@ -95,6 +95,42 @@ def test_a_hole_passing_into_a_notch_corner_to_corner_tangles() -> None:
     assert 0.5 in crossings and crossings == shapely_times(frames, [True, True])[0]
 
 
+def shrinking(points: np.ndarray, centre: np.ndarray, stop: float) -> np.ndarray:
+    """``points (N, 2)`` scaled about ``centre (2,)`` from 1 at t = 0 to 0 at ``stop``, one point after it:
+    ``(T, N, 2)`` over :data:`SWEEP`."""
+    scale = np.clip(1.0 - SWEEP / stop, 0.0, 1.0)[:, None, None]
+    return centre + scale * (points - centre)
+
+
+def test_a_contour_shrinking_to_a_point_across_another_tangles_wherever_its_point_ends() -> None:
+    # a piece beside the big square shrinks about a centre while it slides into the square: its point in
+    # the last key lies inside the square, outside in the first; it is drawn while it lasts, so the pair
+    # is apart in the only key that draws both, and its crossing the square's side is a tangle
+    piece = SMALL * 2.0 + [11.0, 4.0]  # x 11 .. 13, y 4 .. 6
+    slide = (-6.0 * SWEEP)[:, None, None] * np.array([1.0, 0.0])
+    frames = [straight(BIG, BIG), shrinking(piece, np.array([12.0, 5.0]), 0.6) + slide]
+    k0s, k1s = [BIG, piece], [BIG, frames[1][-1]]
+    assert np.ptp(k1s[1], axis=0).max() == 0.0  # one point, inside the square
+    crossings, _ = contact_times(frames, [True, True], SWEEP, k0s, k1s)
+    # its left side at 12 - 6t - (1 - t / 0.6): on x = 10 at t = 1 / (6 - 1 / 0.6) = 0.2308; its right side
+    # at 12 - 6t + (1 - t / 0.6) passes x = 10 at t = 3 / (6 + 1 / 0.6) = 0.3913; from then it is inside
+    # the square, a piece of it still there until t = 0.6
+    left, right = 1.0 / (6.0 - 1.0 / 0.6), 3.0 / (6.0 + 1.0 / 0.6)
+    expected = [float(t) for t in SWEEP if left + 1e-9 < t < 0.6 - 1e-9]
+    assert crossings == expected and float(SWEEP[30]) in crossings and right < 0.6
+    assert crossings == shapely_times(frames, [True, True])[0]
+
+
+def test_a_contour_shrinking_to_a_point_clear_of_the_others_never_tangles() -> None:
+    # the same piece shrinking where it is: its point lies outside the square in the last key, and the
+    # square moving over that point after the piece is gone is no tangle
+    piece = SMALL * 2.0 + [11.0, 4.0]
+    frames = [straight(BIG, BIG + [4.0, 0.0]), shrinking(piece, np.array([12.0, 5.0]), 0.3)]
+    k0s, k1s = [BIG, piece], [BIG + [4.0, 0.0], frames[1][-1]]
+    assert contact_times(frames, [True, True], SWEEP, k0s, k1s) == ([], [])
+    assert shapely_times(frames, [True, True]) == ([], [])
+
+
 def test_pieces_touching_in_a_key_may_overlap_but_pieces_apart_may_not() -> None:
     bulge = 2.0 * np.sin(np.pi * SWEEP)[:, None, None] * np.array([-1.0, 0.0])
     for gap, meet in ((0.0, False), (0.5, True)):

@@ -212,8 +212,7 @@ def parents(contours: Sequence[Array], closed: Sequence[bool]) -> list[int | Non
     out: list[int | None] = []
     for c, points in enumerate(contours):
         points = np.asarray(points, dtype=np.float64)
-        flat = len(points) == 0 or not np.any(points != points[:1])
-        near = [] if flat else [shut[k] for k in boxes_holding(points[0], boxes).tolist()]
+        near = [] if _flat(points) else [shut[k] for k in boxes_holding(points[0], boxes).tolist()]
         around = [d for d in near if d != c and _inside(points[0], np.asarray(contours[d], dtype=np.float64))]
         out.append(min(around, key=lambda d: areas[d]) if around else None)
     return out
@@ -328,6 +327,19 @@ def _shut(contour: Array, closed: bool) -> bool:
     return bool(closed) and len(contour) >= 3
 
 
+def _flat(contour: Array) -> bool:
+    """Whether ``contour (L, 2)`` is one point (or none)."""
+    points = np.asarray(contour, dtype=np.float64)
+    return len(points) == 0 or not np.any(points != points[:1])
+
+
+def _flat_frames(frames: Array) -> NDArray[np.bool_]:
+    """Whether ``frames (T, L, 2)`` is one point (or none) at each frame: ``(T,)``."""
+    if frames.shape[1] == 0:
+        return np.ones(len(frames), dtype=bool)
+    return ~np.any(frames != frames[:, :1], axis=(1, 2))
+
+
 @dataclass(frozen=True, slots=True)
 class Apart:
     """What two keys of one shape say about its contours (indices into them).
@@ -360,19 +372,25 @@ def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[b
 
 def _apart_in_keys(k0s: list[Array], k1s: list[Array], closed: Sequence[bool]) -> Apart:
     shut = [_shut(k, c) for k, c in zip(k0s, closed)]
-    meeting = set(proper_crossings(k0s, shut, touching=True)) | set(proper_crossings(k1s, shut, touching=True))
-    ids = [c for c in range(len(k0s)) if shut[c]]
+    # a contour that is one point in a key (growing from it, shrinking to it) is not drawn there: a pair is
+    # read from the keys that draw both
+    drawn = [[not _flat(k) for k in keys] for keys in (k0s, k1s)]
+    meeting: set[tuple[int, int]] = set()
+    for keys, here in zip((k0s, k1s), drawn):
+        meeting.update((c, d) for c, d in proper_crossings(keys, shut, touching=True) if here[c] and here[d])
     # one inside the other in a key needs its box within the other's there: every other pair is side by side
     boxed: set[tuple[int, int]] = set()
-    for keys in (k0s, k1s):
+    for keys, here in zip((k0s, k1s), drawn):
+        ids = [c for c in range(len(keys)) if shut[c] and here[c]]
         p, q = held_pairs(bounding_boxes([keys[c] for c in ids]))
         boxed.update((min(ids[x], ids[y]), max(ids[x], ids[y])) for x, y in zip(p.tolist(), q.tolist()))
     nested, joined = [], set(meeting)
     for c, d in sorted(boxed - meeting):
-        first = int(_relation(k0s[c][None], k0s[d][None])[0])
-        if first != int(_relation(k1s[c][None], k1s[d][None])[0]):
+        relations = {int(_relation(keys[c][None], keys[d][None])[0])
+                     for keys, here in zip((k0s, k1s), drawn) if here[c] and here[d]}
+        if len(relations) > 1:
             joined.add((c, d))
-        elif first:
+        elif relations and (first := relations.pop()):
             nested.append((c, d, first))
     # a contour that meets the one around it in a key is no hole of it there (the keys already cross)
     parent = [p if p is None or (min(c, p), max(c, p)) not in meeting else None
@@ -381,7 +399,8 @@ def _apart_in_keys(k0s: list[Array], k1s: list[Array], closed: Sequence[bool]) -
 
 
 def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
-                  k0s: Sequence[Array], k1s: Sequence[Array]) -> tuple[list[float], list[float]]:
+                  k0s: Sequence[Array], k1s: Sequence[Array], *, with_key_crossings: bool = True
+                  ) -> tuple[list[float], list[float]]:
     """The ``t (T,)`` at which contours ``frames[i] (T, L_i, 2)`` of one shape, keys ``k0s``, ``k1s``
     (``(L_i, 2)``), tangle: ``(crossings, stroke_crossings)``.
 
@@ -390,7 +409,10 @@ def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
     one lies inside the other where it did not in the keys, or no longer does. ``stroke_crossings``:
     an open stroke crosses itself properly, or crosses a contour it is apart from in both keys.
     Two contours cross where they do properly, or pass through each other where they only touch
-    (:func:`crossing_pairs`). A closed contour of fewer than three vertices counts as a stroke.
+    (:func:`crossing_pairs`). A closed contour of fewer than three vertices counts as a stroke. Without
+    ``with_key_crossings``, a contour that crosses itself properly in a key is not counted crossing
+    itself (it does near that key whatever the in-betweens: what ``auto`` compares is what a method
+    could avoid).
     """
     t = np.asarray(t, dtype=np.float64)
     if not frames:
@@ -403,10 +425,14 @@ def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
     crossed: list[set[tuple[int, int]]] = []
     filled = [c for c in range(len(frames)) if shut[c] and frames[c].shape[1] > 0]
     inside_pairs = {(c, d) for c, d, _ in keys.nested}
+    bound = set() if with_key_crossings else \
+        {c for key in (k0s, k1s) for c, d in proper_crossings(key, shut) if c == d}
     for k in range(len(t)):
         found = crossing_pairs([f[k] for f in frames], shut)
         crossed.append(found)
         for c, d in found:
+            if c == d and c in bound:
+                continue
             if c == d:
                 tangled[k] |= shut[c]
                 stroked[k] |= not shut[c]
@@ -416,32 +442,35 @@ def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
                 # apart in both keys: strokes meet where they cross, closed contours side by side too
                 tangled[k] |= shut[c] and shut[d]
                 stroked[k] |= not (shut[c] and shut[d])
+    flat = [_flat_frames(f) for f in frames]  # (T,) each: one point then, drawn nowhere
     for c, p in enumerate(keys.parent):
         if shut[c] and p is not None:  # wholly outside: no vertex inside (partly outside shows as a crossing)
-            rest = np.flatnonzero(~tangled)
+            rest = np.flatnonzero(~tangled & ~flat[c] & ~flat[p])
             rest = rest[point_states(frames[c][rest, :1], frames[p][rest])[:, 0] != 1]
             for k in rest.tolist():  # the first vertex is not inside: is any other?
                 tangled[k] = not np.any(point_states(frames[c][k:k + 1], frames[p][k:k + 1]) == 1)
     for c, d, relation in keys.nested:
         met = np.array([(c, d) in found for found in crossed])
         tangled |= met
-        rest = np.flatnonzero(~met & ~tangled)
+        rest = np.flatnonzero(~met & ~tangled & ~flat[c] & ~flat[d])
         if len(rest):
             tangled[rest] |= _relation(frames[c][rest], frames[d][rest]) != relation
-    tangled |= _side_by_side_nest(frames, filled, tangled, keys.joined | inside_pairs)
+    tangled |= _side_by_side_nest(frames, filled, tangled, keys.joined | inside_pairs, flat)
     return [float(x) for x in t[tangled]], [float(x) for x in t[stroked]]
 
 
 def _side_by_side_nest(frames: Sequence[Array], filled: Sequence[int], done: NDArray[np.bool_],
-                       not_side_by_side: frozenset[tuple[int, int]] | set[tuple[int, int]]) -> NDArray[np.bool_]:
+                       not_side_by_side: frozenset[tuple[int, int]] | set[tuple[int, int]],
+                       flat: Sequence[NDArray[np.bool_]]) -> NDArray[np.bool_]:
     """Frames ``(T,)`` not ``done`` at which two of the closed contours ``filled`` (indices into ``frames``,
     ``(T, L_i, 2)`` each), side by side in both keys (no pair of ``not_side_by_side``), lie one inside the
-    other: only the pairs whose boxes lie one within the other at that frame are tested."""
+    other: only the pairs whose boxes lie one within the other at that frame are tested; a contour that
+    is one point at a frame (``flat[c] (T,)``) lies in none there."""
     out = np.zeros(len(done), dtype=bool)
     if len(filled) < 2:
         return out
-    lows = np.stack([frames[c].min(axis=1) for c in filled], axis=1)  # (T, C, 2)
-    highs = np.stack([frames[c].max(axis=1) for c in filled], axis=1)
+    lows = np.stack([np.where(flat[c][:, None], np.inf, frames[c].min(axis=1)) for c in filled], axis=1)  # (T, C, 2)
+    highs = np.stack([np.where(flat[c][:, None], -np.inf, frames[c].max(axis=1)) for c in filled], axis=1)
     for k in np.flatnonzero(~done).tolist():
         p, q = held_pairs(np.concatenate([lows[k], highs[k]], axis=1))
         for x, y in zip(p.tolist(), q.tolist()):

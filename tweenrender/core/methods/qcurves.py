@@ -326,8 +326,9 @@ def candidate_quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequen
 
 
 def _tangled(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> int:
-    """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included)."""
-    tangled, stroked = contact_times(frames, closed, QUALITY_T, k0s, k1s)
+    """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included; a contour
+    crossing itself in a key does so near it under every method, and is not counted)."""
+    tangled, stroked = contact_times(frames, closed, QUALITY_T, k0s, k1s, with_key_crossings=False)
     return len(set(tangled) | set(stroked))
 
 

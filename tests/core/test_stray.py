@@ -73,3 +73,20 @@ def test_real_icons_stray_as_shapely_measures(a: str, b: str) -> None:
                 shares.append((ours, exact))
     assert shares and max(exact for _, exact in shares) > 0.01
     assert max(abs(ours - exact) for ours, exact in shares) <= 0.01, shares
+
+
+def test_an_open_stroke_flung_away_strays_by_its_length() -> None:
+    # auto's holding of contours without a partner (maths §5.16) measures strokes by their length: two
+    # strokes of length 4 whose keys lie on y = 0; one stays, the other is carried up by 10 sin(πt). The
+    # reach is 12 % of the keys' larger side (the two strokes span x = 0 .. 10): 1.2; the moving one is past
+    # it where 10 sin(πt) > 1.2 (the keys are straight lines: every point of it is as far as its shift)
+    from tweenrender.core.methods.qcurves import QUALITY_T, stroke_stray
+
+    stay, move = np.array([[0.0, 0.0], [4.0, 0.0]]), np.array([[6.0, 0.0], [8.0, 0.0], [10.0, 0.0]])
+    lift = (10.0 * np.sin(np.pi * QUALITY_T))[:, None, None] * np.array([0.0, 1.0])
+    frames = [np.broadcast_to(stay, (len(QUALITY_T), 2, 2)), move[None] + lift]
+    assert stroke_stray(frames, [stay, move], [stay, move], [False, False]) == pytest.approx(0.5, abs=1e-9)
+    assert stroke_stray([frames[1]], [move], [move], [False]) == pytest.approx(1.0, abs=1e-9)
+    # within the reach (a lift of at most 1.1) nothing strays
+    low = move[None] + 0.11 * lift
+    assert stroke_stray([frames[0], low], [stay, move], [stay, move], [False, False]) == 0.0

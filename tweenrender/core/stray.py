@@ -24,9 +24,9 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from .coverage import Grid, by_rule, dilate, filled, winding
+from .coverage import Grid, band, by_rule, dilate, filled, winding
 
-__all__ = ["Area", "STRAY_REACH", "stray_shares"]
+__all__ = ["Area", "STRAY_REACH", "stray_shares", "stroke_stray_shares"]
 
 Array = NDArray[np.float64]
 
@@ -63,6 +63,55 @@ def stray_shares(frames: Sequence[Area], key0: Area, key1: Area, reach: float) -
         if total:
             out[k] = np.count_nonzero(inside & ~near) / total
     return out
+
+
+def stroke_stray_shares(strokes: Sequence[Sequence[Array]], key0: Area, key1: Area,
+                        lines: Sequence[tuple[Array, bool]], reach: float) -> Array:
+    """The share of the length of each in-between's open strokes ``strokes[k]`` (``(L_i, 2)`` each) lying
+    farther than ``reach`` from both keys: from their areas ``key0``, ``key1`` and their contours ``lines``
+    (``(points (N, 2), closed)``, both keys'): ``(T,)`` in [0, 1] (0 for an in-between of no stroke length,
+    or a reach of 0). On the grid of :func:`stray_shares`; each edge is read at the middles of pieces at
+    most a cell long; the contours are drawn a few cells wide before they are grown by the reach, so a
+    piece within a cell and a half past the reach of one may count as near."""
+    every = [np.asarray(c, dtype=np.float64).reshape(-1, 2) for frame in strokes for c in frame]
+    every += [np.asarray(c, dtype=np.float64).reshape(-1, 2) for area in (key0, key1) for c in area[0]]
+    every += [np.asarray(c, dtype=np.float64).reshape(-1, 2) for c, _ in lines]
+    points = np.concatenate(every) if every else np.zeros((0, 2))
+    points = points[np.all(np.isfinite(points), axis=1)]
+    out = np.zeros(len(strokes))
+    if len(points) == 0 or not reach > 0:
+        return out
+    (x0, y0), (x1, y1) = points.min(axis=0), points.max(axis=0)
+    side = float(max(x1 - x0, y1 - y0))
+    grid = Grid.over((float(x0), float(y0), float(x1), float(y1)), min(reach / _PER_REACH, side / _PER_SIDE), _MOST)
+    near = _near(grid, key0, reach) | _near(grid, key1, reach)
+    drawn = [(np.asarray(c, dtype=np.float64).reshape(-1, 2), shut) for c, shut in lines if len(c) >= 1]
+    if drawn:
+        near |= dilate(band(grid, [c for c, _ in drawn], [s for _, s in drawn], 3.0 * grid.cell), reach / grid.cell)
+    for k, frame in enumerate(strokes):
+        middles, lengths = _pieces_of([np.asarray(c, dtype=np.float64).reshape(-1, 2) for c in frame], grid.cell)
+        total = float(lengths.sum())
+        if total > 0:
+            column = np.clip(((middles[:, 0] - grid.x0) / grid.cell).astype(np.int64), 0, grid.nx - 1)
+            row = np.clip(((middles[:, 1] - grid.y0) / grid.cell).astype(np.int64), 0, grid.ny - 1)
+            out[k] = float(lengths[~near[row, column]].sum()) / total
+    return out
+
+
+def _pieces_of(lines: Sequence[Array], cell: float) -> tuple[Array, Array]:
+    """The middles ``(P, 2)`` and lengths ``(P,)`` of the open polylines' ``lines (L_i, 2)`` edges cut into
+    equal pieces at most ``cell`` long (at most 256 an edge)."""
+    a = np.concatenate([c[:-1] for c in lines if len(c) >= 2] or [np.zeros((0, 2))])
+    b = np.concatenate([c[1:] for c in lines if len(c) >= 2] or [np.zeros((0, 2))])
+    keep = np.all(np.isfinite(a), axis=1) & np.all(np.isfinite(b), axis=1)
+    a, b = a[keep], b[keep]
+    length = np.hypot(*(b - a).T)
+    count = np.clip(np.ceil(length / cell), 1, 256).astype(np.int64)
+    edge = np.repeat(np.arange(len(a)), count)
+    start = np.cumsum(count) - count
+    share = (np.arange(int(count.sum())) - np.repeat(start, count) + 0.5) / np.repeat(count, count)
+    middles = a[edge] + share[:, None] * (b - a)[edge]
+    return middles, (length / count)[edge]
 
 
 _CHUNK = 1 << 21  # cell-edge distances worked out at once

@@ -24,13 +24,14 @@ from . import paths
 from ..geometry import best_fit_rotation, cross, edge_lengths
 from ..balance import spread_copies
 from .injective import injective, injective_contours
-from ..stray import STRAY_REACH, stray_shares
+from ..stray import STRAY_REACH, stray_shares, stroke_stray_shares
 from ..tangles import contact_times, linear_tangles
 
 __all__ = [
     "control_points", "evaluate", "angle_at", "passes_through_zero", "non_monotonic",
     "sweeps_over_180", "Motion", "vertex_kinds", "classify", "AutoChoice", "auto_choice",
     "auto_choice_contours", "auto", "straight", "STRAY_LIMIT", "QUALITY_T", "candidate_paths", "candidate_quality",
+    "stroke_stray",
 ]
 
 Array = NDArray[np.float64]
@@ -335,13 +336,31 @@ def _tangled(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array]
 def _stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> float:
     """The largest stray of ``frames`` at :data:`QUALITY_T`, the reach 12 % of the larger side of both keys."""
     filled = [len(k) >= 3 and shut for k, shut in zip(k0s, closed)]
-    points = np.concatenate([*k0s, *k1s])
-    reach = STRAY_REACH * float(np.ptp(points, axis=0).max(initial=0.0))
+    reach = _reach(k0s, k1s)
     if not any(filled) or not reach > 0:
         return 0.0
     areas = [([f[k] for f, keep in zip(frames, filled) if keep], "evenodd") for k in range(len(QUALITY_T))]
     keys = [([k for k, keep in zip(key, filled) if keep], "evenodd") for key in (k0s, k1s)]
     return float(stray_shares(areas, keys[0], keys[1], reach).max(initial=0.0))
+
+
+def stroke_stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> float:
+    """The largest share of the open strokes' length in ``frames`` (``(T, L_i, 2)`` at :data:`QUALITY_T`) lying
+    farther than the reach (12 % of the larger side of both keys) from both keys' areas and contours (0
+    without open strokes)."""
+    filled = [len(k) >= 3 and shut for k, shut in zip(k0s, closed)]
+    reach = _reach(k0s, k1s)
+    if all(filled) or not reach > 0:
+        return 0.0
+    keys = [([k for k, keep in zip(key, filled) if keep], "evenodd") for key in (k0s, k1s)]
+    strokes = [[f[k] for f, keep in zip(frames, filled) if not keep] for k in range(len(QUALITY_T))]
+    lines = [(k, shut) for key in (k0s, k1s) for k, shut in zip(key, closed)]
+    return float(stroke_stray_shares(strokes, keys[0], keys[1], lines, reach).max(initial=0.0))
+
+
+def _reach(k0s: Sequence[Array], k1s: Sequence[Array]) -> float:
+    points = np.concatenate([*k0s, *k1s])
+    return STRAY_REACH * float(np.ptp(points, axis=0).max(initial=0.0))
 
 
 def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> AutoChoice:

@@ -273,9 +273,9 @@ def _with_alone(segment: Segment, choice: AutoChoice) -> AutoChoice:
     """``choice`` (made over the moving contours) measured again with the contours without a partner, as
     drawn (maths §5.16): where they tangle with the moving ones, the injective paths holding them in one
     mesh (:func:`_meshed_alone`) are taken instead when they tangle at fewer t, stray at most
-    :data:`.qcurves.STRAY_LIMIT` more (a mesh that holds everything may carry a piece far: a tangle
-    for a sweep is no gain) and change the area evenly (no step over :data:`EVEN` × the median: a
-    mesh grows a contour by its triangles' stretch, not its area)."""
+    :data:`.qcurves.STRAY_LIMIT` more, by area and by the open strokes' length (a mesh that holds
+    everything may carry a piece far: a tangle for a sweep is no gain) and change the area evenly (no
+    step over :data:`EVEN` × the median: a mesh grows a contour by its triangles' stretch, not its area)."""
     return _alone_measures(segment, choice)[0]
 
 
@@ -303,7 +303,7 @@ def _clean_hold(segment: Segment) -> bool:
 
 
 def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
-    from ..methods.qcurves import QUALITY_T, STRAY_LIMIT, AutoChoice, candidate_paths, candidate_quality
+    from ..methods.qcurves import QUALITY_T, STRAY_LIMIT, AutoChoice, candidate_paths, candidate_quality, stroke_stray
 
     pairs = segment.pairs
     moving = [i for i, p in enumerate(pairs) if p.moving]
@@ -330,10 +330,17 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     second = candidate_quality(held_frames, every0, every1, closed)
     rings = [k for k, c in enumerate(closed) if c]
     uneven = _uneven([held_frames[k] for k in rings], [every0[k] for k in rings], [every1[k] for k in rings])
+    # open strokes by their length: a mesh may carry one far where no area shows it
+    strokes = (stroke_stray(own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
+                            shut + [pairs[i].closed for i in alone]),
+               stroke_stray(held_frames, every0, every1, closed))
     measures = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
                 f"stray {first[1]:.3f}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}, "
                 f"largest area step {uneven:.1f} × the median")
-    if second[0] < first[0] and second[1] <= first[1] + STRAY_LIMIT and uneven <= EVEN:
+    if strokes != (0.0, 0.0):
+        measures += f"; strokes' stray {strokes[0]:.3f} and {strokes[1]:.3f} holding them"
+    if second[0] < first[0] and second[1] <= first[1] + STRAY_LIMIT and uneven <= EVEN \
+            and strokes[1] <= strokes[0] + STRAY_LIMIT:
         return AutoChoice("injective", f"{choice.why}; {measures}", ("injective",), holds=True), second
     return replace(choice, why=f"{choice.why}; {measures}"), second
 

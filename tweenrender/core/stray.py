@@ -44,15 +44,10 @@ _MOST = 1024  # cells along the grid's larger side, at most (an in-between flung
 def stray_shares(frames: Sequence[Area], key0: Area, key1: Area, reach: float) -> Array:
     """The share of each in-between's area ``frames[k]`` lying farther than ``reach`` from both keys'
     areas: ``(T,)`` in [0, 1] (0 for an in-between of no area, or a reach of 0)."""
-    every = [np.asarray(c, dtype=np.float64).reshape(-1, 2) for area in (*frames, key0, key1) for c in area[0]]
-    points = np.concatenate(every) if every else np.zeros((0, 2))
-    points = points[np.all(np.isfinite(points), axis=1)]
     out = np.zeros(len(frames))
-    if len(points) == 0 or not reach > 0:
+    grid = _grid([c for area in (*frames, key0, key1) for c in area[0]], reach)
+    if grid is None:
         return out
-    (x0, y0), (x1, y1) = points.min(axis=0), points.max(axis=0)
-    side = float(max(x1 - x0, y1 - y0))
-    grid = Grid.over((float(x0), float(y0), float(x1), float(y1)), min(reach / _PER_REACH, side / _PER_SIDE), _MOST)
     near = _near(grid, key0, reach) | _near(grid, key1, reach)
     contours = [c for area in frames for c in area[0]]
     layer = np.repeat(np.arange(len(frames)), [len(area[0]) for area in frames])
@@ -73,17 +68,11 @@ def stroke_stray_shares(strokes: Sequence[Sequence[Array]], key0: Area, key1: Ar
     or a reach of 0). On the grid of :func:`stray_shares`; each edge is read at the middles of pieces at
     most a cell long; the contours are drawn a few cells wide before they are grown by the reach, so a
     piece within a cell and a half past the reach of one may count as near."""
-    every = [np.asarray(c, dtype=np.float64).reshape(-1, 2) for frame in strokes for c in frame]
-    every += [np.asarray(c, dtype=np.float64).reshape(-1, 2) for area in (key0, key1) for c in area[0]]
-    every += [np.asarray(c, dtype=np.float64).reshape(-1, 2) for c, _ in lines]
-    points = np.concatenate(every) if every else np.zeros((0, 2))
-    points = points[np.all(np.isfinite(points), axis=1)]
     out = np.zeros(len(strokes))
-    if len(points) == 0 or not reach > 0:
+    grid = _grid([c for frame in strokes for c in frame] + [c for area in (key0, key1) for c in area[0]]
+                 + [c for c, _ in lines], reach)
+    if grid is None:
         return out
-    (x0, y0), (x1, y1) = points.min(axis=0), points.max(axis=0)
-    side = float(max(x1 - x0, y1 - y0))
-    grid = Grid.over((float(x0), float(y0), float(x1), float(y1)), min(reach / _PER_REACH, side / _PER_SIDE), _MOST)
     near = _near(grid, key0, reach) | _near(grid, key1, reach)
     drawn = [(np.asarray(c, dtype=np.float64).reshape(-1, 2), shut) for c, shut in lines if len(c) >= 1]
     if drawn:
@@ -96,6 +85,19 @@ def stroke_stray_shares(strokes: Sequence[Sequence[Array]], key0: Area, key1: Ar
             row = np.clip(((middles[:, 1] - grid.y0) / grid.cell).astype(np.int64), 0, grid.ny - 1)
             out[k] = float(lengths[~near[row, column]].sum()) / total
     return out
+
+
+def _grid(contours: Sequence[Array], reach: float) -> Grid | None:
+    """The grid over every finite point of ``contours (L_i, 2)``, cells at most ``reach / 24`` and 1/192 of its
+    larger side wide; None where there is no point or no reach."""
+    every = [np.asarray(c, dtype=np.float64).reshape(-1, 2) for c in contours]
+    points = np.concatenate(every) if every else np.zeros((0, 2))
+    points = points[np.all(np.isfinite(points), axis=1)]
+    if len(points) == 0 or not reach > 0:
+        return None
+    (x0, y0), (x1, y1) = points.min(axis=0), points.max(axis=0)
+    side = float(max(x1 - x0, y1 - y0))
+    return Grid.over((float(x0), float(y0), float(x1), float(y1)), min(reach / _PER_REACH, side / _PER_SIDE), _MOST)
 
 
 def _pieces_of(lines: Sequence[Array], cell: float) -> tuple[Array, Array]:

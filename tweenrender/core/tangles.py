@@ -348,8 +348,9 @@ class Apart:
     other in both alike (1: c inside d, -1: d inside c); ``joined``: the pairs ``(c, d)``, ``c < d``, not
     apart in both keys — they meet (share a point) in either key, or (closed) are nested differently.
     Every other pair of non-empty contours is apart in both keys, side by side (closed) or one open at
-    least. ``parent``: each contour's parent in the first key (:func:`parents`), None where the two meet
-    in either key.
+    least. A contour that is one point in a key (growing from it, shrinking to it) is not drawn there:
+    its pairs are read from the other key alone. ``parent``: each contour's parent in the first key
+    (:func:`parents`), None where the two meet in either key.
     """
 
     nested: tuple[tuple[int, int, int], ...]

@@ -350,12 +350,14 @@ class Apart:
     Every other pair of non-empty contours is apart in both keys, side by side (closed) or one open at
     least. A contour that is one point in a key (growing from it, shrinking to it) is not drawn there:
     its pairs are read from the other key alone. ``parent``: each contour's parent in the first key
-    (:func:`parents`), None where the two meet in either key.
+    (:func:`parents`), None where the two meet in either key. ``crossed``: the contours that cross
+    themselves properly in either key.
     """
 
     nested: tuple[tuple[int, int, int], ...]
     joined: frozenset[tuple[int, int]]
     parent: tuple[int | None, ...]
+    crossed: frozenset[int] = frozenset()
 
 
 def apart_in_keys(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> Apart:
@@ -377,8 +379,11 @@ def _apart_in_keys(k0s: list[Array], k1s: list[Array], closed: Sequence[bool]) -
     # read from the keys that draw both
     drawn = [[not _flat(k) for k in keys] for keys in (k0s, k1s)]
     meeting: set[tuple[int, int]] = set()
+    crossed: set[int] = set()
     for keys, here in zip((k0s, k1s), drawn):
-        meeting.update((c, d) for c, d in proper_crossings(keys, shut, touching=True) if here[c] and here[d])
+        proper, touched = _meetings(keys, shut)
+        meeting.update((c, d) for c, d in touched if here[c] and here[d])
+        crossed.update(c for c, d in proper if c == d)
     # one inside the other in a key needs its box within the other's there: every other pair is side by side
     boxed: set[tuple[int, int]] = set()
     for keys, here in zip((k0s, k1s), drawn):
@@ -396,7 +401,7 @@ def _apart_in_keys(k0s: list[Array], k1s: list[Array], closed: Sequence[bool]) -
     # a contour that meets the one around it in a key is no hole of it there (the keys already cross)
     parent = [p if p is None or (min(c, p), max(c, p)) not in meeting else None
               for c, p in enumerate(parents(k0s, shut))]
-    return Apart(tuple(nested), frozenset(joined), tuple(parent))
+    return Apart(tuple(nested), frozenset(joined), tuple(parent), frozenset(crossed))
 
 
 def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
@@ -426,8 +431,7 @@ def contact_times(frames: Sequence[Array], closed: Sequence[bool], t: Array,
     crossed: list[set[tuple[int, int]]] = []
     filled = [c for c in range(len(frames)) if shut[c] and frames[c].shape[1] > 0]
     inside_pairs = {(c, d) for c, d, _ in keys.nested}
-    bound = set() if with_key_crossings else \
-        {c for key in (k0s, k1s) for c, d in proper_crossings(key, shut) if c == d}
+    bound = frozenset() if with_key_crossings else keys.crossed
     for k in range(len(t)):
         found = crossing_pairs([f[k] for f in frames], shut)
         crossed.append(found)

@@ -315,8 +315,9 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     alone = _alone(segment)
     grown = [scaled(growths[i].point, pairs[i].k1 if growths[i].grows else pairs[i].k0,  # type: ignore[union-attr]
                     growth_scale(growths[i], QUALITY_T)) for i in alone]  # type: ignore[arg-type]
-    first = candidate_quality(own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
-                     shut + [pairs[i].closed for i in alone])
+    as_grown = (own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
+                shut + [pairs[i].closed for i in alone])
+    first = candidate_quality(*as_grown)
     held = _meshed_alone(segment) if first[0] else []  # the mesh only where they tangle as they grow
     if not held:
         return choice, None
@@ -331,9 +332,7 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     rings = [k for k, c in enumerate(closed) if c]
     uneven = _uneven([held_frames[k] for k in rings], [every0[k] for k in rings], [every1[k] for k in rings])
     # open strokes by their length: a mesh may carry one far where no area shows it
-    strokes = (stroke_stray(own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
-                            shut + [pairs[i].closed for i in alone]),
-               stroke_stray(held_frames, every0, every1, closed))
+    strokes = stroke_stray(*as_grown), stroke_stray(held_frames, every0, every1, closed)
     measures = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
                 f"stray {first[1]:.3f}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}, "
                 f"largest area step {uneven:.1f} × the median")

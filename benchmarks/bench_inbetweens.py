@@ -21,11 +21,15 @@ method (``default`` is the scene's own, what ``render`` draws without ``--method
   12 % of the view's larger side from both keys' drawn areas; p95 and max over every frame. Paint counts
   as drawn from alpha x opacity 0.1 (unmatched elements fade in and out).
 * **area deviation**: ``|area(t) - lerp(area0, area1, t)| / max(area0, area1)`` of the whole drawing; p90.
-* **pops**: the whole drawing's coverage of the view in the rendered frames of the clip (0..24 at 24 fps,
-  200 px on the longer side, transparent background, alpha-weighted so fades are gradual); a pop is a
-  frame-to-frame change over 3x the clip's median change and over 0.002 of the view's area. A smooth but
-  uneven change (fast early shrinking, a U-shaped curve) passes that test on many frames, so **spikes** are
-  counted too: changes over 3x both neighbouring changes and over 0.002 of the view.
+* **pops**: the rendered frames of the clip (0..24 at 24 fps, 200 px on the longer side, transparent
+  background); a frame's change is the mean over the pixels of ``|alpha(f) - alpha(f - 1)|`` (the share of
+  the view whose coverage changed, alpha-weighted so fades are gradual); a pop is a change over 3x the
+  clip's median change and over 0.002 of the view's area. A smooth but uneven change (fast early shrinking,
+  a U-shaped curve) passes that test on many frames, so **spikes** are counted too: changes over 3x both
+  neighbouring changes and over 0.002 of the view. **net pops** apply the same test to the change of the
+  whole drawing's coverage (``|mean alpha(f) - mean alpha(f - 1)|``), the measure of earlier versions of
+  this benchmark: there a shape shrinking where another grows cancels, so the median is small and steady
+  frames where the two do not overlap count as pops.
 * **distortion**: per element and frame, with ``r`` = ``log(l_t / l_lerp)`` for each edge of its contours
   (``l_t`` its length at t, ``l_lerp`` the linear blend of its lengths in the two keys; edges whose blend
   is under 1e-4 of the view are left out), the length-weighted mean of ``|r - mean r|``: the element's
@@ -133,13 +137,24 @@ def _view(scene: Any, keys: Sequence[Sequence[Any]]) -> tuple[float, float]:
     return float(w), float(h)
 
 
-def pop_coverage(tr: Any, scene: Any, method: str | None, view: tuple[float, float]) -> np.ndarray:
-    """The drawing's coverage of the view (alpha-weighted share of pixels, transparent background) at every
-    frame of the clip at the scene's rate."""
+def pop_alphas(tr: Any, scene: Any, method: str | None, view: tuple[float, float]) -> np.ndarray:
+    """The alpha of every pixel in every frame of the clip at the scene's rate, in [0, 1]:
+    ``(F, height, width)`` (transparent background)."""
     scale = POP_SIDE / max(view)
     size = (max(8, round(view[0] * scale)), max(8, round(view[1] * scale)))
-    return np.array([float(img[..., 3].mean()) / 255.0
+    return np.stack([img[..., 3].astype(np.float32) / 255.0
                      for img in tr.frames(scene, method=method, size=size, background="none")])
+
+
+def jumps(change: np.ndarray) -> tuple[list[int], list[int]]:
+    """Pops and spikes (frame indices >= 1) of the frame-to-frame ``change (F - 1,)``."""
+    median = float(np.median(change)) if len(change) else 0.0
+    pops = [int(k + 1) for k in np.flatnonzero((change > POP_RATIO * median) & (change > POP_FLOOR))]
+    before = np.concatenate([[0.0], change[:-1]])
+    after = np.concatenate([change[1:], [0.0]])
+    spikes = [int(k + 1) for k in np.flatnonzero((change > POP_RATIO * np.maximum(before, after))
+                                                 & (change > POP_FLOOR))]
+    return pops, spikes
 
 
 def every_contour(tr: Any, scene: Any, t: float, method: str | None) -> list[Any]:
@@ -193,14 +208,11 @@ def measure_method(tr: Any, scene: Any, method: str | None, key_areas: tuple[Bas
             stray = shapely.difference(area, near).area / a
         frames.append({"t": t, "closed": closed, "stroke": stroke, "kinds": kinds, "stray": stray,
                        "area_dev": abs(a - ((1 - t) * a0 + t * a1)) / amax, "distortion": worst})
-    coverage = pop_coverage(tr, scene, method, view)
-    change = np.abs(np.diff(coverage))
-    median = float(np.median(change)) if len(change) else 0.0
-    pops = [int(k + 1) for k in np.flatnonzero((change > POP_RATIO * median) & (change > POP_FLOOR))]
-    before = np.concatenate([[0.0], change[:-1]])
-    after = np.concatenate([change[1:], [0.0]])
-    spikes = [int(k + 1) for k in np.flatnonzero((change > POP_RATIO * np.maximum(before, after))
-                                                 & (change > POP_FLOOR))]
+    alphas = pop_alphas(tr, scene, method, view)
+    coverage = alphas.mean(axis=(1, 2), dtype=np.float64)
+    change = np.abs(np.diff(alphas, axis=0)).mean(axis=(1, 2), dtype=np.float64)
+    pops, spikes = jumps(change)
+    net_pops, _ = jumps(np.abs(np.diff(coverage)))
     return {
         "seconds": seconds,
         "measure_seconds": time.perf_counter() - started - seconds,
@@ -211,6 +223,7 @@ def measure_method(tr: Any, scene: Any, method: str | None, key_areas: tuple[Bas
         "pops": pops,
         "pop_changes": [float(change[p - 1]) for p in pops],
         "spikes": spikes,
+        "net_pops": net_pops,
         "coverage": [round(float(c), 5) for c in coverage],
         "unaligned_element_frames": unaligned,
         "frames": frames,
@@ -373,6 +386,7 @@ def summarise(results: list[dict[str, Any]], methods: list[str]) -> list[dict[st
             "area_dev_p90": _pct([f["area_dev"] for f in frames], 90),
             "pop_pairs": sum(bool(m["pops"]) for m in done),
             "spike_pairs": sum(bool(m["spikes"]) for m in done),
+            "net_pop_pairs": sum(bool(m.get("net_pops")) for m in done),
             "distortion_p90": _pct([d for m in done for d in m["distortions"]], 90),
             "seconds": sum(m["seconds"] for m in done),
             "unaligned": sum(m["unaligned_element_frames"] for m in done),
@@ -386,14 +400,15 @@ def print_report(results: list[dict[str, Any]], methods: list[str], scene_method
     print(f"\n{len(results)} pairs, {len(loaded)} loaded, {len(results) - len(loaded)} refused; "
           f"{len(TIMES)} in-betweens each (t = 0.05 ... 0.95); default = the scene's own method ({scene_method})")
     head = (f"{'method':<18}{'tangled pairs/frames':>21}{'stroke x pairs/frames':>22}{'stray p95':>11}{'stray max':>11}"
-            f"{'area dev p90':>13}{'pop pairs':>10}{'spike pairs':>12}{'distort p90':>12}{'seconds':>9}")
+            f"{'area dev p90':>13}{'pop pairs':>10}{'spike pairs':>12}{'net pops':>9}{'distort p90':>12}{'seconds':>9}")
     print(head)
     print("-" * len(head))
     for row in rows:
         name = f"default ({scene_method})" if row["method"] == "default" else row["method"]
         print(f"{name:<18}{row['tangled_pairs']:>11}/{row['tangled_frames']:<9}{row['stroke_pairs']:>12}/"
               f"{row['stroke_frames']:<9}{row['stray_p95']:>11.4f}{row['stray_max']:>11.4f}{row['area_dev_p90']:>13.4f}"
-              f"{row['pop_pairs']:>10}{row['spike_pairs']:>12}{row['distortion_p90']:>12.4f}{row['seconds']:>9.1f}")
+              f"{row['pop_pairs']:>10}{row['spike_pairs']:>12}{row['net_pop_pairs']:>9}{row['distortion_p90']:>12.4f}"
+              f"{row['seconds']:>9.1f}")
     for row in rows:
         notes = []
         if row["failed"]:

@@ -17,7 +17,7 @@ import tweenrender as tr
 from tests.core.exact_tangles import parents_of, tangled
 from tests.helpers import DATA
 from tweenrender.core.geometry import rotate
-from tweenrender.core.methods.injective import injective, injective_contours, injective_mesh
+from tweenrender.core.methods.injective import _PACE as PACE, _paths_of, injective, injective_contours, injective_mesh
 from tweenrender.core.methods.tutte import mean_value_weights
 from tweenrender.core.methods.registry import interpolate
 from tweenrender.core.methods.qcurves import auto_choice
@@ -267,7 +267,8 @@ def test_auto_keeps_an_open_stroke_from_crossing_itself() -> None:
 
 def test_each_t_is_solved_once_whatever_set_of_t_asks_for_it(monkeypatch: pytest.MonkeyPatch) -> None:
     """A frame depends on its t alone: asked again within another set of t it is the same, bit for bit,
-    and its shape-keeping solve is not run again (counted)."""
+    and its shape-keeping solve is not run again (counted; the first call also solves the samples the paths
+    are paced by, once)."""
     from tweenrender.core.methods import bounded_distortion
 
     solves: list[float] = []
@@ -281,10 +282,11 @@ def test_each_t_is_solved_once_whatever_set_of_t_asks_for_it(monkeypatch: pytest
     k0, k1 = _spiral_and_star()
     k0, k1 = k0 * 1.0001, k1  # keys of their own: no earlier test's paths remembered
     alone = injective(k0, k1, [0.5, 0.25])
-    assert sorted(solves) == [0.25, 0.5]
+    first = list(solves)
+    assert len(first) == len(set(first)) == len(PACE) + 2  # the pacing's samples and the two asked for
     solves.clear()
     sweep = injective(k0, k1, T)  # .05 … .95, 0.25 and 0.5 among them
-    assert sorted(solves) == sorted(set(T.tolist()) - {0.25, 0.5})
+    assert len(solves) == len(set(solves)) == len(T) - 2 and not set(solves) & set(first)
     assert np.array_equal(sweep[list(T).index(0.5)], alone[0])
     assert np.array_equal(sweep[list(T).index(0.25)], alone[1])
 
@@ -314,17 +316,22 @@ def test_holes_that_trade_places_are_meshed_through_bridges_of_new_points(order:
 def test_pieces_wound_either_way_keep_the_area_they_enclose() -> None:
     # two pieces of one element (nonzero fill draws both whichever way each winds): one anticlockwise, one
     # clockwise that grows from a speck to the other's size; their in-betweens must enclose about the keys'
-    # interpolated area, not a signed sum in which the clockwise piece cancels the other
+    # interpolated area at the path's own s (the frame at t is the path at s, paced), not a signed sum in
+    # which the clockwise piece cancels the other
     big0, big1 = _square_ring((0.0, 0.0), 2.0, 4, clockwise=False), _square_ring((1.0, 0.0), 2.5, 4, clockwise=False)
     small0, small1 = _square_ring((6.0, 0.0), 0.01, 4, clockwise=True), _square_ring((7.0, 1.0), 2.5, 4, clockwise=True)
     frames = injective_contours([big0, small0], [big1, small1], [True, True], T)
+    paths = _paths_of([big0, small0], [big1, small1], [True, True])[2]
+    assert paths is not None
 
     def enclosed(ring: np.ndarray) -> float:
         x, y = ring[:, 0], ring[:, 1]
         return abs(0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
 
     for k, t in enumerate(T):
-        expected = (1 - t) * (enclosed(big0) + enclosed(small0)) + t * (enclosed(big1) + enclosed(small1))
+        s = paths._paced(float(t))
+        assert 0.0 < s < 1.0
+        expected = (1 - s) * (enclosed(big0) + enclosed(small0)) + s * (enclosed(big1) + enclosed(small1))
         assert enclosed(frames[0][k]) + enclosed(frames[1][k]) == pytest.approx(expected, rel=0.02), t
 
 
@@ -344,3 +351,27 @@ def test_outlines_touching_at_a_corner_are_meshed_and_come_apart_without_crossin
         assert not shapely.LinearRing(frames[0][k]).intersects(shapely.LinearRing(frames[1][k])), t
     start = injective_contours([a0, b0], [a1, b1], [True, True], [0.0])  # the key itself, touching as drawn
     assert np.array_equal(start[0][0], a0) and np.array_equal(start[1][0], b0)
+
+
+def _square(x0: float, x1: float, per_side: int, clockwise: bool) -> np.ndarray:
+    corners = np.array([(x0, x0), (x1, x0), (x1, x1), (x0, x1)])
+    steps = np.arange(per_side)[:, None] / per_side
+    ring = np.concatenate([a + steps * (b - a) for a, b in zip(corners, np.roll(corners, -1, axis=0))])
+    return ring[::-1].copy() if clockwise else ring
+
+
+def test_each_frame_step_changes_the_picture_alike() -> None:
+    """A thin square ring filling in to a square with a small hole: the solve's path moves fastest at the start
+    (the frame step after key 0 changed 4.2 × the median step before the paths were paced). Each step of a
+    24-frame clip now changes the drawn region (shapely's symmetric difference of consecutive frames) by at
+    most 2 × the median step, and the clip still starts and ends on its keys."""
+    shapely = pytest.importorskip("shapely", reason="shapely (the test extra) measures the change independently")
+    k0 = [_square(0.0, 10.0, 8, False), _square(1.0, 9.0, 8, True)]
+    k1 = [_square(0.0, 10.0, 8, False), _square(4.5, 5.5, 8, True)]
+    t = np.arange(25) / 24
+    outline, hole = injective_contours(k0, k1, [True, True], t)
+    drawn = [shapely.Polygon(outline[f], [hole[f]]) for f in range(len(t))]
+    assert all(p.is_valid for p in drawn)
+    change = np.array([drawn[f].symmetric_difference(drawn[f - 1]).area for f in range(1, len(t))])
+    assert change.max() <= 2.0 * np.median(change), np.round(change, 2)
+    assert np.array_equal(outline[0], k0[0]) and np.array_equal(hole[-1], k1[1])

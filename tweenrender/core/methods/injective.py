@@ -21,9 +21,12 @@ After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
    grid points from either key, whose weights are blended as in step 3 (the solve of step 3
    itself is drawn only for a mesh too large to descend);
 5. the contours are centred (their vertex mean follows the straight path) and scaled about it
-   to the keys' interpolated area, ``(1-t)·A0 + t·A1`` (closed contours' signed areas summed):
+   to the keys' interpolated area, ``(1-s)·A0 + s·A1`` (closed contours' signed areas summed):
    a similarity keeps them simple;
-6. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
+6. the path of steps 4–5 is paced: the frame at ``t`` is the path at the ``s`` that has come the
+   share ``t`` of its way, measured by the area the contours sweep (:meth:`_Paths._pace`): the solve
+   alone moves fastest out of the keys, a pop in the first and last frame steps;
+7. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
    mean, which moves on a straight line.
 
 Copies of a vertex (balancing by copies) are spread along their edges first
@@ -61,6 +64,9 @@ _cache: Remembered[tuple[Callable[[Array], list[Array]], str | None, "_Paths | N
 _EVALUATED = 32  # evaluations kept, by keys and t: a report asks for a method's sweep, and auto for the same
 _EVALUATED_BYTES = 32 << 20  # and at most this many bytes of them (a render's blocks of frames pass through)
 _FRAME_BYTES = 16 << 20  # a pair of keys' solved frames kept by their t, at most this many bytes
+_PACE = np.concatenate([[0.0, 1 / 512, 1 / 128, 1 / 32], np.arange(1, 16) / 16, [1 - 1 / 32, 1 - 1 / 128, 1 - 1 / 512, 1.0]])
+"""The s at which the solve's path is sampled to pace it (closer at the keys, where it moves fastest)."""
+_EVEN = 0.05  # the share of the pacing that is even in s: a stretch where the path stands still still takes time
 _evaluated: Remembered[list[Array]] = Remembered(_EVALUATED, lambda v: sum(f.nbytes for f in v), _EVALUATED_BYTES)
 
 
@@ -92,17 +98,52 @@ class _Paths:
         self.areas = (self._area(a0), self._area(a1))
         self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed))
         self._solved: dict[float, Array] = {}  # each t's frame before its turn, by t: the same for any other t
+        self._progress: Array | None = None
 
     def _frame(self, s: float) -> Array:
-        """The centred, unturned frame ``(N, 2)`` at ``s`` in [0, 1] (it depends on ``s`` alone, so it is kept:
-        a report asks for its measures' t, the sweep and the clip's frames, which share some t)."""
+        """The centred, unturned, unsized frame ``(N, 2)`` at ``s`` in [0, 1] (it depends on ``s`` alone, so it
+        is kept: a report asks for its measures' t, the sweep and the clip's frames, which share some t)."""
         found = self._solved.get(s)
         if found is None:
             kept = self.keeping(s)[:self.n]
-            found = self._sized(kept - kept.mean(axis=0), s)  # its vertex mean on the straight path
+            found = kept - kept.mean(axis=0)  # its vertex mean on the straight path
             if (len(self._solved) + 1) * found.nbytes <= _FRAME_BYTES:
                 self._solved[s] = found
         return found
+
+    def _pace(self) -> Array:
+        """The share of the segment's time at which the solve's path reaches each of ``_PACE (P,)``: ``(P,)``
+        from 0 to 1, each stretch between two samples taking the share of the contours' swept area
+        (:meth:`_swept`, each frame sized to its area) it holds, so each frame changes the picture alike
+        (``_EVEN`` of it by ``s`` itself)."""
+        if self._progress is None:
+            frames = [self._sized(self._frame(s), s) for s in _PACE.tolist()]
+            steps = np.array([self._swept(a, b) for a, b in zip(frames, frames[1:])])
+            total = float(steps.sum())
+            even = np.diff(_PACE)
+            spans = (1.0 - _EVEN) * steps / total + _EVEN * even if total > 0.0 and np.isfinite(total) else even
+            self._progress = np.concatenate([[0.0], np.cumsum(spans)]) / float(spans.sum())
+        return self._progress
+
+    def _swept(self, a: Array, b: Array) -> float:
+        """The area the contours' edges sweep from ``a (N, 2)`` to ``b (N, 2)``, each edge the parallelogram of
+        its mean direction and its ends' mean step: what a viewer sees change (a vertex sliding along its
+        contour sweeps none)."""
+        total = 0.0
+        for c, (start, end) in enumerate(zip(self.cuts, self.cuts[1:])):
+            pa, pb = a[start:end], b[start:end]
+            if self.closed[c]:
+                pa, pb = np.vstack([pa, pa[:1]]), np.vstack([pb, pb[:1]])
+            edge = 0.5 * (np.diff(pa, axis=0) + np.diff(pb, axis=0))
+            step = 0.5 * ((pb - pa)[1:] + (pb - pa)[:-1])
+            total += float(np.abs(edge[:, 0] * step[:, 1] - edge[:, 1] * step[:, 0]).sum())
+        return total
+
+    def _paced(self, t: float) -> float:
+        """The ``s`` at which the solve's path has come the share ``t`` of its way (:meth:`_pace`)."""
+        if t <= 0.0 or t >= 1.0:
+            return t
+        return float(np.interp(t, self._pace(), _PACE))
 
     def _area(self, points: Array) -> float:
         """The area the closed contours of ``points (N, 2)`` enclose, holes taken away (each contour's area
@@ -122,7 +163,8 @@ class _Paths:
     def __call__(self, t: Array) -> Array:
         out = np.empty((len(t), self.n, 2))
         for f, s in enumerate(np.clip(t, 0.0, 1.0).tolist()):
-            out[f] = self._frame(s)
+            paced = self._paced(s)
+            out[f] = self._sized(self._frame(paced), paced)
         center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
         return self.scale * (center[:, None, :] + rotate(out, (t * self.phi)[:, None]))
 

@@ -60,7 +60,7 @@ Array = NDArray[np.float64]
 _CACHE = 256  # pairs of keys whose mesh is kept (a drawing's elements are evaluated block by block)
 _TOUCH = 1e-6  # a vertex two contours share is moved this share of the key's size into one of them
 _RIGID = 0.05  # a key is the other turned when, best turned onto it, it is off by this share of its size
-_cache: Remembered[tuple[Callable[[Array], list[Array]], str | None, "_Paths | None"]] = Remembered(_CACHE)
+_cache: Remembered[tuple[Callable[..., list[Array]], str | None, "_Paths | None"]] = Remembered(_CACHE)
 _EVALUATED = 32  # evaluations kept, by keys and t: a report asks for a method's sweep, and auto for the same
 _EVALUATED_BYTES = 32 << 20  # and at most this many bytes of them (a render's blocks of frames pass through)
 _FRAME_BYTES = 16 << 20  # a pair of keys' solved frames kept by their t, at most this many bytes
@@ -160,11 +160,11 @@ class _Paths:
         middle = x.mean(axis=0)
         return middle + math.sqrt(goal / now) * (x - middle)
 
-    def __call__(self, t: Array) -> Array:
+    def __call__(self, t: Array, paced: bool = True) -> Array:
         out = np.empty((len(t), self.n, 2))
         for f, s in enumerate(np.clip(t, 0.0, 1.0).tolist()):
-            paced = self._paced(s)
-            out[f] = self._sized(self._frame(paced), paced)
+            at = self._paced(s) if paced else s
+            out[f] = self._sized(self._frame(at), at)
         center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
         return self.scale * (center[:, None, :] + rotate(out, (t * self.phi)[:, None]))
 
@@ -180,25 +180,25 @@ def _rigid_turn(a: Array, b: Array) -> float:
 
 
 def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]
-           ) -> tuple[Callable[[Array], list[Array]], str | None, _Paths | None]:
+           ) -> tuple[Callable[..., list[Array]], str | None, _Paths | None]:
     """The paths of every contour, those that cannot be in the mesh on the rigid paths of all; why
     the rigid paths were taken for all (None where the mesh holds every contour it can); and the mesh's
     paths (None where there is no mesh)."""
     meshed = [_meshable(k0[a:b], k1[a:b], c) for a, b, c in zip(cuts, cuts[1:], closed)]
     if not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
-        return (lambda t: _split(rigid(k0, k1, t), cuts)), "the keys are not finite", None
+        return (lambda t, paced=True: _split(rigid(k0, k1, t), cuts)), "the keys are not finite", None
     if not any(meshed):
-        return (lambda t: _split(rigid(k0, k1, t), cuts)), "no contour has three vertices (an open one two)", None
+        return (lambda t, paced=True: _split(rigid(k0, k1, t), cuts)), "no contour has three vertices (an open one two)", None
     picked = [c for c in range(len(meshed)) if meshed[c]]
     m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
     try:
         paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
     except CompatibleError as error:
-        return (lambda t: _split(rigid(k0, k1, t), cuts)), str(error), None
+        return (lambda t, paced=True: _split(rigid(k0, k1, t), cuts)), str(error), None
     every = list(range(len(meshed)))
 
-    def evaluate(t: Array) -> list[Array]:
-        found = dict(zip(picked, _split(paths(t), mcuts)))
+    def evaluate(t: Array, paced: bool = True) -> list[Array]:
+        found = dict(zip(picked, _split(paths(t, paced), mcuts)))
         if len(found) == len(every):
             return [found[c] for c in every]
         still = _split(rigid(k0, k1, t), cuts)
@@ -297,9 +297,12 @@ def _split(frames: Array, cuts: Sequence[int]) -> list[Array]:
     return [frames[:, a:b] for a, b in zip(cuts, cuts[1:])]
 
 
-def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool], t: ArrayLike) -> list[Array]:
+def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool], t: ArrayLike,
+                       paced: bool = True) -> list[Array]:
     """Injective inbetweens of a shape's corresponding contours (``k0s[i]``, ``k1s[i]`` both
-    ``(L_i, 2)``; ``closed[i]``), all in one mesh, at ``t (T,)``: one ``(T, L_i, 2)`` per contour.
+    ``(L_i, 2)``; ``closed[i]``), all in one mesh, at ``t (T,)``: one ``(T, L_i, 2)`` per contour. Without
+    ``paced``, the path's own states at ``s = t`` (step 6 left out): what ``auto`` measures a path by, so that
+    its choice depends on the path and not on how it is timed.
 
     The mesh of a set of keys is cached, so successive blocks of frames of one segment pay it once; the
     inbetweens at a set of ``t`` are remembered too (``auto`` choosing injective paths, and a report's
@@ -307,10 +310,10 @@ def injective_contours(k0s: Sequence[Array], k1s: Sequence[Array], closed: Seque
     """
     paths, _, _ = _paths_of(k0s, k1s, closed)
     t = as_times(t)
-    key = _key(k0s, k1s, closed) + b"|" + np.ascontiguousarray(t, dtype=np.float64).tobytes()
+    key = _key(k0s, k1s, closed) + b"|" + np.ascontiguousarray(t, dtype=np.float64).tobytes() + bytes([paced])
 
     def evaluated() -> list[Array]:
-        found = paths(t)
+        found = paths(t, paced)
         for frames, a, b in zip(found, k0s, k1s):
             frames[t == 0.0] = a
             frames[t == 1.0] = b
@@ -367,7 +370,7 @@ def _key(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> 
 
 
 def _paths_of(k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
-              ) -> tuple[Callable[[Array], list[Array]], str | None, _Paths | None]:
+              ) -> tuple[Callable[..., list[Array]], str | None, _Paths | None]:
     k0 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k0s])
     k1 = np.concatenate([np.asarray(k, dtype=np.float64).reshape(-1, 2) for k in k1s])
     cuts = np.concatenate([[0], np.cumsum([len(k) for k in k0s])]).astype(int).tolist()

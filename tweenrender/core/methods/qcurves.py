@@ -312,7 +312,7 @@ def candidate_paths(method: str, k0s: Sequence[Array], k1s: Sequence[Array], clo
     """One ``(T, L_i, 2)`` per contour: the shape's nonlinear paths as one point set, auto's straight
     paths contour by contour (open strokes straight), or the injective paths of all in one mesh."""
     if method == "injective":
-        return injective_contours(k0s, k1s, closed, t)
+        return injective_contours(k0s, k1s, closed, t, paced=False)  # the path's states, however it is timed
     if method == "nonlinear":
         cuts = np.cumsum([len(k) for k in k0s])[:-1]
         return np.split(paths.nonlinear(np.concatenate(k0s), np.concatenate(k1s), t), cuts, axis=1)

@@ -327,7 +327,7 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     every1 = k1s + [k1 for _, _, k1 in held]
     closed = shut + [pairs[i].closed for i, _, _ in held]
 
-    held_frames = injective_contours(every0, every1, closed, QUALITY_T)
+    held_frames = injective_contours(every0, every1, closed, QUALITY_T, paced=False)  # as auto measures paths
     second = candidate_quality(held_frames, every0, every1, closed)
     rings = [k for k, c in enumerate(closed) if c]
     uneven = _uneven([held_frames[k] for k in rings], [every0[k] for k in rings], [every1[k] for k in rings])

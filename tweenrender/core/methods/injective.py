@@ -66,7 +66,7 @@ _EVALUATED_BYTES = 32 << 20  # and at most this many bytes of them (a render's b
 _FRAME_BYTES = 16 << 20  # a pair of keys' solved frames kept by their t, at most this many bytes
 _PACE = np.concatenate([[0.0, 1 / 512, 1 / 128, 1 / 32], np.arange(1, 16) / 16, [1 - 1 / 32, 1 - 1 / 128, 1 - 1 / 512, 1.0]])
 """The s at which the solve's path is sampled to pace it (closer at the keys, where it moves fastest)."""
-_EVEN = 0.05  # the share of the pacing that is even in s: a stretch where the path stands still still takes time
+_EVEN = 0.05  # the share of the pacing that is even in s: a stretch where the path stands still takes time too
 _evaluated: Remembered[list[Array]] = Remembered(_EVALUATED, lambda v: sum(f.nbytes for f in v), _EVALUATED_BYTES)
 
 
@@ -185,24 +185,28 @@ def _build(k0: Array, k1: Array, cuts: Sequence[int], closed: Sequence[bool]
     the rigid paths were taken for all (None where the mesh holds every contour it can); and the mesh's
     paths (None where there is no mesh)."""
     meshed = [_meshable(k0[a:b], k1[a:b], c) for a, b, c in zip(cuts, cuts[1:], closed)]
+
+    def all_rigid(t: Array, paced: bool = True) -> list[Array]:  # the rigid paths of every contour
+        return _split(rigid(k0, k1, t), cuts)
+
     if not (np.all(np.isfinite(k0)) and np.all(np.isfinite(k1))):
-        return (lambda t, paced=True: _split(rigid(k0, k1, t), cuts)), "the keys are not finite", None
+        return all_rigid, "the keys are not finite", None
     if not any(meshed):
-        return (lambda t, paced=True: _split(rigid(k0, k1, t), cuts)), "no contour has three vertices (an open one two)", None
+        return all_rigid, "no contour has three vertices (an open one two)", None
     picked = [c for c in range(len(meshed)) if meshed[c]]
     m0, m1, mcuts = _meshed_keys(k0, k1, cuts, closed, picked)
     try:
         paths = _Paths(m0, m1, mcuts, [closed[c] for c in picked])
     except CompatibleError as error:
-        return (lambda t, paced=True: _split(rigid(k0, k1, t), cuts)), str(error), None
+        return all_rigid, str(error), None
     every = list(range(len(meshed)))
 
     def evaluate(t: Array, paced: bool = True) -> list[Array]:
         found = dict(zip(picked, _split(paths(t, paced), mcuts)))
         if len(found) == len(every):
             return [found[c] for c in every]
-        still = _split(rigid(k0, k1, t), cuts)
-        return [found.get(c, still[c]) for c in every]
+        rigidly = all_rigid(t)
+        return [found.get(c, rigidly[c]) for c in every]
 
     return evaluate, None, paths
 

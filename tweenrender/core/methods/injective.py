@@ -49,7 +49,7 @@ from ..balance import coincident_runs, spread
 from ..contours import inside, roles
 from .bounded_distortion import ShapeKeepingSolve, material_triangles
 from .compatible import CompatibleError, CompatibleMesh, compatible_triangulation
-from ..geometry import area, best_fit_rotation, centroid, rotate
+from ..geometry import area, best_fit_rotation, centroid, cross, rotate
 from .paths import as_times, rigid
 from ..memo import Remembered
 
@@ -136,7 +136,7 @@ class _Paths:
                 pa, pb = np.vstack([pa, pa[:1]]), np.vstack([pb, pb[:1]])
             edge = 0.5 * (np.diff(pa, axis=0) + np.diff(pb, axis=0))
             step = 0.5 * ((pb - pa)[1:] + (pb - pa)[:-1])
-            total += float(np.abs(edge[:, 0] * step[:, 1] - edge[:, 1] * step[:, 0]).sum())
+            total += float(np.abs(cross(edge, step)).sum())
         return total
 
     def _paced(self, t: float) -> float:

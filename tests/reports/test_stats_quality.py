@@ -146,3 +146,38 @@ def test_keys_that_already_cross_do_not_tangle_and_injective_says_why_it_draws_r
     assert "No injective morph: " in stats_text(stats)
     square = stats_dict(tr.load_scene(SCENES / "square.toml"), [0.5], ["injective"])
     assert square["shapes"][0]["methods"]["injective"]["fallback"] is None
+
+
+def test_pops_measure_each_shapes_frames_once_for_the_methods_that_draw_them_alike(monkeypatch: pytest.MonkeyPatch) -> None:
+    # a face becoming a circled check: most of the face's elements have no partner and grow or shrink alike under
+    # every method; each distinct run of frames of a shape is measured once (counted), and the pops are those of
+    # measuring every method apart
+    import tweenrender.reports.stats as stats_module
+    from tweenrender.core.coverage import Grid
+    from tweenrender.core.pops import changes, pops
+    from tweenrender.core.view import Viewport
+    from tweenrender.plan.job import scene_view, total_frames
+    from tweenrender.reports.stats import POP_CELLS, STATS_METHODS
+
+    scene = _pair("twemoji/1f600", "tabler/circle-check")
+    tracks = tracks_of(scene)
+    view = scene_view(scene, tracks, (None,))
+    grid = Grid.over(view, max(view[2] - view[0], view[3] - view[1]) / POP_CELLS)
+    pixel = 1.0 / Viewport(view, *scene.size).scale
+    times = np.arange(total_frames(scene)) / scene.fps
+    apart: dict[str, list[int]] = {}
+    distinct: set[tuple[int, bytes]] = set()
+    for method in STATS_METHODS:
+        change = np.zeros(len(times))
+        for k, (track, shape) in enumerate(zip(tracks, scene.shapes)):
+            drawn = track.at(times, method)
+            rules = [(at.key.fill_rule if at.key is not None else None) or shape.fill_rule for at in drawn]
+            change += changes(grid, drawn, rules, 1.0 if shape.stroke_scales else pixel)
+            distinct.add((k, b"".join(np.ascontiguousarray(c).tobytes() for at in drawn for c in at.contours)
+                          + repr([(at.visible, at.fade, at.sides, at.paint, at.widths, at.reversed) for at in drawn]).encode()))
+        apart[method] = pops(change)
+    measured = []
+    monkeypatch.setattr(stats_module, "changes", lambda *a, **k: measured.append(1) or changes(*a, **k))
+    found = stats_dict(scene, [0.5])
+    assert found["pops"] == apart
+    assert len(measured) == len(distinct) < len(STATS_METHODS) * len(scene.shapes)

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ..core.coverage import Grid
 from ..core.measures import SWEEP, report
@@ -23,6 +25,8 @@ from ..plan.job import scene_view, total_frames
 from .segments import Entry, SegmentPaths, entries, nothing_measured
 
 __all__ = ["stats_dict", "stats_text", "crossing_runs", "STATS_METHODS", "POP_CELLS"]
+
+Array = NDArray[np.float64]
 
 POP_CELLS = 128
 """Cells along the view's larger side of the grid ``pops`` compares frames on."""
@@ -78,7 +82,8 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
     out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
     if not shapes:
         out["note"] = nothing_measured(scene)
-    out["pops"] = {m: _pops(scene, tracks, view, m) for m in (every or STATS_METHODS)}
+    measured_changes: dict[tuple[int, bytes], Array] = {}
+    out["pops"] = {m: _pops(scene, tracks, view, m, measured_changes) for m in (every or STATS_METHODS)}
     return out
 
 
@@ -134,17 +139,39 @@ def _area(at: ShapeAt, shape: Shape) -> Area:
             _rule(at, shape))
 
 
-def _pops(scene: Scene, tracks: Sequence[Track], view: tuple[float, float, float, float], method: str) -> list[int]:
+def _pops(scene: Scene, tracks: Sequence[Track], view: tuple[float, float, float, float], method: str,
+          measured: dict[tuple[int, bytes], Array]) -> list[int]:
     """The frames of the clip that pop under ``method`` (:mod:`~tweenrender.core.pops`), on a grid of
-    :data:`POP_CELLS` cells along the view's larger side."""
+    :data:`POP_CELLS` cells along the view's larger side. A shape's change is worked out once for frames drawn
+    alike (``measured``, by shape and :func:`_frames_digest`, shared by the methods: a shape that has no partner
+    grows, shrinks or fades alike under every method)."""
     grid = Grid.over(view, max(view[2] - view[0], view[3] - view[1]) / POP_CELLS)
     pixel = 1.0 / Viewport(view, *scene.size).scale  # a stroke width in pixels, in scene units
     times = np.arange(total_frames(scene)) / scene.fps
     change = np.zeros(len(times))
-    for track, shape in zip(tracks, scene.shapes):
+    for k, (track, shape) in enumerate(zip(tracks, scene.shapes)):
         drawn = track.at(times, method)
-        change += changes(grid, drawn, [_rule(at, shape) for at in drawn], 1.0 if shape.stroke_scales else pixel)
+        rules = [_rule(at, shape) for at in drawn]
+        key = (k, _frames_digest(drawn, rules))
+        if key not in measured:
+            measured[key] = changes(grid, drawn, rules, 1.0 if shape.stroke_scales else pixel)
+        change += measured[key]
     return pops(change)
+
+
+def _frames_digest(drawn: Sequence[ShapeAt], rules: Sequence[str]) -> bytes:
+    """A digest of everything :func:`~tweenrender.core.pops.inks` reads of a shape's frames ``drawn``, drawn with
+    fill ``rules``."""
+    digest = hashlib.blake2b(digest_size=32)
+    for at, rule in zip(drawn, rules):
+        paint = at.paint
+        looks = (paint.opacity, paint.gradient is not None, paint.fill and paint.fill[3], paint.stroke and paint.stroke[3],
+                 paint.stroke_width)
+        digest.update(repr((at.visible, at.fade, at.sides, at.closed, at.reversed, at.widths, looks, rule,
+                            [c.shape for c in at.contours])).encode())
+        for c in at.contours:
+            digest.update(np.ascontiguousarray(c, dtype=np.float64).tobytes())
+    return digest.digest()
 
 
 def _as_drawn(entry: Entry, method: str, paths: SegmentPaths) -> Callable[[Any], Any]:

@@ -16,6 +16,7 @@ of one appearing, vanishing or jumping in one frame changes it by its whole area
 
 from __future__ import annotations
 
+import hashlib
 from typing import Sequence
 
 import numpy as np
@@ -24,7 +25,7 @@ from numpy.typing import NDArray
 from .coverage import Grid, bands, by_rule, winding
 from .timing.timeline import ShapeAt
 
-__all__ = ["inks", "changes", "pops", "POP_FACTOR", "POP_FLOOR"]
+__all__ = ["inks", "changes", "frames_digest", "pops", "POP_FACTOR", "POP_FLOOR"]
 
 Array = NDArray[np.float64]
 
@@ -76,6 +77,21 @@ def inks(grid: Grid, frames: Sequence[ShapeAt], rules: Sequence[str], width_scal
     for k, (f, weight, _, _) in enumerate(pictures):
         out[f] += weight * cover[k]
     return out
+
+
+def frames_digest(frames: Sequence[ShapeAt], rules: Sequence[str]) -> bytes:
+    """A digest of everything :func:`inks` reads of a shape's ``frames``, drawn with fill ``rules``: frames with
+    one digest have one ink, and so one :func:`changes`."""
+    digest = hashlib.blake2b(digest_size=32)
+    for at, rule in zip(frames, rules):
+        paint = at.paint
+        looks = (paint.opacity, paint.gradient is not None, paint.fill and paint.fill[3], paint.stroke and paint.stroke[3],
+                 paint.stroke_width)
+        digest.update(repr((at.visible, at.fade, at.sides, at.closed, at.reversed, at.widths, looks, rule,
+                            [c.shape for c in at.contours])).encode())
+        for c in at.contours:
+            digest.update(np.ascontiguousarray(c, dtype=np.float64).tobytes())
+    return digest.digest()
 
 
 def changes(grid: Grid, frames: Sequence[ShapeAt], rules: Sequence[str], width_scale: float = 1.0,

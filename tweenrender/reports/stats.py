@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import hashlib
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
@@ -14,7 +13,7 @@ from ..core.measures import SWEEP, report
 from ..core.methods.intrinsic import closure_tweak
 from ..core.methods.qcurves import auto_choice
 from ..core.methods.registry import REGISTRY, measured_methods
-from ..core.pops import changes, pops
+from ..core.pops import changes, frames_digest, pops
 from ..core.stray import STRAY_REACH, Area, stray_shares
 from ..core.tangles import contact_times
 from ..core.timing.timeline import (ShapeAt, Track, evaluate_segment, injective_fallback_of, segment_choice,
@@ -143,8 +142,8 @@ def _pops(scene: Scene, tracks: Sequence[Track], view: tuple[float, float, float
           measured: dict[tuple[int, bytes], Array]) -> list[int]:
     """The frames of the clip that pop under ``method`` (:mod:`~tweenrender.core.pops`), on a grid of
     :data:`POP_CELLS` cells along the view's larger side. A shape's change is worked out once for frames drawn
-    alike (``measured``, by shape and :func:`_frames_digest`, shared by the methods: a shape that has no partner
-    grows, shrinks or fades alike under every method)."""
+    alike (``measured``, by shape and :func:`~tweenrender.core.pops.frames_digest`, shared by the methods: a
+    shape that has no partner grows, shrinks or fades alike under every method)."""
     grid = Grid.over(view, max(view[2] - view[0], view[3] - view[1]) / POP_CELLS)
     pixel = 1.0 / Viewport(view, *scene.size).scale  # a stroke width in pixels, in scene units
     times = np.arange(total_frames(scene)) / scene.fps
@@ -152,26 +151,11 @@ def _pops(scene: Scene, tracks: Sequence[Track], view: tuple[float, float, float
     for k, (track, shape) in enumerate(zip(tracks, scene.shapes)):
         drawn = track.at(times, method)
         rules = [_rule(at, shape) for at in drawn]
-        key = (k, _frames_digest(drawn, rules))
+        key = (k, frames_digest(drawn, rules))
         if key not in measured:
             measured[key] = changes(grid, drawn, rules, 1.0 if shape.stroke_scales else pixel)
         change += measured[key]
     return pops(change)
-
-
-def _frames_digest(drawn: Sequence[ShapeAt], rules: Sequence[str]) -> bytes:
-    """A digest of everything :func:`~tweenrender.core.pops.inks` reads of a shape's frames ``drawn``, drawn with
-    fill ``rules``."""
-    digest = hashlib.blake2b(digest_size=32)
-    for at, rule in zip(drawn, rules):
-        paint = at.paint
-        looks = (paint.opacity, paint.gradient is not None, paint.fill and paint.fill[3], paint.stroke and paint.stroke[3],
-                 paint.stroke_width)
-        digest.update(repr((at.visible, at.fade, at.sides, at.closed, at.reversed, at.widths, looks, rule,
-                            [c.shape for c in at.contours])).encode())
-        for c in at.contours:
-            digest.update(np.ascontiguousarray(c, dtype=np.float64).tobytes())
-    return digest.digest()
 
 
 def _as_drawn(entry: Entry, method: str, paths: SegmentPaths) -> Callable[[Any], Any]:

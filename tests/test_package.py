@@ -211,3 +211,15 @@ def test_nothing_below_the_cli_raises_usage_errors() -> None:
             continue
         spec = importlib.util.find_spec(name)
         assert "UsageError" not in Path(spec.origin).read_text(), f"{name} mentions UsageError"
+
+
+def test_the_installed_metadata_states_the_licence_as_an_spdx_expression_with_its_text() -> None:
+    """PEP 639: ``License-Expression`` and the file it names (an old-style licence table warns on every
+    build with current setuptools)."""
+    from importlib.metadata import distribution
+
+    meta = distribution("tweenrender").metadata
+    assert meta["License-Expression"] == "MIT"
+    assert meta.get_all("License-File") == ["LICENSE"]
+    text = (PACKAGE.parent / "LICENSE").read_text(encoding="utf-8")
+    assert text.startswith("MIT License") and "WITHOUT WARRANTY OF ANY KIND" in text

@@ -224,13 +224,14 @@ def default_suffix(fmt: str | None = None) -> str:
 
 
 def format_names(*, vector: bool | None = None, alpha: bool | None = None,
-                 loop: bool | None = None) -> tuple[str, ...]:
+                 loop: bool | None = None, draft: bool | None = None) -> tuple[str, ...]:
     """The output formats a user may ask for, in the format table's order: ``vector`` keeps those of paths
     (True) or of pictures (False), ``alpha`` those that keep a transparent background (True) or not,
-    ``loop`` those whose file can say it loops (True) or not."""
+    ``loop`` those whose file can say it loops (True) or not, ``draft`` those with quicker encoder
+    settings (True) or not."""
     from .encode.formats import names
 
-    return names(vector=vector, alpha=alpha, loop=loop)
+    return names(vector=vector, alpha=alpha, loop=loop, draft=draft)
 
 
 def format_loop(fmt: str) -> str | None:

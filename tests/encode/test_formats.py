@@ -14,7 +14,7 @@ from tweenrender.encode.sinks import encoder_options
 from tweenrender.encode.targets import check_output_name
 from tweenrender.errors import OptionError
 
-SINK_ARGUMENTS = ["fmt", "target", "width", "height", "fps", "frames", "pixel_format", "alpha"]
+SINK_ARGUMENTS = ["fmt", "target", "width", "height", "fps", "frames", "pixel_format", "alpha", "draft"]
 
 
 @pytest.mark.parametrize("fmt", sorted(TABLE))

@@ -175,7 +175,7 @@ def test_the_encoder_cost_is_measured_on_the_jobs_own_frames(monkeypatch: pytest
 
     seen: list[list[np.ndarray]] = []
     monkeypatch.setattr(encoder_cost, "encoder_seconds",
-                        lambda fmt, pictures, fps, alpha=False: seen.append(list(pictures)) or 0.0125)
+                        lambda fmt, pictures, fps, alpha=False, draft=False: seen.append(list(pictures)) or 0.0125)
     job = RenderJob(parse_scene(SQUARE, "square.toml"), size=(64, 48))
     cost = workers.measure_cost(job, "mp4")
     assert cost.encode == 0.0125 and len(seen) == 1 and len(seen[0]) == 3

@@ -107,3 +107,29 @@ def test_a_report_of_every_method_can_be_written_again(tmp_path: Path) -> None:
         done = run_main("report", SCENES / "square.toml", "--compare", "intrinsic-length", "-o", folder, "-q")
         assert done.returncode == 0, done.stderr
     assert sorted(p.name for p in folder.glob("*.webm")) == ["intrinsic-length.webm"]
+
+
+def test_the_reports_videos_are_encoded_as_drafts(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A report's videos are for a look side by side: each VP9 encode runs at the encoder's quickest settings
+    (the format table's draft, whose frames tests/encode/test_video.py decodes), a render's at its usual."""
+    import tweenrender as tr
+    from tweenrender.encode import sinks
+    from tweenrender.encode.formats import TABLE
+
+    started: list[list[str]] = []
+    real = sinks.start_program
+
+    def recorded(command: list[str], *args: object, **named: object) -> object:
+        started.append(list(command))
+        return real(command, *args, **named)
+
+    monkeypatch.setattr(sinks, "start_program", recorded)
+    scene = tr.load_scene(SCENES / "square.toml")
+    tr.report(scene, tmp_path / "square-report", compare=["linear", "rigid"])
+    tr.write(scene, tmp_path / "square.webm", workers=1)
+    encodes = [c for c in started if "libvpx-vp9" in c]
+    assert len(encodes) == 3
+    for command, draft in zip(encodes, (True, True, False)):
+        for option, value in TABLE["webm"].draft:
+            quick = command[command.index(option) + 1] == value
+            assert quick == draft, (option, command)

@@ -39,6 +39,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--loop", action="store_true",
                    help=f"{listing(looping)} only: the file plays over and over ("
                         + "; ".join(f"{n}: {format_loop(n)}" for n in looping) + ")")
+    p.add_argument("--draft", action="store_true",
+                   help=f"{listing(format_names(draft=True))} only: encode at the encoder's quickest settings, "
+                        "for a quick look (the same quality asked for, a larger file)")
     p.add_argument("--size", type=size, metavar="WxH", help="size of the picture (of each panel)")
     p.add_argument("--fps", type=fps, metavar="N")
     p.add_argument("--frames", metavar="A:B", help="render frames A to B-1 only")

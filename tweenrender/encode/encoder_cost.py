@@ -19,9 +19,11 @@ from numpy.typing import NDArray
 __all__ = ["encoder_seconds"]
 
 
-def encoder_seconds(fmt: str, pictures: Sequence[NDArray[np.uint8]], fps: float, alpha: bool = False) -> float:
+def encoder_seconds(fmt: str, pictures: Sequence[NDArray[np.uint8]], fps: float, alpha: bool = False,
+                    draft: bool = False) -> float:
     """CPU seconds ffmpeg spends per frame encoding ``pictures`` (straight RGBA ``(H, W, 4)``, at least
-    one) as ``fmt``, the way a render sends them (yuv420p planes for an opaque MP4 or WebM)."""
+    one) as ``fmt``, the way a render sends them (yuv420p planes for an opaque MP4 or WebM; with ``draft``,
+    at the encoder's quickest settings)."""
     from .lifeline import start_program
     from .sinks import ffmpeg_command, sends_yuv420
     from .yuv420 import Yuv420
@@ -33,7 +35,7 @@ def encoder_seconds(fmt: str, pictures: Sequence[NDArray[np.uint8]], fps: float,
     with scratch_folder("probe") as folder:
         output = os.path.join(folder, f"probe.{fmt}")
         command = ffmpeg_command(fmt, width, height, fps, "pipe:0", output,
-                                 "rgba" if planes is None else "yuv420p", alpha)
+                                 "rgba" if planes is None else "yuv420p", alpha, draft)
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         process = start_program(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
                                 stderr=subprocess.DEVNULL, start_new_session=True)

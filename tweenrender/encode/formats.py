@@ -46,12 +46,14 @@ class Format:
     container's options that a join by stream copy repeats; ``yuv420`` whether opaque frames go to
     ffmpeg as yuv420p planes made here; ``vector`` whether the file holds the animated paths rather than
     pictures (a player draws them: any size, any background); ``loop`` what ``--loop`` makes of the file
-    (``None``: it cannot say whether it loops; its player decides).
+    (``None``: it cannot say whether it loops; its player decides); ``draft`` the encoder's quickest
+    settings, each an option and the value it takes in ``ffmpeg`` for ``--draft`` (the same quality asked
+    for, a larger file; empty: the format encodes as usual).
 
     ``writer``, ``reader`` and ``tuning`` name a function of this package's modules as
     ``"module.name"``, imported where it is used (:func:`writer`, :func:`reader`, :func:`tuning`):
-    ``writer`` makes the output, for pictures a sink taking ``(fmt, target, width, height, fps,
-    frames, pixel_format, alpha)`` (:func:`.sinks.open_sink`), for a vector format a function writing
+    ``writer`` makes the output, for pictures a sink taking ``(fmt, target, width, height, fps, frames,
+    pixel_format, alpha, draft)`` (:func:`.sinks.open_sink`), for a vector format a function writing
     a :class:`~.vector_data.VectorClip` to a target; ``reader`` gives a written file's frame count and
     size, to check it, from its own ISO base media boxes (MP4, QuickTime: :mod:`.media_boxes`),
     Matroska elements (WebM: :mod:`.webm_elements`), GIF blocks (:mod:`.gif_blocks`) or one more
@@ -77,6 +79,7 @@ class Format:
     listed: bool = True  # False: an internal format (a GIF's lossless parts), never asked for by name
     vector: bool = False  # the paths themselves, keyframed (Lottie, animated SVG): no frames are drawn
     loop: str | None = None  # what --loop does to the file; None: the file cannot say
+    draft: tuple[tuple[str, str], ...] = ()  # (option, value) for a quicker encode: --draft
 
     @property
     def keeps_alpha(self) -> bool:
@@ -92,11 +95,14 @@ class Format:
         """The name of the ffmpeg muxer ``ffmpeg`` writes with (its ``-f``), if any."""
         return self.ffmpeg[self.ffmpeg.index("-f") + 1] if "-f" in self.ffmpeg else None
 
-    def options(self, alpha: bool = False) -> list[str]:
-        """ffmpeg's output options; with ``alpha``, those that keep transparency."""
+    def options(self, alpha: bool = False, draft: bool = False) -> list[str]:
+        """ffmpeg's output options; with ``alpha``, those that keep transparency; with ``draft``, the
+        encoder's quickest (:attr:`draft`)."""
         options = list(self.ffmpeg)
         for old, new in (self.alpha or ()) if alpha else ():
             options = [option.replace(old, new) for option in options]
+        for option, value in self.draft if draft else ():
+            options[options.index(option) + 1] = value
         return options
 
     def size_problem(self, width: int, height: int) -> str | None:
@@ -118,12 +124,13 @@ TABLE: dict[str, Format] = {f.name: f for f in (
            ("-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p",
             "-movflags", "+faststart", "-f", "mp4"),
            max_side=16384, even=True, join="copy", chunked=True, container=("-movflags", "+faststart"),
-           yuv420=True, reader="media_boxes.video_track", tuning="sinks.x264_tuning"),
+           yuv420=True, reader="media_boxes.video_track", tuning="sinks.x264_tuning",
+           draft=(("-preset", "veryfast"),)),
     Format("webm", "VP9", ".webm", _VIDEO,
            ("-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "32", "-pix_fmt", "yuv420p",
             "-deadline", "good", "-cpu-used", "4", "-row-mt", "1", "-f", "webm"),
            alpha=(("yuv420p", "yuva420p"),), max_side=65536, join="copy", chunked=True, yuv420=True,
-           reader="webm_elements.video_track"),
+           reader="webm_elements.video_track", draft=(("-deadline", "realtime"), ("-cpu-used", "8"))),
     Format("mov", "ProRes 4444", ".mov", _VIDEO,
            ("-c:v", "prores_ks", "-profile:v", "4444", "-vendor", "apl0", "-pix_fmt", "yuv444p10le", "-f", "mov"),
            alpha=(("yuv444p10le", "yuva444p10le"),), max_side=65536, reader="media_boxes.video_track"),
@@ -226,14 +233,17 @@ def is_vector(fmt: str) -> bool:
     return found is not None and found.vector
 
 
-def names(*, vector: bool | None = None, alpha: bool | None = None, loop: bool | None = None) -> tuple[str, ...]:
+def names(*, vector: bool | None = None, alpha: bool | None = None, loop: bool | None = None,
+          draft: bool | None = None) -> tuple[str, ...]:
     """The formats a user may ask for, in the order help texts list them; ``vector`` keeps only the formats
     of paths (True) or of pictures (False), ``alpha`` only those that keep a transparent background (True)
-    or cannot (False), ``loop`` only those whose file can say it loops (True) or cannot (False)."""
+    or cannot (False), ``loop`` only those whose file can say it loops (True) or cannot (False), ``draft``
+    only those with quicker encoder settings (True) or without (False)."""
     return tuple(name for name in FORMATS
                  if (vector is None or TABLE[name].vector == vector)
                  and (alpha is None or TABLE[name].keeps_alpha == alpha)
-                 and (loop is None or (TABLE[name].loop is not None) == loop))
+                 and (loop is None or (TABLE[name].loop is not None) == loop)
+                 and (draft is None or bool(TABLE[name].draft) == draft))
 
 
 def check_loop(fmt: str, loop: bool) -> None:
@@ -242,6 +252,13 @@ def check_loop(fmt: str, loop: bool) -> None:
         can = listing([f"{n} ({TABLE[n].suffix})" for n in names(loop=True)], "or")
         raise OptionError(f"{fmt} ({TABLE[fmt].codec}) cannot say whether it loops (its player decides); "
                           f"write {can}", "loop")
+
+
+def check_draft(fmt: str, draft: bool) -> None:
+    """Refuse ``draft`` for a format without quicker encoder settings, saying which have them."""
+    if draft and not TABLE[fmt].draft:
+        can = listing([f"{n} ({TABLE[n].suffix})" for n in names(draft=True)], "or")
+        raise OptionError(f"{fmt} ({TABLE[fmt].codec}) has no quicker encoder settings; write {can}", "draft")
 
 
 def suffixes(*, vector: bool | None = None) -> tuple[str, ...]:

@@ -58,13 +58,13 @@ class Sink(Protocol):
 
 
 def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
-              pixel_format: str = "rgba", alpha: bool = False) -> Sink:
+              pixel_format: str = "rgba", alpha: bool = False, draft: bool = False) -> Sink:
     """A sink for ``frames`` frames of ``width × height`` at ``fps`` into ``target``.
 
     ``pixel_format`` is the layout of the arrays given to ``write`` (video
     sinks; PNG frames are always straight RGBA). ``alpha`` keeps transparency
-    (formats that can, :attr:`.formats.Format.keeps_alpha`). The sink is the format's
-    :attr:`~.formats.Format.writer`.
+    (formats that can, :attr:`.formats.Format.keeps_alpha`); ``draft`` encodes with the encoder's
+    quickest settings (:attr:`.formats.Format.draft`). The sink is the format's :attr:`~.formats.Format.writer`.
     """
     if fmt not in TABLE:
         lookup(fmt)  # refused, naming the formats there are
@@ -75,7 +75,7 @@ def open_sink(fmt: str, target: Path, width: int, height: int, fps: float, frame
     if TABLE[fmt].folder:
         check_frames_folder(target)
     prepare_folder(target)
-    sink: Sink = writer(fmt)(fmt, target, width, height, fps, frames, pixel_format, alpha)
+    sink: Sink = writer(fmt)(fmt, target, width, height, fps, frames, pixel_format, alpha, draft)
     return sink
 
 
@@ -186,11 +186,12 @@ def x264_tuning(width: int, height: int, cpus: int | None = None) -> list[str]:
     return ["-threads", str(max(1, min(cpus, 16))), "-x264-params", f"rc-lookahead={lookahead}:sync-lookahead=0"]
 
 
-def encoder_options(fmt: str, width: int = 0, height: int = 0, alpha: bool = False) -> list[str]:
+def encoder_options(fmt: str, width: int = 0, height: int = 0, alpha: bool = False,
+                    draft: bool = False) -> list[str]:
     """ffmpeg's output options (codec, pixel format, container) for ``fmt`` frames of ``width × height``,
     with the format's :attr:`~.formats.Format.tuning` for that size after the encoder's name; with
-    ``alpha``, those that keep transparency."""
-    codec = TABLE[fmt].options(alpha)
+    ``alpha``, those that keep transparency; with ``draft``, the encoder's quickest settings."""
+    codec = TABLE[fmt].options(alpha, draft)
     tune = tuning(fmt)
     if tune is not None and width and height:
         after = codec.index("-c:v") + 2
@@ -206,7 +207,7 @@ def sends_yuv420(fmt: str, width: int, height: int, alpha: bool = False) -> bool
 
 
 def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, output: str,
-                   pixel_format: str = "rgba", alpha: bool = False) -> list[str]:
+                   pixel_format: str = "rgba", alpha: bool = False, draft: bool = False) -> list[str]:
     """The bundled ffmpeg's command line that encodes raw ``pixel_format`` frames from ``source`` as ``fmt``."""
     if pixel_format not in (*PIXEL_FORMATS, "yuv420p"):
         raise OptionError(f"unknown pixel format {pixel_format!r}; expected one of {', '.join(PIXEL_FORMATS)} "
@@ -214,7 +215,7 @@ def ffmpeg_command(fmt: str, width: int, height: int, fps: float, source: str, o
     tags = YUV420_TAGS if pixel_format == "yuv420p" else []
     return [ffmpeg_exe(), "-y", "-hide_banner", "-loglevel", "error", "-nostdin",
             "-f", "rawvideo", "-pix_fmt", pixel_format, "-s", f"{width}x{height}", "-framerate", f"{fps:g}", *tags,
-            "-i", source, "-an", *encoder_options(fmt, width, height, alpha), output]
+            "-i", source, "-an", *encoder_options(fmt, width, height, alpha, draft), output]
 
 
 def png_bytes(rgba: NDArray[np.uint8]) -> bytes:
@@ -229,9 +230,9 @@ def png_bytes(rgba: NDArray[np.uint8]) -> bytes:
 
 
 def frames_folder(fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
-                  pixel_format: str = "rgba", alpha: bool = False) -> PngSequence:
+                  pixel_format: str = "rgba", alpha: bool = False, draft: bool = False) -> PngSequence:
     """The sink :func:`open_sink` makes for a folder of frames (:attr:`.formats.Format.writer`): ``frames``
-    PNG files of straight RGBA, whatever the size, rate, layout and transparency."""
+    PNG files of straight RGBA, whatever the size, rate, layout, transparency and draft."""
     return PngSequence(target, frames)
 
 
@@ -290,7 +291,7 @@ class FFmpegVideo:
     """
 
     def __init__(self, fmt: str, target: Path, width: int, height: int, fps: float, frames: int,
-                 pixel_format: str = "rgba", alpha: bool = False) -> None:
+                 pixel_format: str = "rgba", alpha: bool = False, draft: bool = False) -> None:
         self.fmt, self.target = fmt, target
         self.width, self.height, self.fps, self.expected = width, height, fps, frames
         self.pixel_format = pixel_format
@@ -300,7 +301,7 @@ class FFmpegVideo:
             self.to_yuv420 = Yuv420(width, height, pixel_format)
         self.temporary = sibling(target, "." + fmt)
         sent = pixel_format if self.to_yuv420 is None else "yuv420p"
-        command = ffmpeg_command(fmt, width, height, fps, "pipe:0", str(self.temporary), sent, alpha)
+        command = ffmpeg_command(fmt, width, height, fps, "pipe:0", str(self.temporary), sent, alpha, draft)
         self.log = tempfile.TemporaryFile()
         # unbuffered: Python's 8 KiB buffer would only add a copy of every frame. Its own
         # session: a terminal's Ctrl-C reaches only this process, which then stops ffmpeg

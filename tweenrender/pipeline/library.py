@@ -195,7 +195,8 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     """Write the clip to ``path`` exactly as ``tweenrender render`` does; returns the path written.
 
     Options come by their long names (``method, compare, format, size, fps, frames, background, balance,
-    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress, max_error, loop``; see
+    paths, onion, strip, cost, align, equal_counts, workers, cluster, max_frames, progress, max_error, loop,
+    draft``; see
     :class:`~.options.RenderOptions`) or as one ``options`` object. The format is ``format`` or
     ``path``'s extension (any of ``encode.formats.suffixes()``; a name without one is a folder of PNG
     frames). ``background`` overrides the scene's (``"none"``: transparent, kept by every format but MP4).
@@ -211,10 +212,11 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
     ``.json`` (format ``lottie``) writes Lottie, ``.lottie`` (``dotlottie``) the same in a dotLottie
     archive, ``.svg`` (``svg``) an animated SVG: the paths themselves as cubic Bézier curves, keyframed
     within ``max_error`` output pixels (default 0.25) of every frame; they take no ``compare``, ``paths``,
-    ``onion``, ``strip``, ``workers`` or ``cluster``. ``loop`` makes the animated SVG repeat and the
-    dotLottie's manifest say it loops (a Lottie JSON cannot say: its player decides).
+    ``onion``, ``strip``, ``workers``, ``cluster`` or ``draft``. ``loop`` makes the animated SVG repeat and the
+    dotLottie's manifest say it loops (a Lottie JSON cannot say: its player decides). ``draft`` encodes an
+    MP4 or WebM at the encoder's quickest settings: the same quality asked for, in a larger file.
     """
-    from ..encode.formats import TABLE, check_alpha, check_frame_size, check_loop
+    from ..encode.formats import TABLE, check_alpha, check_draft, check_frame_size, check_loop
     from ..encode.targets import check_frames_folder, check_output_name
     from .chunks import render_in_processes
     from .workers import default_workers
@@ -253,6 +255,7 @@ def write(scene: Scene, path: str | os.PathLike[str], *, options: RenderOptions 
 
         return write_vector(job, fmt, target, opts.max_error, opts.loop)
     check_alpha(fmt, job.scene.background[3] < 255)
+    check_draft(fmt, opts.draft)
     check_frame_size(fmt, *job.frame_size)  # before drawing a frame or starting ffmpeg
     if opts.cluster is not None:
         from .cluster import render_on_cluster
@@ -279,7 +282,7 @@ def render_job(scene: Scene, options: RenderOptions) -> RenderJob:
     picked = pick_frames(options.frames, total_frames(scene, rate))
     return _job(scene, None, options.size, options.background, fps=rate, panels=panels,
                 labels=bool(options.compare), frames=picked, paths=options.paths, onion=options.onion,
-                strip=options.strip)
+                strip=options.strip, draft=options.draft)
 
 
 def output_format(target: Path, fmt: str | None = None) -> str:

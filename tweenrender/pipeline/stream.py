@@ -40,7 +40,7 @@ def render(job: RenderJob, fmt: str, target: Path, progress: Progress | None = N
     folder = TABLE[fmt].folder
     layout = "bgra" if here and not folder and job.scene.background[3] == 255 else "rgba"
     sink = open_sink(fmt, target, width, height, job.rate, len(indices), pixel_format=layout,
-                     alpha=job.scene.background[3] < 255)
+                     alpha=job.scene.background[3] < 255, draft=job.draft)
     elsewhere = folder and not here
     stream = frame_stream(job, executor, workers, encode=png_bytes if elsewhere else None, layout=layout)
     write = sink.write_encoded if elsewhere else sink.write  # type: ignore[attr-defined]

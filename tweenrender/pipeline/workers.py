@@ -100,7 +100,7 @@ def measure_cost(job: RenderJob, fmt: str) -> Cost:
         return Cost(draw, time.process_time() - start)
     from ..encode.encoder_cost import encoder_seconds
 
-    return Cost(draw, encoder_seconds(fmt, pictures, job.rate, alpha=job.scene.background[3] < 255))
+    return Cost(draw, encoder_seconds(fmt, pictures, job.rate, alpha=job.scene.background[3] < 255, draft=job.draft))
 
 
 def predicted_seconds(cost: Cost, fmt: str, frames: int, frame_bytes: int, processes: int, cpus: int) -> float:

@@ -96,6 +96,7 @@ class RenderJob:
     paths: bool = False  # every vertex's path and the keys, behind the shapes
     onion: int = 0  # ghosted inbetweens before and after the frame (see raster.overlays)
     strip: bool = False  # the perimeter-ratio strip along each panel's bottom
+    draft: bool = False  # encoded at the encoder's quickest settings (encode.formats.Format.draft)
     # the scene's tracks where they were already built (shipped to worker processes, which then need not
     # build them again); None: built where the frames are drawn
     tracks: tuple[Track, ...] | None = field(default=None, compare=False, repr=False)

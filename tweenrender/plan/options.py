@@ -241,7 +241,9 @@ class RenderOptions:
     ``[correspondence]``, ``balance`` over every shape's; ``max_memory`` what the ``sg`` search's tables
     may take (bytes, or ``512M``, ``2G``; default 2 GiB); ``max_error`` (vector formats only) how far, in
     output pixels, the keyframed paths may stray from the exact inbetween at a frame (default 0.25);
-    ``loop`` makes a file that can say so play over and over (``encode.formats.Format.loop``).
+    ``loop`` makes a file that can say so play over and over (``encode.formats.Format.loop``); ``draft``
+    encodes an MP4 or WebM at its encoder's quickest settings, for a look: the same quality asked for, a
+    larger file (``encode.formats.Format.draft``).
     """
 
     method: str | None = None
@@ -265,6 +267,7 @@ class RenderOptions:
     progress: Progress | None = None
     max_error: float | None = None  # vector formats: output pixels the keyframed paths may stray
     loop: bool = False  # the file says it plays over and over (formats whose table entry has a loop)
+    draft: bool = False  # MP4 and WebM encoded quickly, into a larger file
 
     @property
     def match(self) -> MatchSettings:
@@ -334,4 +337,5 @@ class RenderOptions:
             progress=v.get("progress"),
             max_error=_max_error(v["max_error"]) if "max_error" in v else None,
             loop=_flag(v.get("loop", False), "loop"),
+            draft=_flag(v.get("draft", False), "draft"),
         )

@@ -85,7 +85,7 @@ def write_report(scene: Scene, target: Path, methods: Sequence[str] | None = Non
         videos = []
         for method in methods:
             name = f"{method}.webm"
-            write(shared, folder / name, method=method, size=(width, height), workers=1,
+            write(shared, folder / name, method=method, size=(width, height), workers=1, draft=True,
                   progress=progress(name) if progress else None)
             videos.append((method, name))
         write_sheet(shared, tracks, methods, view, folder / "sheet.png")

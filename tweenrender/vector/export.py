@@ -66,7 +66,7 @@ each is kept until the frames are reduced to keyframes (some 160 MB of coordinat
 Python objects), so a clip past it is refused before any is taken."""
 
 
-RASTER_ONLY = ("compare", "paths", "onion", "strip", "workers", "cluster")
+RASTER_ONLY = ("compare", "paths", "onion", "strip", "workers", "cluster", "draft")
 """Render options a vector file cannot carry: it holds the scene's own animated paths, drawn by its player."""
 
 

@@ -54,7 +54,6 @@ _NEWTON_ROUNDS = 10
 """Newton steps on a span's parameters when the fit at mean chord length misses."""
 _SLIDES = 4
 """Refits of a blend's key cubics to the nearest points of their polylines (:func:`_slid_keys`)."""
-_CHUNK = 1 << 20  # point-segment pairs measured at once
 _DENSE = 24  # points of the cubic measured per span, besides those at the vertices' parameters
 
 
@@ -161,16 +160,14 @@ def curve_points(controls: Array, u: Array) -> Array:
 
 def distance_to_polyline(points: Array, polyline: Array) -> Array:
     """Distance from each of ``points (F, P, 2)`` to the polyline ``polyline (F, Q, 2)`` (its Q - 1
-    segments; one point if Q is 1) at the same frame: ``(F, P)``."""
+    segments; one point if Q is 1) at the same frame: ``(F, P)`` (a compiled loop over the segments,
+    :mod:`._distance_kernel`)."""
     if polyline.shape[1] == 1:
         return np.linalg.norm(points - polyline, axis=-1)
-    a, b = polyline[:, :-1], polyline[:, 1:]  # (F, S, 2)
-    ab = b - a
-    length = np.maximum(np.sum(ab * ab, axis=-1), 1e-300)  # (F, S)
-    ap = points[:, :, None] - a[:, None]  # (F, P, S, 2)
-    s = np.clip(np.einsum("fpsd,fsd->fps", ap, ab) / length[:, None], 0.0, 1.0)
-    nearest = a[:, None] + s[..., None] * ab[:, None]
-    return np.sqrt(np.min(np.sum((points[:, :, None] - nearest) ** 2, axis=-1), axis=-1))
+    from ._distance_kernel import polyline_distances
+
+    return polyline_distances(np.ascontiguousarray(points, dtype=np.float64),
+                              np.ascontiguousarray(polyline, dtype=np.float64))
 
 
 def curve_error(controls: Array, u: Array, polyline: Array) -> tuple[Array, Array]:
@@ -180,11 +177,8 @@ def curve_error(controls: Array, u: Array, polyline: Array) -> tuple[Array, Arra
     the polyline, ``(F,)``; and each vertex's largest distance over frames, ``(n,)``."""
     dense = np.union1d(np.union1d(np.linspace(0.0, 1.0, max(_DENSE, 2 * len(u))), u), (u[1:] + u[:-1]) / 2)
     drawn = curve_points(controls, dense)  # (F, D, 2)
-    step = max(1, _CHUNK // (len(dense) * len(u)))  # frames measured at once
-    vertices = np.concatenate([distance_to_polyline(polyline[f:f + step], drawn[f:f + step])
-                               for f in range(0, len(drawn), step)])  # (F, n)
-    points = np.concatenate([distance_to_polyline(drawn[f:f + step], polyline[f:f + step])
-                             for f in range(0, len(drawn), step)])  # (F, D)
+    vertices = distance_to_polyline(polyline, drawn)  # (F, n)
+    points = distance_to_polyline(drawn, polyline)  # (F, D)
     return np.maximum(vertices.max(axis=1), points.max(axis=1)), vertices.max(axis=0)
 
 

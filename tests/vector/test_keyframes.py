@@ -261,3 +261,33 @@ def test_timing_is_the_css_bezier_it_names() -> None:
         (handles,) = keys.handles()
         assert timing(u, np.array([p, q])) == pytest.approx(bezier_timing(u, handles), abs=1e-9)
     assert Keyframes((0, 1), np.zeros((2, 1, 1)), np.array([[1 / 3, 2 / 3]])).handles() == ((0.0, 0.0, 1.0, 1.0),)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_spans_room_is_every_end_correction_that_keeps_its_frames_within_the_limit(seed: int) -> None:
+    """The room of spans (``keyframes._room``) against brute force: an end moved by λ along the room's direction
+    keeps every frame between within the limit (the player's point ``start + s·(end + λ·unit - start)``) exactly
+    when λ lies in ``[lo, hi]``, tried for λ across and just outside the room."""
+    from tweenrender.vector.keyframes import _room
+
+    rng = np.random.default_rng(seed)
+    frames, vertices = 14, 5
+    values = np.cumsum(rng.normal(size=(frames, vertices, 2)), axis=0)
+    a, ends = 2, np.array([6, 9, 13])
+    eases = np.array([[1 / 3, 2 / 3], [0.2, 0.9], [0.6, 0.1]])
+    limit = np.array([0.8, 1.5, 3.0, 6.0, 12.0])
+    start = values[a] + 0.1
+    room = _room(values, a, start, ends, eases, limit)
+    for c, (b, ease) in enumerate(zip(ends, eases)):
+        s = bezier_timing((np.arange(a + 1, b) - a) / (b - a), (1 / 3, ease[0], 2 / 3, ease[1]))  # (M,)
+        for n in range(vertices):
+            lo, hi = room.lo[c, n], room.hi[c, n]
+            tried = np.linspace(-limit[n] - 1, limit[n] + 1, 401)
+            if lo <= hi:
+                tried = np.concatenate([tried, [lo + 1e-9, hi - 1e-9, lo - 1e-6, hi + 1e-6]])
+            for lam in tried:
+                end = values[b, n] + lam * room.unit[c, n]
+                played = start[n] + s[:, None] * (end - start[n])
+                keeps = np.all(np.linalg.norm(played - values[a + 1:b, n], axis=-1) <= limit[n]) \
+                    and abs(lam) <= limit[n]
+                assert keeps == (lo <= lam <= hi), (c, n, lam, lo, hi)

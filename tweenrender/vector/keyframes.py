@@ -236,27 +236,17 @@ def _room(values: Array, a: int, start: Array, ends: NDArray[np.intp], eases: Ar
     |s·λ·unit - (x - c)|² ≤ r², an interval of λ (a quadratic); the room is their intersection with
     the end's own [-r, r].
     """
+    from ._room_kernel import room_bounds
+
     if between is None:
         between = a + 1 + np.arange(int(ends.max()) - a - 1)  # (M,)
     u = (between[None, :] - a) / (ends[:, None] - a)  # (C, M)
     inside = u < 1.0
     s = np.where(inside, timing(np.minimum(u, 1.0), eases), 0.0)  # (C, M), > 0 inside
-    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
-        gap = values[between][None] - start - s[:, :, None, None] * (values[ends][:, None] - start)  # (C, M, N, D)
-        gap = np.where(inside[:, :, None, None], gap, 0.0)
-        least = np.einsum("cm,cmnd->cnd", s, gap) / np.sum(s * s, axis=1)[:, None, None]  # (C, N, D)
-        size = np.linalg.norm(least, axis=-1)  # (C, N)
-        unit = np.zeros_like(least)
-        unit[..., 0] = 1.0
-        unit = np.where(size[..., None] > 0, least / np.where(size > 0, size, 1.0)[..., None], unit)
-        along = np.einsum("cmnd,cnd->cmn", gap, unit)  # (C, M, N)
-        disc = along * along - np.sum(gap * gap, axis=-1) + limit * limit
-        root = np.sqrt(np.maximum(disc, 0.0))
-        scale = np.where(inside, s, 1.0)[:, :, None]
-        lo = np.where(disc >= 0, (along - root) / scale, np.inf)
-        hi = np.where(disc >= 0, (along + root) / scale, -np.inf)
-        lo = np.maximum(np.max(np.where(inside[:, :, None], lo, -np.inf), axis=1), -limit)
-        hi = np.minimum(np.min(np.where(inside[:, :, None], hi, np.inf), axis=1), limit)
+    limits = np.broadcast_to(np.asarray(limit, dtype=np.float64), (values.shape[1],))
+    lo, hi, unit, size = room_bounds(values, np.ascontiguousarray(start, dtype=np.float64),
+                                     np.ascontiguousarray(ends, dtype=np.intp), np.ascontiguousarray(between, dtype=np.intp),
+                                     np.ascontiguousarray(s), np.ascontiguousarray(inside), np.ascontiguousarray(limits))
     return _Room(lo, hi, unit, size)
 
 

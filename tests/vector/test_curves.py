@@ -110,3 +110,24 @@ def test_the_distance_to_a_polyline_is_shapelys_and_rounds_as_the_arrays_do(seed
     assert np.array_equal(found, _segments_numpy(points, polyline))
     assert np.array_equal(distance_to_polyline(points, polyline[:, :1]),
                           np.linalg.norm(points - polyline[:, :1], axis=-1))  # one point
+
+
+def test_a_cubics_points_are_de_casteljaus_and_round_as_einsum_does() -> None:
+    """``curve_points`` over leading frames: de Casteljau's construction within 1e-12, and bit for bit
+    ``np.einsum`` of the Bernstein weights."""
+    from tweenrender.vector.curves import _bernstein, curve_points
+
+    rng = np.random.default_rng(5)
+    controls = rng.normal(size=(3, 7, 4, 2)) * 100
+    u = np.sort(rng.random(9))
+    found = curve_points(controls, u)
+    assert found.shape == (3, 7, 9, 2)
+    lerp = lambda p, q, t: p + (q - p) * t[:, None]  # noqa: E731
+    for f in range(3):
+        for c in range(7):
+            p = [np.repeat(controls[f, c, k][None], len(u), axis=0) for k in range(4)]
+            while len(p) > 1:
+                p = [lerp(p[k], p[k + 1], u) for k in range(len(p) - 1)]
+            assert np.allclose(found[f, c], p[0], rtol=0, atol=1e-12)
+    assert np.array_equal(found, np.einsum("nk,...kd->...nd", _bernstein(u), controls))
+    assert curve_points(controls[:0], u).shape == (0, 7, 9, 2)

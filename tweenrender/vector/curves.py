@@ -155,16 +155,27 @@ def _solve(samples: Array, i0: int, i1: int, u: Array, ridge: float = 0.0) -> Ar
 
 def curve_points(controls: Array, u: Array) -> Array:
     """Points of cubics ``controls (..., 4, 2)`` at parameters ``u (n,)``: ``(..., n, 2)``."""
-    return np.einsum("nk,...kd->...nd", _bernstein(u), controls)
+    return _weighted(_bernstein(u), controls)
+
+
+def _weighted(weights: Array, points: Array) -> Array:
+    """``Σ_k weights[n, k] · points[..., k, d]`` for ``weights (n, K)`` and ``points (..., K, D)``: ``(..., n, D)``
+    (a compiled loop, :mod:`._curve_kernels`)."""
+    from ._curve_kernels import weighted_sums
+
+    lead = points.shape[:-2]
+    flat = np.ascontiguousarray(points, dtype=np.float64).reshape(-1, *points.shape[-2:])
+    found = weighted_sums(np.ascontiguousarray(weights, dtype=np.float64), flat)
+    return found.reshape(*lead, *found.shape[1:])
 
 
 def distance_to_polyline(points: Array, polyline: Array) -> Array:
     """Distance from each of ``points (F, P, 2)`` to the polyline ``polyline (F, Q, 2)`` (its Q - 1
     segments; one point if Q is 1) at the same frame: ``(F, P)`` (a compiled loop over the segments,
-    :mod:`._distance_kernel`)."""
+    :mod:`._curve_kernels`)."""
     if polyline.shape[1] == 1:
         return np.linalg.norm(points - polyline, axis=-1)
-    from ._distance_kernel import polyline_distances
+    from ._curve_kernels import polyline_distances
 
     return polyline_distances(np.ascontiguousarray(points, dtype=np.float64),
                               np.ascontiguousarray(polyline, dtype=np.float64))
@@ -242,9 +253,8 @@ def _newton_step(points: Array, controls: Array, u: Array) -> Array:
     if inner.size == 0:
         return u
     v = 1.0 - inner
-    first = 3 * np.einsum("nk,fkd->fnd", np.stack([v * v, 2 * v * inner, inner * inner], axis=-1),
-                          np.diff(controls, axis=1))
-    second = 6 * np.einsum("nk,fkd->fnd", np.stack([v, inner], axis=-1), np.diff(controls, n=2, axis=1))
+    first = 3 * _weighted(np.stack([v * v, 2 * v * inner, inner * inner], axis=-1), np.diff(controls, axis=1))
+    second = 6 * _weighted(np.stack([v, inner], axis=-1), np.diff(controls, n=2, axis=1))
     miss = curve_points(controls, inner) - points[:, 1:-1]
     slope = np.sum(miss * first, axis=(0, 2))
     curvature = np.sum(first * first + miss * second, axis=(0, 2))

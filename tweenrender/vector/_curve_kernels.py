@@ -1,8 +1,10 @@
-"""The compiled loop of :func:`~tweenrender.vector.curves.distance_to_polyline` (numba).
+"""The compiled loops of :mod:`.curves` (numba), each with the very float operations of the array expression it
+replaces (the same products and sums, in the same order, so the same rounding), and none of its temporaries:
 
-Each point is measured against each segment of its frame's polyline with the very float operations of the
-vectorised measure it replaces (the same products and sums, in the same order, so the same rounding), one
-segment at a time: no ``(F, P, S, 2)`` arrays are built, and memory does not grow with the polyline.
+* :func:`polyline_distances`, a point's distance to a polyline (:func:`~.curves.distance_to_polyline`), one
+  segment at a time: no ``(F, P, S, 2)`` arrays, memory that does not grow with the polyline;
+* :func:`weighted_sums`, the points of cubics from their Bernstein weights and control points (and their
+  derivatives), in place of a small ``np.einsum`` over many frames.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ import numpy as np
 
 from ..core.jit import cached_jit as _jit
 
-__all__ = ["polyline_distances"]
+__all__ = ["polyline_distances", "weighted_sums"]
 
 
 @_jit
@@ -41,4 +43,21 @@ def polyline_distances(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
                 if d < best:
                     best = d
             out[f, p] = np.sqrt(best)
+    return out
+
+
+@_jit
+def weighted_sums(weights: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """``Σ_k weights[n, k] · points[b, k, d]`` for ``weights (n, K)`` and ``points (B, K, D)``: ``(B, n, D)``, each
+    sum taken from zero in the order of k (as ``np.einsum("nk,bkd->bnd", ...)`` takes it)."""
+    count, terms = weights.shape[0], weights.shape[1]
+    batches, dims = points.shape[0], points.shape[2]
+    out = np.empty((batches, count, dims))
+    for b in range(batches):
+        for n in range(count):
+            for d in range(dims):
+                acc = 0.0
+                for k in range(terms):
+                    acc += weights[n, k] * points[b, k, d]
+                out[b, n, d] = acc
     return out

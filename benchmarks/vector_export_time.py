@@ -1,19 +1,24 @@
 """How vector export time grows with the frames of a clip and with the contours of a drawing (run by hand).
 
-1. Frames: a two-icon morph (``mdi/alpha-a`` to ``mdi/alpha-b``, the default method) made 121, 481 and
-   1 921 frames long by its step (5, 20 and 80 s at 24 fps): seconds to write the Lottie file, the values
-   the keyframe fit measured (frames × ends × vertices, summed; grows as the work does) and the file's size,
-   against seconds to write the MP4 of the same clip.
+1. Frames: two-icon morphs (``mdi/alpha-a`` to ``mdi/alpha-b``, 61 vertices drawn, and ``tabler/sun`` to
+   ``mdi/heart``, about 460; the default method) made 121, 481 and 1 921 frames long by their step (5, 20 and
+   80 s at 24 fps): wall and CPU seconds of ``tweenrender render A B --step S -o X.json`` against ``-o X.mp4``,
+   each a fresh process as a user runs it (the MP4 with its default workers), the values the keyframe fit
+   measured (frames × ends × vertices, summed, counted in this process; grows as the work does) and the
+   Lottie's size.
 2. Contours: one element of n small squares in a grid, each moving and growing (``--method rigid``, 25
    frames), n = 1 000 and 5 000: seconds to write the Lottie file.
 
 Run: ``python benchmarks/vector_export_time.py [--steps 5,20,80] [--contours 1000,5000] [--no-mp4]``
+(prints the load average: the two writes of each row run one after the other, so compare them within a row)
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import resource
+import subprocess
 import sys
 import tempfile
 import time
@@ -53,18 +58,40 @@ def _timed(function: Callable[..., Any], *args: Any) -> float:
     return time.perf_counter() - start
 
 
+def _command(args: list[str]) -> tuple[float, float]:
+    """Wall and CPU seconds (user + sys, its children included) of ``python -m tweenrender ARGS`` run afresh."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "tweenrender", *args], check=True, cwd=ROOT,
+                   stdout=subprocess.DEVNULL)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+
+
+PAIRS = (("mdi/alpha-a", "mdi/alpha-b"), ("tabler/sun", "mdi/heart"))
+
+
 def frames_growth(steps: list[float], mp4: bool, folder: Path) -> None:
     work: Counter[str] = Counter()
     _count_fit(work)
-    print("frames  lottie s  fit values   bytes     mp4 s")
-    for step in steps:
-        scene = tr.load_scene([ICONS / "mdi/alpha-a.svg", ICONS / "mdi/alpha-b.svg"], step=step)
-        work.clear()
-        target = folder / f"morph-{step:g}.json"
-        seconds = _timed(tr.write, scene, target)
-        video = _timed(tr.write, scene, folder / f"morph-{step:g}.mp4") if mp4 else float("nan")
-        count = round(step * scene.fps) + 1
-        print(f"{count:6d}  {seconds:8.1f}  {work['values']:10d}  {target.stat().st_size:6d}  {video:8.1f}")
+    print("pair                          frames vertices  lottie wall/cpu s   mp4 wall/cpu s  wall ratio  fit values   bytes")
+    for a, b in PAIRS:
+        icons = [str(ICONS / f"{a}.svg"), str(ICONS / f"{b}.svg")]
+        for step in steps:
+            scene = tr.load_scene(icons, step=step)
+            vertices = sum(len(c.points) for c in tr.contours(scene, step / 2))
+            work.clear()
+            counted = folder / f"counted-{step:g}.json"
+            tr.write(scene, counted)
+            target = folder / f"morph-{step:g}.json"
+            lottie = _command(["render", *icons, "--step", f"{step:g}", "-o", str(target), "-q"])
+            video = _command(["render", *icons, "--step", f"{step:g}", "-o", str(folder / "morph.mp4"), "-q"]) \
+                if mp4 else (float("nan"), float("nan"))
+            count = round(step * scene.fps) + 1
+            print(f"{a + ' -> ' + b:28s}  {count:6d} {vertices:8d}  {lottie[0]:7.1f} {lottie[1]:7.1f}   "
+                  f"{video[0]:7.1f} {video[1]:7.1f}  {lottie[0] / video[0]:10.2f}  {work['values']:10d}  "
+                  f"{target.stat().st_size:6d}")
 
 
 def _grid(count: int) -> str:

@@ -148,6 +148,24 @@ def test_keys_that_already_cross_do_not_tangle_and_injective_says_why_it_draws_r
     assert square["shapes"][0]["methods"]["injective"]["fallback"] is None
 
 
+def test_injective_names_the_slit_that_keeps_it_from_a_mesh() -> None:
+    """The check of bootstrap's check-circle has no partner in the python logo and no room to grow: it is joined
+    to the ring by a slit, whose two sides pass the same points. The sources have no such points (shapely:
+    each of their rings is simple), so it is the slit `injective` cannot mesh, and stats says so."""
+    import shapely
+
+    for name in ("bootstrap/check-circle", "simple-icons/python"):
+        scene = tr.load_scene(ICONS / f"{name}.svg")
+        for shape in scene.shapes:
+            for contour in shape.keys[0].contours:
+                if contour.closed and len(contour.points) >= 3:
+                    assert shapely.LinearRing(contour.points).is_simple, name
+    stats = stats_dict(_pair("bootstrap/check-circle", "simple-icons/python"), [0.5], ["injective"])
+    reasons = [s["methods"]["injective"]["fallback"] for s in stats["shapes"] if s["methods"]["injective"]["fallback"]]
+    assert reasons and all("slit" in reason for reason in reasons), reasons
+    assert "joined by a slit" in stats_text(stats)
+
+
 def test_pops_measure_each_shapes_frames_once_for_the_methods_that_draw_them_alike(monkeypatch: pytest.MonkeyPatch) -> None:
     # a face becoming a circled check: most of the face's elements have no partner and grow or shrink alike under
     # every method; each distinct run of frames of a shape is measured once (counted), and the pops are those of

@@ -46,7 +46,8 @@ from numpy.typing import NDArray
 from ...errors import GeometryError
 from .mesh_overlay import fat, fewer_crossings, orient, overlay_face, relax
 
-__all__ = ["BRIDGE_CAP", "CompatibleError", "CompatibleMesh", "compatible_triangulation", "FRAME_SIDES", "STEINER_CAP"]
+__all__ = ["BRIDGE_CAP", "COINCIDENT", "CompatibleError", "CompatibleMesh", "compatible_triangulation", "FRAME_SIDES",
+           "STEINER_CAP"]
 
 Array = NDArray[np.float64]
 Triangles = NDArray[np.intp]
@@ -54,6 +55,8 @@ Triangles = NDArray[np.intp]
 FRAME_SIDES = 24
 """Corners of the frame polygon (a regular polygon around both keys)."""
 
+COINCIDENT = "the key has coincident vertices"
+"""Why a key has no compatible triangulation where two of its vertices are one point (a joined contour's slit)."""
 STEINER_CAP = 20_000
 """Most crossing points one face's overlay may add; past it the keys have no injective paths here."""
 
@@ -255,7 +258,7 @@ def _delaunay(points: Array) -> _Triangulation:
     except Exception as error:  # qhull refuses degenerate input
         raise CompatibleError(f"the key cannot be triangulated: {error}") from None
     if len(found.coplanar):
-        raise CompatibleError("the key has coincident vertices")
+        raise CompatibleError(COINCIDENT)
     return _Triangulation(points, found.simplices.astype(np.intp))
 
 
@@ -334,7 +337,7 @@ def compatible_triangulation(k0: Array, k1: Array, cuts: Sequence[int], closed: 
         if shut and np.sign(_winding(k0[start:end])) != np.sign(_winding(k1[start:end])):
             raise CompatibleError("a contour winds the other way round in the second key")
     if len(np.unique(k0, axis=0)) < n or len(np.unique(k1, axis=0)) < n:  # as the triangulation would say
-        raise CompatibleError("the key has coincident vertices")  # (a joined contour's slit), at no cost
+        raise CompatibleError(COINCIDENT)  # (a joined contour's slit), at no cost
     if radius is None:
         radius = _FRAME_SCALE * max(float(np.abs(k0).max(initial=0.0)), float(np.abs(k1).max(initial=0.0)),
                                     1e-300) * math.sqrt(2.0)

@@ -423,13 +423,17 @@ def method_paths(segment: Segment, t: Array, method: str, hold: bool = True) -> 
 
 def injective_fallback_of(segment: Segment) -> str | None:
     """Why ``injective`` draws a segment's moving contours on rigid paths (no injective morph of its
-    keys: they cross, nest differently, wind apart), or None."""
+    keys: they cross, nest differently, wind apart; a contour joined by a slit passes points twice), or None."""
+    from ..methods.compatible import COINCIDENT
     from ..methods.injective import injective_fallback
 
     moving = [p for p in segment.pairs if p.moving]
     if not moving:
         return None
-    return injective_fallback([p.k0 for p in moving], [p.k1 for p in moving], [p.closed for p in moving])
+    reason = injective_fallback([p.k0 for p in moving], [p.k1 for p in moving], [p.closed for p in moving])
+    if reason == COINCIDENT and any(p.joined is not None and p.closed for p in moving):
+        return f"{reason} (contours joined by a slit, whose two sides pass the same points)"
+    return reason
 
 
 def growths_of(segment: Segment, method: str, hold: bool = True) -> list[Growth | None]:

@@ -150,3 +150,43 @@ def test_auto_does_not_hold_a_stroke_where_the_mesh_carries_it_out_of_the_view(t
         points = np.concatenate([drawn[k].points for k in growing])
         assert points[:, 0].min() >= min(x0, x1) - margin and points[:, 0].max() <= max(x0, x1) + margin, t
         assert points[:, 1].min() >= min(y0, y1) - margin and points[:, 1].max() <= max(y0, y1) + margin, t
+
+
+def test_stray_is_measured_within_twelve_percent_of_the_drawings_view() -> None:
+    """SPEC §5.16: stray is the share of an in-between's area farther than 12 % of the *view's* larger side from
+    both keys. A unit square sliding one unit bulges three units out of the way at mid-clip: within 12 % of its
+    keys alone (0.24) most of the bulge strays, within 12 % of a view 40 wide (4.8) none does. Both are what
+    shapely measures (the keys' areas grown by the reach, the frame's area outside them)."""
+    from tests.core.shapely_areas import drawn_area, stray_share
+    from tweenrender.core.methods.qcurves import candidate_quality, stray_reach
+
+    k0, k1 = _square(0, 0), _square(1, 0)
+    bump = np.sin(np.pi * QUALITY_T)[:, None, None] * np.array([0.0, 3.0])
+    frames = [(1 - QUALITY_T)[:, None, None] * k0 + QUALITY_T[:, None, None] * k1 + bump]
+    keys = (drawn_area([k0], "nonzero"), drawn_area([k1], "nonzero"))
+    for view, reach in ((0.0, 0.24), (40.0, 4.8)):
+        assert stray_reach([k0], [k1], view) == pytest.approx(reach)
+        expected = max(stray_share(drawn_area([f], "nonzero"), *keys, reach) for f in frames[0])
+        tangled, stray = candidate_quality(frames, [k0], [k1], [True], view)
+        assert tangled == 0 and stray == pytest.approx(expected, abs=0.01), (view, stray, expected)
+    assert candidate_quality(frames, [k0], [k1], [True])[1] > 0.5  # the keys alone: most of the bulge strays
+    assert candidate_quality(frames, [k0], [k1], [True], 40.0)[1] == 0.0
+
+
+def test_a_drawings_segments_measure_stray_within_its_view() -> None:
+    """Each segment of a drawing pair carries its view's larger side (the viewBox), which auto's measures use;
+    a scene without a view uses the box of all its keys."""
+    import tweenrender as tr
+    from tests.helpers import DATA, SCENES
+    from tweenrender.core.timing.timeline import tracks_of, view_side
+
+    scene = tr.load_scene([DATA / "icons" / "feather" / "heart.svg", DATA / "icons" / "mdi" / "alpha-a.svg"])
+    x0, y0, x1, y1 = scene.view
+    assert view_side(scene) == max(x1 - x0, y1 - y0) > 0
+    segments = [segment for track in tracks_of(scene) for segment in track.segments]
+    assert segments and all(segment.view == view_side(scene) for segment in segments)
+    square = tr.load_scene(SCENES / "square.toml")
+    points = np.concatenate([c.points for shape in square.shapes for key in shape.keys for c in key.contours])
+    expected = float(np.ptp(points, axis=0).max()) if square.view is None else max(
+        square.view[2] - square.view[0], square.view[3] - square.view[1])
+    assert view_side(square) == pytest.approx(expected)

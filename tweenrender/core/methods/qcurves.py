@@ -30,8 +30,8 @@ from ..tangles import contact_times, linear_tangles
 __all__ = [
     "control_points", "evaluate", "angle_at", "passes_through_zero", "non_monotonic",
     "sweeps_over_180", "Motion", "vertex_kinds", "classify", "AutoChoice", "auto_choice",
-    "auto_choice_contours", "auto", "straight", "STRAY_LIMIT", "QUALITY_T", "candidate_paths", "candidate_quality",
-    "stroke_stray",
+    "auto_choice_contours", "auto", "drawn_choice", "straight", "STRAY_LIMIT", "QUALITY_T", "candidate_paths",
+    "candidate_quality", "stray_reach", "stroke_stray",
 ]
 
 Array = NDArray[np.float64]
@@ -319,11 +319,11 @@ def candidate_paths(method: str, k0s: Sequence[Array], k1s: Sequence[Array], clo
     return [straight(a, b, t) if shut else paths.linear(a, b, t) for a, b, shut in zip(k0s, k1s, closed)]
 
 
-def candidate_quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]
-             ) -> tuple[int, float]:
+def candidate_quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
+                      view: float = 0.0) -> tuple[int, float]:
     """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included) and the largest
-    stray, the reach 12 % of the larger side of both keys together (a segment does not know the view)."""
-    return _tangled(frames, k0s, k1s, closed), _stray(frames, k0s, k1s, closed)
+    stray, the reach 12 % of the view's larger side ``view`` (:func:`stray_reach`)."""
+    return _tangled(frames, k0s, k1s, closed), _stray(frames, k0s, k1s, closed, view)
 
 
 def _tangled(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> int:
@@ -333,10 +333,11 @@ def _tangled(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array]
     return len(set(tangled) | set(stroked))
 
 
-def _stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> float:
-    """The largest stray of ``frames`` at :data:`QUALITY_T`, the reach 12 % of the larger side of both keys."""
+def _stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
+           view: float = 0.0) -> float:
+    """The largest stray of ``frames`` at :data:`QUALITY_T`, within :func:`stray_reach` of ``view``."""
     filled = [len(k) >= 3 and shut for k, shut in zip(k0s, closed)]
-    reach = _reach(k0s, k1s)
+    reach = stray_reach(k0s, k1s, view)
     if not any(filled) or not reach > 0:
         return 0.0
     areas = [([f[k] for f, keep in zip(frames, filled) if keep], "evenodd") for k in range(len(QUALITY_T))]
@@ -344,12 +345,13 @@ def _stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], 
     return float(stray_shares(areas, keys[0], keys[1], reach).max(initial=0.0))
 
 
-def stroke_stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> float:
+def stroke_stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
+                 view: float = 0.0) -> float:
     """The largest share of the open strokes' length in ``frames`` (``(T, L_i, 2)`` at :data:`QUALITY_T`) lying
-    farther than the reach (12 % of the larger side of both keys) from both keys' areas and contours (0
-    without open strokes)."""
+    farther than the reach (:func:`stray_reach` of ``view``) from both keys' areas and contours (0 without open
+    strokes)."""
     filled = [len(k) >= 3 and shut for k, shut in zip(k0s, closed)]
-    reach = _reach(k0s, k1s)
+    reach = stray_reach(k0s, k1s, view)
     if all(filled) or not reach > 0:
         return 0.0
     keys = [([k for k, keep in zip(key, filled) if keep], "evenodd") for key in (k0s, k1s)]
@@ -358,12 +360,16 @@ def stroke_stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Ar
     return float(stroke_stray_shares(strokes, keys[0], keys[1], lines, reach).max(initial=0.0))
 
 
-def _reach(k0s: Sequence[Array], k1s: Sequence[Array]) -> float:
+def stray_reach(k0s: Sequence[Array], k1s: Sequence[Array], view: float = 0.0) -> float:
+    """How far an in-between may go from both keys before it strays (maths §5.16): 12 % of the larger side of
+    the view, ``view`` (the drawing's, where the caller knows it), or of both keys together where they are
+    larger (0: the keys alone)."""
     points = np.concatenate([*k0s, *k1s])
-    return STRAY_REACH * float(np.ptp(points, axis=0).max(initial=0.0))
+    return STRAY_REACH * max(float(view), float(np.ptp(points, axis=0).max(initial=0.0)))
 
 
-def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> AutoChoice:
+def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
+              view: float = 0.0) -> AutoChoice:
     """``auto``'s choice by measured quality (maths §5.16), among ``first`` where it is ``nonlinear`` (the
     Q-curves' rigid turn), straight paths with spread copies, and injective paths: the first whose
     in-betweens never tangle and stray at most :data:`STRAY_LIMIT` more than the straight paths do (they
@@ -372,13 +378,14 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     worse than straight paths that cross), the one tangling at the fewest t (straight paths, in the
     list's order, on a tie): by these measures, over the contours that move, never more tangled than
     straight paths, nor straying more than :data:`STRAY_LIMIT` past them.
-    ``first``'s reason stands where it passes; elsewhere the measures are the reason."""
+    ``first``'s reason stands where it passes; elsewhere the measures are the reason. Stray is measured within
+    12 % of the drawing's view, ``view`` its larger side (:func:`stray_reach`)."""
     k0s = [np.asarray(k, dtype=np.float64) for k in k0s]
     k1s = [np.asarray(k, dtype=np.float64) for k in k1s]
     closed = [bool(c) and len(k) >= 3 for c, k in zip(closed, k0s)]
     if not k0s or not all(np.all(np.isfinite(k)) for k in [*k0s, *k1s]):
         return first
-    key = b"|".join(k.tobytes() for k in [*k0s, *k1s]) + repr((first, closed)).encode()
+    key = b"|".join(k.tobytes() for k in [*k0s, *k1s]) + repr((first, closed, float(view))).encode()
     found = _measured_cache.get(key)
     if found is not None:
         _measured_cache.move_to_end(key)
@@ -395,10 +402,11 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
         if crossed == 0:
             _remember(key, first)
             return first
-        measured[first.method] = (crossed, _stray(frames, k0s, k1s, closed))
+        measured[first.method] = (crossed, _stray(frames, k0s, k1s, closed, view))
     for c in candidates:
         if c.method not in measured and c.method != "injective":
-            measured[c.method] = candidate_quality(candidate_paths(c.method, k0s, k1s, closed, QUALITY_T), k0s, k1s, closed)
+            measured[c.method] = candidate_quality(candidate_paths(c.method, k0s, k1s, closed, QUALITY_T), k0s, k1s,
+                                                   closed, view)
     # straight paths sweep what the motion itself sweeps: a method strays where it goes past that
     limit = STRAY_LIMIT + measured["linear"][1]
     scores: list[tuple[int, float, int, AutoChoice]] = []
@@ -406,7 +414,7 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     for rank, candidate in enumerate(candidates):
         if candidate.method not in measured:
             measured[candidate.method] = candidate_quality(candidate_paths(candidate.method, k0s, k1s, closed, QUALITY_T),
-                                                  k0s, k1s, closed)
+                                                           k0s, k1s, closed, view)
         crossed, stray = measured[candidate.method]
         scores.append((crossed, stray, rank, candidate))
         # a rigid turn's arc is the motion itself, not a stray: it keeps the shape at every t
@@ -431,7 +439,8 @@ def _measures(scores: Sequence[tuple[int, float, int, AutoChoice]]) -> str:
     return "; ".join(f"{c.method}: tangled at {n} of {len(QUALITY_T)} t, stray {s:.3f}" for n, s, _, c in scores)
 
 
-def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool = True) -> AutoChoice:
+def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool = True, view: float = 0.0
+                ) -> AutoChoice:
     """Choose by measured quality (maths §5.16, :func:`_measured`): nonlinear paths where the Q-curves show
     a rigid rotation, straight paths, injective paths — the first that neither tangles nor strays.
 
@@ -444,7 +453,7 @@ def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool 
     k0, k1 = _keys(k0, k1)
     if len(joints) == 0:
         motion = classify(k0, k1)
-        return _measured(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed])
+        return _measured(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed], view)
     motions = [classify(k0[b], k1[b]) for b in _joints.bodies(k0.shape[0], joints)]
     methods = tuple(_method(m) for m in motions)
     method = "jointed" if "nonlinear" in methods else "linear"
@@ -453,7 +462,8 @@ def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool 
 
 
 def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
-                         strokes0: Sequence[ArrayLike] = (), strokes1: Sequence[ArrayLike] = ()) -> AutoChoice:
+                         strokes0: Sequence[ArrayLike] = (), strokes1: Sequence[ArrayLike] = (), view: float = 0.0
+                         ) -> AutoChoice:
     """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys (and
     the open strokes ``strokes0``, ``strokes1`` that move with them), by measured quality: nonlinear
     first where every closed contour turns rigidly by the same angle (within 1°), then straight paths,
@@ -473,7 +483,7 @@ def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
     else:
         first = AutoChoice("linear", "contours change or move differently: " + " / ".join(_short(m) for m in motions),
                            ("linear",))
-    return _measured(first, every0, every1, closed)
+    return _measured(first, every0, every1, closed, view)
 
 
 def straight(k0: Array, k1: Array, t: ArrayLike) -> Array:
@@ -496,7 +506,13 @@ def auto(k0: ArrayLike, k1: ArrayLike, t: ArrayLike, joints: Joints = ()) -> Arr
     whole shape's injective paths where linear ones would cross (maths §5.9).
     """
     k0, k1 = _keys(k0, k1)
-    choice = auto_choice(k0, k1, joints)
+    return drawn_choice(auto_choice(k0, k1, joints), k0, k1, t, joints)
+
+
+def drawn_choice(choice: AutoChoice, k0: ArrayLike, k1: ArrayLike, t: ArrayLike, joints: Joints = ()) -> Array:
+    """The inbetweens ``(T, N, 2)`` of ``auto``'s ``choice`` for one outline: its injective paths, straight paths
+    with spread copies, or each body's paths (joint vertices on the mean of their bodies')."""
+    k0, k1 = _keys(k0, k1)
     if choice.method == "injective":
         return injective(k0, k1, t)
     if len(joints) == 0 and choice.method == "linear":

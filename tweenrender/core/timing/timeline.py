@@ -54,7 +54,7 @@ from .steering import arc_corrections, bend, extra_turn, spin, unturned, whole_t
 
 __all__ = ["easing_of", "frame_count", "Pair", "Segment", "ShapeAt", "Track", "build_track", "segment_method",
            "evaluate_segment", "pair_paths", "method_paths", "make_breakdowns", "growths_of", "injective_fallback_of",
-           "key_windings", "tracks_of"]
+           "key_windings", "tracks_of", "view_side"]
 
 Array = NDArray[np.float64]
 
@@ -135,6 +135,7 @@ class Segment:
     # per pair, its hinted vertices: (letter, balanced vertex index); and the arcs, letter -> (x, y) at t = 0.5
     anchors: tuple[tuple[tuple[str, int], ...], ...] = ()
     arcs: tuple[tuple[str, tuple[float, float]], ...] = ()
+    view: float = 0.0  # the larger side of the drawing's view: auto's stray reach is 12 % of it (maths §5.16)
 
     def time_fraction(self, times: Array, rank: int = 0) -> Array:
         """How much of the motion's time has passed at ``times (T,)`` seconds for the pair of stagger rank
@@ -256,13 +257,13 @@ def segment_choice(segment: Segment, hold: bool = True) -> AutoChoice | None:
     if len(moving) == 1:
         pair = moving[0]
         if not pair.closed:
-            choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False)
+            choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False, view=segment.view)
             if choice.method in ("linear", "injective"):
                 return _held_choice(segment, hold, choice)
-        return _held_choice(segment, hold, auto_choice(pair.k0, pair.k1, segment.joints))
+        return _held_choice(segment, hold, auto_choice(pair.k0, pair.k1, segment.joints, view=segment.view))
     return _held_choice(segment, hold, auto_choice_contours(
         [p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
-        [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed]))
+        [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed], view=segment.view))
 
 
 def _held_choice(segment: Segment, hold: bool, choice: AutoChoice) -> AutoChoice:
@@ -317,7 +318,7 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
                     growth_scale(growths[i], QUALITY_T)) for i in alone]  # type: ignore[arg-type]
     as_grown = (own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
                 shut + [pairs[i].closed for i in alone])
-    first = candidate_quality(*as_grown)
+    first = candidate_quality(*as_grown, view=segment.view)
     held = _meshed_alone(segment) if first[0] else []  # the mesh only where they tangle as they grow
     if not held:
         return choice, None
@@ -328,11 +329,12 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     closed = shut + [pairs[i].closed for i, _, _ in held]
 
     held_frames = injective_contours(every0, every1, closed, QUALITY_T, paced=False)  # as auto measures paths
-    second = candidate_quality(held_frames, every0, every1, closed)
+    second = candidate_quality(held_frames, every0, every1, closed, view=segment.view)
     rings = [k for k, c in enumerate(closed) if c]
     uneven = _uneven([held_frames[k] for k in rings], [every0[k] for k in rings], [every1[k] for k in rings])
     # open strokes by their length: a mesh may carry one far where no area shows it
-    strokes = stroke_stray(*as_grown), stroke_stray(held_frames, every0, every1, closed)
+    strokes = stroke_stray(*as_grown, view=segment.view), stroke_stray(held_frames, every0, every1, closed,
+                                                                      view=segment.view)
     measures = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
                 f"stray {first[1]:.3f}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}, "
                 f"largest area step {uneven:.1f} × the median")
@@ -488,7 +490,7 @@ def _digest(segment: Segment, method: str) -> bytes:
         h.update(np.ascontiguousarray(pair.k0).tobytes())
         h.update(np.ascontiguousarray(pair.k1).tobytes())
         h.update(repr((pair.closed, pair.source, pair.fades)).encode())
-    h.update(repr(segment.joints).encode())
+    h.update(repr((segment.joints, segment.view)).encode())
     return h.digest()
 
 
@@ -539,6 +541,15 @@ def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True) ->
             path = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
             path[t == 0.0], path[t == 1.0] = pair.k0, pair.k1
             frames[i] = path
+    elif chosen == "auto" and single and not segment.joints:
+        # one outline: auto's choice for it, measured within the drawing's view (not its own size)
+        from ..methods.qcurves import drawn_choice
+
+        choice = segment_choice(segment, hold)
+        assert choice is not None
+        path = drawn_choice(choice, k0, k1, t)
+        path[t == 0.0], path[t == 1.0] = k0, k1
+        frames[moving[0]] = path
     else:
         together = interpolate(k0, k1, t, chosen, segment.joints)
         for i, part in zip(moving, np.split(together, cuts, axis=1)):
@@ -823,8 +834,9 @@ _BUILT: list[tuple[tuple[Shape, ...], tuple[object, ...], tuple[Track, ...]]] = 
 def _build_tracks(scene: Scene, matching: Matching) -> tuple[Track, ...]:
     """:func:`tracks_of`, worked out."""
     tracks = []
+    view = view_side(scene)
     for shape in scene.shapes:
-        rules = {"unmatched": scene.unmatched, "balance": scene.balance_of(shape)}
+        rules = {"unmatched": scene.unmatched, "balance": scene.balance_of(shape), "view": view}
         if any(key.breakdown is not None for key in shape.keys):
             unmade = replace(shape, keys=tuple(replace(key, contours=()) if key.breakdown is not None else key
                                                for key in shape.keys))
@@ -833,8 +845,18 @@ def _build_tracks(scene: Scene, matching: Matching) -> tuple[Track, ...]:
     return tuple(tracks)
 
 
+def view_side(scene: Scene) -> float:
+    """The larger side of ``scene``'s view, or of the box of all its keys where it sets none: what ``auto``'s
+    stray reach is a share of (maths §5.16); 0 for a scene without points."""
+    if scene.view is not None:
+        x0, y0, x1, y1 = scene.view
+        return float(max(x1 - x0, y1 - y0))
+    points = [c.points for shape in scene.shapes for key in shape.keys for c in key.contours if len(c.points)]
+    return float(np.ptp(np.concatenate(points), axis=0).max()) if points else 0.0
+
+
 def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", balance: str = "copies",
-                method: str | None = None) -> Track:
+                method: str | None = None, view: float = 0.0) -> Track:
     """Pair and balance every consecutive pair of ``shape``'s keys; carry its joints through.
 
     ``unmatched`` is the rule for contours without a partner (``shape.unmatched`` overrides it);
@@ -845,7 +867,8 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
     share its way; the first key's arcs are in the breakdowns (made with them), not bent in again.
     Given the ``method`` it is drawn with, a contour without a partner that has no room to grow over
     the whole segment (:func:`growths_of`) is joined to a neighbour instead (:mod:`.bridges`), unless
-    ``method`` is injective and its mesh holds it (:func:`held_in_mesh`).
+    ``method`` is injective and its mesh holds it (:func:`held_in_mesh`). ``view``: the larger side of the
+    drawing's view (:func:`view_side`), which ``auto`` measures stray within.
     """
     keys = shape.keys
     if shape.equal_counts is not None and shape.equal_counts != matching.equal_counts:
@@ -862,19 +885,19 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
         crowded = None
         if method is not None and not joints and _joinable(first, last, rule, links) \
                 and not easing_of(first).overshoots:  # a slit would turn inside out
-            crowded = _crowded(pairs, first, last, method, shape.stagger)
+            crowded = _crowded(pairs, first, last, method, shape.stagger, view)
         if crowded:
             # joined where that tangles no more than growing late and the area changes no less evenly:
             # all of them, or only the pieces, or only the holes
-            plain = _join_measures(pairs, first, last, method, shape.stagger)
+            plain = _join_measures(pairs, first, last, method, shape.stagger, view)
             best: tuple[tuple[int, float], tuple[Pair, ...]] | None = None
             # injective paths that hold them in their mesh need no slit (which has no mesh)
-            probe = _probe(pairs, first, last, shape.stagger)
+            probe = _probe(pairs, first, last, shape.stagger, view)
             held = method == "injective" and bool(held_in_mesh(probe, method))
             for part in [] if held else _join_choices(crowded, first, last):
                 joined = _pairs(first, last, shape.fill_rule, matching, rule, balance, links,
                                 (shape.cap, shape.join), part)
-                found = _join_measures(joined, first, last, method, shape.stagger)
+                found = _join_measures(joined, first, last, method, shape.stagger, view)
                 if found[0] <= plain[0] and found[1] <= max(plain[1], EVEN) and (best is None or found < best[0]):
                     best = found, joined
                     if found[0] == 0 and found[1] <= EVEN:
@@ -924,7 +947,7 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
                                     _paints(before, after, rule), (not before.hidden, not after.hidden),
                                     (before, after), flips, easing=easing_of(before), delay=before.delay,
                                     links=links if end == k + 1 else (), stagger=shape.stagger, spin=delta,
-                                    anchors=anchors, arcs=() if q == k < end - 1 else before.arcs))
+                                    anchors=anchors, arcs=() if q == k < end - 1 else before.arcs, view=view))
         k = end
     return Track(shape.name, tuple(segments), _still(keys[0]))
 
@@ -937,13 +960,14 @@ against those without: the keys as the first and last are approached (a contour 
 on an outline is apart from it there), and 11 between."""
 
 
-def _probe(pairs: tuple[Pair, ...], first: Key, last: Key, stagger: float) -> Segment:
-    """A segment of ``pairs`` from ``first`` to ``last`` for looking at how its contours move."""
+def _probe(pairs: tuple[Pair, ...], first: Key, last: Key, stagger: float, view: float = 0.0) -> Segment:
+    """A segment of ``pairs`` from ``first`` to ``last`` for looking at how its contours move (``view``: the
+    larger side of the drawing's view)."""
     return Segment(first.time, last.time, first.ease, pairs, (), (first.paint, last.paint), (True, True),
-                   stagger=stagger)
+                   stagger=stagger, view=view)
 
 
-def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float
+def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float, view: float = 0.0
                    ) -> tuple[int, float]:
     """How the in-betweens of ``pairs`` under ``method``, growing and shrinking clear of the moving ones (as
     if no mesh held them: joins are weighed against that, and holding is for the pairs kept), fare at
@@ -951,7 +975,7 @@ def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, 
     inner ones their contours tangle (:func:`.tangles.contact_times`, crossings and stroke crossings,
     among the contours that are more than a point then), and the largest change of their closed
     contours' signed area from one check to the next over the median change (the pops rule)."""
-    frames = method_paths(_probe(pairs, first, last, stagger), JOIN_CHECKS, method, hold=False)
+    frames = method_paths(_probe(pairs, first, last, stagger, view), JOIN_CHECKS, method, hold=False)
     inner = slice(1, len(JOIN_CHECKS) - 1)
     there = np.array([[bool(np.any(f[k] != f[k][:1])) for f in frames] for k in range(len(JOIN_CHECKS))])[inner]
     tangled: set[float] = set()
@@ -1001,14 +1025,14 @@ def _join_choices(crowded: frozenset[tuple[int, int]], first: Key, last: Key) ->
     return out
 
 
-def _crowded(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float
+def _crowded(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float, view: float = 0.0
              ) -> frozenset[tuple[int, int]]:
     """The contours without a partner that :func:`growths_of` finds no room to grow (shrink) over the
     whole segment from ``first`` to ``last`` under ``method`` (or no room at all), as (key 0 or 1, index)."""
     if all(p.moving or p.fades for p in pairs):
         return frozenset()
     out = set()
-    for pair, growth in zip(pairs, growths_of(_probe(pairs, first, last, stagger), method, hold=False)):
+    for pair, growth in zip(pairs, growths_of(_probe(pairs, first, last, stagger, view), method, hold=False)):
         if growth is not None and (growth.start > 0.0 or growth.stop < 1.0 or growth.stuck):
             out.add((1, pair.source[1]) if growth.grows else (0, pair.source[0]))
     return frozenset(out)  # type: ignore[arg-type]
@@ -1061,7 +1085,7 @@ def _half(pairs: Sequence[Pair], start: Key | None, end: Key | None) -> tuple[Pa
 
 
 def make_breakdowns(shape: Shape, matching: Matching, method: str, *, unmatched: str = "grow",
-                    balance: str = "copies") -> Shape:
+                    balance: str = "copies", view: float = 0.0) -> Shape:
     """``shape`` with each breakdown key's contours and paint made (maths §5.15): the in-between at its
     favour ``f`` of the segment it splits, by ``method`` (its correspondence, hints, turn and arcs; no
     easing). Several breakdowns in one segment are made in time order, each splitting what is left."""
@@ -1073,7 +1097,8 @@ def make_breakdowns(shape: Shape, matching: Matching, method: str, *, unmatched:
             continue
         end = next(e for e in range(k + 1, len(keys)) if keys[e].breakdown is None)
         partial = replace(shape, keys=tuple(keys[:k]) + tuple(keys[end:]))
-        segment = build_track(partial, matching, unmatched=unmatched, balance=balance, method=method).segments[k - 1]
+        segment = build_track(partial, matching, unmatched=unmatched, balance=balance, method=method,
+                              view=view).segments[k - 1]
         f = np.array([float(key.breakdown)])
         frames = pair_paths(segment, f, method)
         paint = blend_paints(*segment.paints, np.clip(f, 0.0, 1.0))[0]

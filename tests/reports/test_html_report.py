@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import html
 import re
 from pathlib import Path
 
@@ -133,3 +134,28 @@ def test_the_reports_videos_are_encoded_as_drafts(tmp_path: Path, monkeypatch: p
         for option, value in TABLE["webm"].draft:
             quick = command[command.index(option) + 1] == value
             assert quick == draft, (option, command)
+
+
+def test_the_page_says_what_auto_draws_what_tangles_and_why_injective_fell_back() -> None:
+    """The report prints what `render` draws and why (auto's method, balance and reason, as `stats` has them), the
+    whole-element tangles and stray of every method, and, where `injective` has no mesh, the reason: every text
+    escaped."""
+    import tweenrender as tr
+    from tests.helpers import DATA
+    from tweenrender.reports.html_report import page
+    from tweenrender.reports.stats import stats_dict
+
+    icons = DATA / "icons"
+    scene = tr.load_scene([icons / "bootstrap" / "check-circle.svg", icons / "simple-icons" / "python.svg"], step=1.0)
+    stats = stats_dict(scene, [0.25, 0.5, 0.75], ["linear", "injective"])
+    text = page(scene, [], stats, (64, 64))
+    entry = next(e for e in stats["shapes"] if e["methods"]["injective"]["fallback"])
+    auto = entry["auto"]
+    assert f"auto draws {auto['method']} (balance {auto['balance']})" in text
+    assert html.escape(auto["why"], quote=False) in text
+    assert html.escape(entry["methods"]["injective"]["fallback"], quote=False) in text
+    tangled = entry["methods"]["linear"]["crossings"]
+    assert tangled and f"t = {tangled[0]:g}" in text
+    assert f"{entry['methods']['linear']['stray_max']:.3f}" in text
+    stats["shapes"][0]["auto"]["why"] = "<b>bold</b> & more"
+    assert "&lt;b&gt;bold&lt;/b&gt; &amp; more" in page(scene, [], stats, (64, 64))

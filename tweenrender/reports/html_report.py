@@ -156,25 +156,36 @@ def _crossing_text(at: list[float]) -> str:
 def _table(entry: dict[str, Any]) -> str:
     start, end = entry["times"]
     m, n = entry["vertices"]
-    rows = []
+    rows, fallbacks = [], []
     for method, r in entry["methods"].items():
         ratios = " / ".join(f"{x:.4f}" for x in r["perimeter_ratio"])
         areas = " / ".join(f"{x:.4f}" for x in r["area_ratio"])
         crossing = _crossing_text(r["self_intersects"])
+        tangled = sorted(set(r.get("crossings", [])) | set(r.get("stroke_crossings", [])))
+        stray = r.get("stray_max")
         rows.append(f"<tr><td>{_esc(method)}</td><td>{ratios}</td><td>{areas}</td>"
                     f"<td>{r['edge_error_max']:.4f}</td><td>{r['angle_error_max']:.2f}</td>"
-                    f"<td class=\"{'bad' if r['self_intersects'] else ''}\">{_esc(crossing)}</td></tr>")
+                    f"<td class=\"{'bad' if r['self_intersects'] else ''}\">{_esc(crossing)}</td>"
+                    f"<td class=\"{'bad' if tangled else ''}\">{_esc(_crossing_text(tangled))}</td>"
+                    f"<td>{'' if stray is None else f'{stray:.3f}'}</td></tr>")
+        if r.get("fallback"):
+            fallbacks.append(f"<p class=\"note\">{_esc(method)}: no injective morph: {_esc(r['fallback'])}; "
+                             "the rigid paths are drawn</p>")
     where = _esc(entry["name"])
     if "element" in entry:
         where = f"element {_esc(entry['element'])}, contour {entry['contour']}"
     elif "contour" in entry:
         where += f", contour {entry['contour']}"
+    auto = entry.get("auto")
+    drawn = "" if auto is None else (f"<p>auto draws {_esc(auto['method'])} (balance {_esc(auto['balance'])}): "
+                                     f"{_esc(auto['why'])}</p>\n")
     return (f"<h3>{where}, segment {entry['segment']} ({start:g}–{end:g} s): {m} and {n} "
-            f"vertices, {entry['balanced']} after balancing</h3>\n"
+            f"vertices, {entry['balanced']} after balancing</h3>\n" + drawn +
             "<table><thead><tr><th>method</th><th>perimeter ratio at t = .25 / .5 / .75</th>"
             "<th>area ratio at t = .25 / .5 / .75</th><th>worst edge error</th>"
-            "<th>worst angle error (°)</th><th>crosses itself</th></tr></thead>\n<tbody>\n"
-            + "\n".join(rows) + "\n</tbody></table>")
+            "<th>worst angle error (°)</th><th>crosses itself</th><th>shape tangles</th>"
+            "<th>stray (share of area)</th></tr></thead>\n<tbody>\n"
+            + "\n".join(rows) + "\n</tbody></table>" + "".join("\n" + f for f in fallbacks))
 
 
 def stacking_words(scene: Scene, switches: Sequence[Switch]) -> list[str]:

@@ -23,7 +23,7 @@ from ..core.stacking import Switch, layered
 from ..errors import OptionError, printable
 from ..plan.options import own_method_first
 from ..model import Scene
-from .stats import crossing_runs
+from .stats import auto_words, crossing_runs, fallback_words
 
 __all__ = ["REPORT_FILE", "report_methods", "write_report", "page"]
 
@@ -169,16 +169,14 @@ def _table(entry: dict[str, Any]) -> str:
                     f"<td class=\"{'bad' if tangled else ''}\">{_esc(_crossing_text(tangled))}</td>"
                     f"<td>{'' if stray is None else f'{stray:.3f}'}</td></tr>")
         if r.get("fallback"):
-            fallbacks.append(f"<p class=\"note\">{_esc(method)}: no injective morph: {_esc(r['fallback'])}; "
-                             "the rigid paths are drawn</p>")
+            fallbacks.append(f"<p class=\"note\">{_esc(method)}: {_esc(fallback_words(r['fallback']))}</p>")
     where = _esc(entry["name"])
     if "element" in entry:
         where = f"element {_esc(entry['element'])}, contour {entry['contour']}"
     elif "contour" in entry:
         where += f", contour {entry['contour']}"
     auto = entry.get("auto")
-    drawn = "" if auto is None else (f"<p>auto draws {_esc(auto['method'])} (balance {_esc(auto['balance'])}): "
-                                     f"{_esc(auto['why'])}</p>\n")
+    drawn = "" if auto is None else f"<p>{_esc(auto_words(auto))}</p>\n"
     return (f"<h3>{where}, segment {entry['segment']} ({start:g}–{end:g} s): {m} and {n} "
             f"vertices, {entry['balanced']} after balancing</h3>\n" + drawn +
             "<table><thead><tr><th>method</th><th>perimeter ratio at t = .25 / .5 / .75</th>"

@@ -23,7 +23,7 @@ from ..model import Scene, Shape
 from ..plan.job import scene_view, total_frames
 from .segments import Entry, SegmentPaths, entries, nothing_measured
 
-__all__ = ["stats_dict", "stats_text", "crossing_runs", "STATS_METHODS", "POP_CELLS"]
+__all__ = ["stats_dict", "stats_text", "auto_words", "fallback_words", "crossing_runs", "STATS_METHODS", "POP_CELLS"]
 
 Array = NDArray[np.float64]
 
@@ -175,7 +175,7 @@ def stats_text(stats: dict[str, Any]) -> str:
         contour = f", contour {shape['contour']}" if "contour" in shape else ""
         lines += ["", f"SHAPE {shape['name']}, segment {shape['segment']}{contour} ({start:g} s to {end:g} s), "
                       f"{m} and {n} vertices, {shape['balanced']} after balancing",
-                  f"auto draws {shape['auto']['method']} (balance {shape['auto']['balance']}): {shape['auto']['why']}"]
+                  auto_words(shape["auto"])]
         for method, r in shape["methods"].items():
             lines += ["", f"{method.upper()} METHOD",
                       f"Perimeter of Left Polygon  = {r['perimeter_keys'][0]:.5f}",
@@ -200,7 +200,7 @@ def stats_text(stats: dict[str, Any]) -> str:
                          f"{r['angle_error_max']:.3f} degrees")
             lines.append(_crossing_words(r["self_intersects"]))
             if r.get("fallback"):
-                lines.append(f"No injective morph: {r['fallback']}; the rigid paths are drawn")
+                lines.append(fallback_words(r["fallback"]))
             if "crossings" in r:
                 lines += _quality_words(r)
             if "closure_tweak_max" in r:
@@ -227,6 +227,16 @@ def _quality_words(r: dict[str, Any]) -> list[str]:
     if "stray_max" in r:
         lines.append(f"At most {100 * r['stray_max']:.1f} % of an inbetween strays from both keys")
     return lines
+
+
+def auto_words(auto: dict[str, Any]) -> str:
+    """What ``auto`` draws and why, from an entry's ``auto`` (method, balance, why): one sentence."""
+    return f"auto draws {auto['method']} (balance {auto['balance']}): {auto['why']}"
+
+
+def fallback_words(reason: str) -> str:
+    """Why ``injective`` drew rigid paths (an entry's ``fallback``): one sentence."""
+    return f"No injective morph: {reason}; the rigid paths are drawn"
 
 
 def crossing_runs(at: Sequence[float]) -> list[tuple[float, float]]:

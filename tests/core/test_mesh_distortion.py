@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from tweenrender.core.methods.mesh_distortion import least_distortion, symmetric_dirichlet
 
@@ -82,3 +83,45 @@ def test_the_fits_normal_matrix_is_gt_c_g_entry_for_entry() -> None:
     expected += 1e-12 * expected.diagonal().mean() * np.eye(len(expected))
     got = NormalPattern(tri, rest, free, n * n).matrix(weight).toarray()
     assert np.allclose(got, expected, rtol=1e-12, atol=1e-12 * np.abs(expected).max())
+
+
+def _grid_pattern(seed: int):  # noqa: ANN202 - the pattern and what builds its matrices
+    from tweenrender.core.methods.mesh_distortion import NormalPattern
+
+    rng = np.random.default_rng(seed)
+    n = 7
+    points = np.array([[i, j] for j in range(n) for i in range(n)], float) + rng.uniform(-0.2, 0.2, (n * n, 2))
+    tri = np.array([t for j in range(n - 1) for i in range(n - 1) for t in
+                    ([j * n + i, j * n + i + 1, (j + 1) * n + i + 1], [j * n + i, (j + 1) * n + i + 1, (j + 1) * n + i])])
+    border = {v for v in range(n * n) if v % n in (0, n - 1) or v // n in (0, n - 1)}
+    free = np.array([v for v in range(n * n) if v not in border])
+    return NormalPattern(tri, _rest(points, tri), free, n * n), rng, len(tri)
+
+
+@pytest.mark.parametrize("ldlt", [True, False])
+def test_each_rounds_solve_is_the_dense_solve_of_its_own_normal_matrix(ldlt: bool, monkeypatch) -> None:
+    """Three rounds on one pattern, each with new weights (positive definite 2 × 2 per triangle, some
+    triangles left out), so the factorisation is refactored in place: each solution equals numpy's dense
+    solve of that round's matrix. Without the ``qdldl`` package the sparse LU gives the same."""
+    import builtins
+
+    if not ldlt:
+        real_import = builtins.__import__
+
+        def no_qdldl(name, *args, **kwargs):  # noqa: ANN001, ANN202
+            if name == "qdldl":
+                raise ImportError(name)
+            return real_import(name, *args, **kwargs)
+
+        monkeypatch.setattr(builtins, "__import__", no_qdldl)
+    pattern, rng, faces = _grid_pattern(11)
+    for _ in range(3):
+        a = rng.normal(size=(faces, 2, 2))
+        weight = a @ a.transpose(0, 2, 1) + 0.1 * np.eye(2)
+        weight[rng.random(faces) < 0.2] = 0.0
+        rhs = rng.normal(size=pattern.size)
+        expected = np.linalg.solve(pattern.matrix(weight).toarray(), rhs)
+        got = pattern.solve(weight, rhs)
+        assert got is not None
+        assert np.allclose(got, expected, rtol=1e-9, atol=1e-9 * np.abs(expected).max())
+

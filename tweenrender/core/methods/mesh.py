@@ -556,6 +556,11 @@ def _flip_folds(p: Array, q: Array, triangles: Triangles, folded: NDArray[np.boo
     owner: dict[tuple[int, int], int] = {}
     for t, (a, b, c) in enumerate(triangles.tolist()):
         owner[(a, b)], owner[(b, c)], owner[(c, a)] = t, t, t
+    keys = (p.tolist(), q.tolist())  # the two keys' vertices as floats: one candidate at a time
+
+    def valid(a: int, b: int, c: int) -> bool:  # counter-clockwise in both keys
+        return all(_orient(*x[a], *x[b], *x[c]) > 0 for x in keys)
+
     changed = False
     for t in np.flatnonzero(folded).tolist():
         a, b, c = triangles[t].tolist()
@@ -564,9 +569,8 @@ def _flip_folds(p: Array, q: Array, triangles: Triangles, folded: NDArray[np.boo
             if s is None:
                 continue
             d = [x for x in triangles[s].tolist() if x not in (u, v)][0]
-            new = np.array([[w, u, d], [d, v, w]], dtype=np.intp)
-            # both new triangles in p and in q, in one call (each determinant is the same taken alone)
-            if np.all(np.linalg.det(np.concatenate([edge_matrix(p, new), edge_matrix(q, new)])) > 0):
+            if valid(w, u, d) and valid(d, v, w):  # both new triangles, in p and in q
+                new = np.array([[w, u, d], [d, v, w]], dtype=np.intp)
                 triangles[t], triangles[s] = new
                 for k, tri in ((t, new[0]), (s, new[1])):
                     x0, x1, x2 = tri.tolist()

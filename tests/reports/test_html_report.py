@@ -159,3 +159,27 @@ def test_the_page_says_what_auto_draws_what_tangles_and_why_injective_fell_back(
     assert f"{entry['methods']['linear']['stray_max']:.3f}" in text
     stats["shapes"][0]["auto"]["why"] = "<b>bold</b> & more"
     assert "&lt;b&gt;bold&lt;/b&gt; &amp; more" in page(scene, [], stats, (64, 64))
+
+
+def test_the_page_says_where_an_element_of_strokes_alone_crosses(tmp_path) -> None:
+    """An element of open strokes alone (an upright stroke sliding through a level one) has a table of its own:
+    what auto draws and, per method, where its strokes cross, as `stats` has them; its name escaped."""
+    import tweenrender as tr
+    from tweenrender.reports.html_report import page
+    from tweenrender.reports.stats import stats_dict
+
+    def drawing(x: float):  # noqa: ANN202
+        path = tmp_path / f"s{x:g}.svg"
+        path.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40"><path id="a&amp;b" fill="none" '
+                        f'stroke="#000" d="M{x} 10 L{x} 30 M18.5 20 L21.5 20"/></svg>')
+        return path
+
+    scene = tr.load_scene([drawing(10), drawing(30)], step=1.0)
+    stats = stats_dict(scene, [0.5], ["linear"])
+    text = page(scene, [], stats, (64, 64))
+    (entry,) = stats["strokes"]
+    crossed = entry["methods"]["linear"]["stroke_crossings"]
+    assert crossed and f"t = {crossed[0]:g}–{crossed[-1]:g}" in text
+    assert "element a&amp;b, segment 0" in text and "2 open strokes" in text
+    assert html.escape(entry["auto"]["why"], quote=False) in text
+    assert "measured for crossings" in text

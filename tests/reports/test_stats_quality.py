@@ -199,3 +199,39 @@ def test_pops_measure_each_shapes_frames_once_for_the_methods_that_draw_them_ali
     found = stats_dict(scene, [0.5])
     assert found["pops"] == apart
     assert len(measured) == len(distinct) < len(STATS_METHODS) * len(scene.shapes)
+
+
+
+def _two_strokes(folder, x: float):  # noqa: ANN001, ANN202
+    """A drawing of one element, two open strokes: a long upright one at ``x`` and a short level one at
+    x = 18.5 … 21.5, y = 20."""
+    path = folder / f"strokes-{x:g}.svg"
+    path.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40">'
+                    f'<path id="strokes" fill="none" stroke="#000" d="M{x} 10 L{x} 30 M18.5 20 L21.5 20"/></svg>')
+    return path
+
+
+def test_an_element_of_open_strokes_alone_is_measured_for_crossings(tmp_path) -> None:
+    """An element whose contours are all open strokes has no closed contour for the thesis's measures, but its
+    strokes can still cross: an upright stroke slides from x = 10 to 30 through a short level one at
+    x = 18.5 … 21.5. They are apart in both keys, and on the straight paths meet from t = 0.425 to 0.575.
+    `stats` reports the element under ``strokes``, with what auto draws and, per method, the t at which
+    shapely finds the drawn strokes crossing; no stray, which is measured on closed outlines' area."""
+    import shapely
+
+    scene = tr.load_scene([_two_strokes(tmp_path, 10), _two_strokes(tmp_path, 30)], step=1.0)
+    stats = stats_dict(scene, [0.5], ["linear"])
+    assert stats["shapes"] == []
+    (entry,) = stats["strokes"]
+    assert entry["element"] == "strokes" and entry["times"] == [0.0, 1.0] and entry["strokes"] == 2
+    assert set(entry["auto"]) == {"method", "balance", "why"}
+    seen = []
+    for t in SWEEP:
+        upright, level = (shapely.LineString(c.points) for c in tr.contours(scene, float(t), method="linear"))
+        if upright.intersects(level):
+            seen.append(float(t))
+    assert seen and seen[0] == pytest.approx(0.43) and seen[-1] == pytest.approx(0.57)
+    assert entry["methods"]["linear"]["stroke_crossings"] == seen and "stray_max" not in entry["methods"]["linear"]
+    words = stats_text(stats)
+    assert "STROKES strokes, segment 0" in words and "Its strokes cross at t = 0.43 to 0.57" in words
+    assert "the thesis's measures need closed outlines" in words

@@ -23,7 +23,7 @@ from ..core.stacking import Switch, layered
 from ..errors import OptionError, printable
 from ..plan.options import own_method_first
 from ..model import Scene
-from .stats import auto_words, crossing_runs, fallback_words
+from .stats import auto_words, crossing_runs, fallback_words, strokes_words
 
 __all__ = ["REPORT_FILE", "report_methods", "write_report", "page"]
 
@@ -186,6 +186,24 @@ def _table(entry: dict[str, Any]) -> str:
             + "\n".join(rows) + "\n</tbody></table>" + "".join("\n" + f for f in fallbacks))
 
 
+def _strokes_table(entry: dict[str, Any]) -> str:
+    """A segment of open strokes alone (``stats``' ``strokes``): what auto draws, and per method where the
+    element tangles and where its strokes cross."""
+    start, end = entry["times"]
+    rows, fallbacks = [], []
+    for method, r in entry["methods"].items():
+        rows.append(f"<tr><td>{_esc(method)}</td>"
+                    f"<td class=\"{'bad' if r['crossings'] else ''}\">{_esc(_crossing_text(r['crossings']))}</td>"
+                    f"<td class=\"{'bad' if r['stroke_crossings'] else ''}\">"
+                    f"{_esc(_crossing_text(r['stroke_crossings']))}</td></tr>")
+        if r.get("fallback"):
+            fallbacks.append(f"<p class=\"note\">{_esc(method)}: {_esc(fallback_words(r['fallback']))}</p>")
+    return (f"<h3>element {_esc(entry['name'])}, segment {entry['segment']} ({start:g}–{end:g} s): "
+            f"{strokes_words(entry['strokes'])}</h3>\n<p>{_esc(auto_words(entry['auto']))}</p>\n"
+            "<table><thead><tr><th>method</th><th>shape tangles</th><th>strokes cross</th></tr></thead>\n<tbody>\n"
+            + "\n".join(rows) + "\n</tbody></table>" + "".join("\n" + f for f in fallbacks))
+
+
 def stacking_words(scene: Scene, switches: Sequence[Switch]) -> list[str]:
     """One sentence per switch of paint order: when, and which elements change places."""
     names = [shape.name for shape in scene.shapes]
@@ -213,6 +231,7 @@ def page(scene: Scene, videos: Sequence[tuple[str, str]], stats: dict[str, Any],
         f'preload="auto"></video><figcaption>{_esc(method)}</figcaption></figure>' for method, name in videos)
     nothing = stats.get("note", "no shape has two keys: nothing moves")
     tables = "\n".join(_table(entry) for entry in stats["shapes"]) or f"<p>{_esc(nothing[0].upper() + nothing[1:])}.</p>"
+    tables += "".join("\n" + _strokes_table(entry) for entry in stats.get("strokes", []))
     source = _esc(scene.path) if scene.path else "a scene built in Python"
     stacking = "".join(f"<p>{_esc(words)}</p>\n" for words in stacking_words(scene, switches))
     if stacking:

@@ -11,7 +11,7 @@ from numpy.typing import NDArray
 from ..core.timing.timeline import Pair, Segment, pair_paths, tracks_of
 from ..model import Matching, Scene, Shape
 
-__all__ = ["Entry", "entries", "nothing_measured", "SegmentPaths"]
+__all__ = ["Entry", "entries", "nothing_measured", "SegmentPaths", "stroke_entries"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -53,6 +53,20 @@ def entries(scene: Scene, matching: Matching | None = None, closed_only: bool = 
                 if not pair.moving or (closed_only and (not pair.closed or len(pair.k0) < 3)):
                     continue
                 yield Entry(shape, index, segment, k if several else None, pair)
+
+
+def stroke_entries(scene: Scene) -> Iterator[Entry]:
+    """One entry for each segment whose moving contours are all open strokes (so :func:`entries` with
+    ``closed_only`` gives none for it): its first moving stroke stands for the segment."""
+    for shape, track in zip(scene.shapes, tracks_of(scene)):
+        for index, segment in enumerate(track.segments):
+            if not all(segment.shown):
+                continue
+            moving = [k for k, pair in enumerate(segment.pairs) if pair.moving]
+            if not moving or any(segment.pairs[k].closed and len(segment.pairs[k].k0) >= 3 for k in moving):
+                continue
+            k = moving[0]
+            yield Entry(shape, index, segment, k if len(segment.pairs) > 1 else None, segment.pairs[k])
 
 
 def nothing_measured(scene: Scene, closed_only: bool = True) -> str:

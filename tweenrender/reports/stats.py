@@ -21,9 +21,10 @@ from ..core.timing.timeline import (ShapeAt, Track, evaluate_segment, injective_
 from ..core.view import Viewport
 from ..model import Scene, Shape
 from ..plan.job import scene_view, total_frames
-from .segments import Entry, SegmentPaths, entries, nothing_measured
+from .segments import Entry, SegmentPaths, entries, nothing_measured, stroke_entries
 
-__all__ = ["stats_dict", "stats_text", "auto_words", "fallback_words", "crossing_runs", "STATS_METHODS", "POP_CELLS"]
+__all__ = ["stats_dict", "stats_text", "auto_words", "fallback_words", "strokes_words", "crossing_runs", "STATS_METHODS",
+           "POP_CELLS"]
 
 Array = NDArray[np.float64]
 
@@ -71,6 +72,7 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
                      "why": choice.why},
             "methods": measured,
         })
+    strokes = [_strokes_entry(entry, scene, methods, every, quality, paths) for entry in stroke_entries(scene)]
     # the view is worked out last: some methods keep what they worked out for the next call, so the
     # measures above see the calls in the order they always did
     tracks = tracks_of(scene)
@@ -78,12 +80,39 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
     reach = STRAY_REACH * max(view[2] - view[0], view[3] - view[1])
     for measures, found in filled_in:
         measures["stray_max"] = found.stray_max(reach)
-    out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes}
+    out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes, "strokes": strokes}
     if not shapes:
-        out["note"] = nothing_measured(scene)
+        out["note"] = _STROKES_ONLY if strokes else nothing_measured(scene)
     measured_changes: dict[tuple[int, bytes], Array] = {}
     out["pops"] = {m: _pops(scene, tracks, view, m, measured_changes) for m in (every or STATS_METHODS)}
     return out
+
+
+_STROKES_ONLY = ("no closed contour is in both keys of a segment: the thesis's measures need closed outlines; "
+                 "the open strokes are measured for crossings (STROKES)")
+
+
+def _strokes_entry(entry: Entry, scene: Scene, methods: Sequence[str] | None, every: dict[str, None],
+                   quality: dict[tuple[int, int, str], "_Quality"], paths: SegmentPaths) -> dict[str, Any]:
+    """A segment of open strokes alone (``strokes`` in ``stats --json``): what auto draws, and per method where
+    the element's contours tangle and its strokes cross (and why ``injective`` drew rigid paths). No stray:
+    it is measured on the area closed outlines enclose."""
+    segment, joints = entry.segment, entry.segment.joints
+    names = tuple(methods) if methods is not None else measured_methods(jointed=bool(joints))
+    every.update(dict.fromkeys(names))
+    choice = segment_choice(segment) or auto_choice(entry.pair.k0, entry.pair.k1, joints)
+    measured: dict[str, dict[str, Any]] = {}
+    for method in names:
+        found = _quality(entry, method, quality, paths, areas=False)
+        measured[method] = {"crossings": list(found.crossings), "stroke_crossings": list(found.strokes)}
+        if method == "injective":
+            measured[method]["fallback"] = injective_fallback_of(segment)
+    head = entry.head()
+    head.pop("contour", None)
+    return {**head, "strokes": sum(1 for pair in segment.pairs if pair.moving),
+            "auto": {"method": choice.method, "balance": choice.balance or scene.balance_of(entry.shape),
+                     "why": choice.why},
+            "methods": measured}
 
 
 @dataclass(slots=True)
@@ -105,10 +134,10 @@ class _Quality:
 
 
 def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Quality],
-             paths: SegmentPaths) -> _Quality:
+             paths: SegmentPaths, areas: bool = True) -> _Quality:
     """The entry's shape's quality in its segment under ``method`` (docs/methods.md): ``crossings`` and
     ``stroke_crossings`` (:func:`~tweenrender.core.tangles.contact_times`, over every contour drawn
-    through the segment, growing and shrinking ones too), and the areas ``stray_max`` is measured on."""
+    through the segment, growing and shrinking ones too), and (with ``areas``) the areas ``stray_max`` is measured on."""
     key = (id(entry.shape), entry.index, method)
     if key not in done:
         segment = entry.segment
@@ -121,7 +150,7 @@ def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Qualit
                                            [frames[k][0] for k in drawn_through],
                                            [frames[k][-1] for k in drawn_through])
         few = [f[_STRAY_ROWS] for f in frames]
-        drawn = [_area(at, entry.shape) for at in evaluate_segment(segment, STRAY_SWEEP, method, few)]
+        drawn = [_area(at, entry.shape) for at in evaluate_segment(segment, STRAY_SWEEP, method, few)] if areas else []
         done[key] = _Quality(crossings, strokes, drawn)
     return done[key]
 
@@ -206,8 +235,16 @@ def stats_text(stats: dict[str, Any]) -> str:
             if "closure_tweak_max" in r:
                 lines.append(f"Closing the walk changed the lengths by at most {100 * r['closure_tweak_max']:.2f} % "
                              "of the perimeter")
+    for entry in stats.get("strokes", []):
+        start, end = entry["times"]
+        lines += ["", f"STROKES {entry['name']}, segment {entry['segment']} ({start:g} s to {end:g} s), "
+                      f"{strokes_words(entry['strokes'])} moving", auto_words(entry["auto"])]
+        for method, r in entry["methods"].items():
+            lines += [f"{method.upper()} METHOD"] + _quality_words(r)
+            if r.get("fallback"):
+                lines.append(fallback_words(r["fallback"]))
     if not stats["shapes"]:
-        lines.append(stats.get("note", "no shape has two keys: nothing moves"))
+        lines += ["", stats.get("note", "no shape has two keys: nothing moves")]
     if stats.get("pops"):
         lines += ["", "POPS (frames changing over 3x the clip's median change)"]
         lines += [f"{method}: " + (f"frames {', '.join(map(str, at))}" if at else "none")
@@ -232,6 +269,11 @@ def _quality_words(r: dict[str, Any]) -> list[str]:
 def auto_words(auto: dict[str, Any]) -> str:
     """What ``auto`` draws and why, from an entry's ``auto`` (method, balance, why): one sentence."""
     return f"auto draws {auto['method']} (balance {auto['balance']}): {auto['why']}"
+
+
+def strokes_words(count: int) -> str:
+    """``"1 open stroke"``, ``"3 open strokes"``."""
+    return f"{count} open stroke{'' if count == 1 else 's'}"
 
 
 def fallback_words(reason: str) -> str:

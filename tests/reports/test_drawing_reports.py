@@ -58,6 +58,27 @@ def test_open_strokes_that_move_are_not_said_to_stand_still() -> None:
     assert "no shape has two keys" not in correspond_text(correspond_dict(scene))
 
 
+def test_the_pictures_of_open_strokes_alone_say_why_they_have_no_panel() -> None:
+    """The charts and the Q-curve plot of a pair whose moving contours are open strokes have no panel; they say
+    what the text reports say (the measures need closed outlines), drawn as the same note would be, never
+    that nothing moves."""
+    from tweenrender.raster.plots.metric_plot import metrics_picture
+    from tweenrender.raster.plots.qcurve_plot import qcurves_picture
+    from tweenrender.reports.metric_report import metrics_png
+    from tweenrender.reports.qcurve_report import report_picture
+    from tweenrender.reports.segments import nothing_measured
+
+    scene = tr.load_scene([ICONS / "feather" / "check.svg", ICONS / "tabler" / "letter-a.svg"])
+    note = nothing_measured(scene)
+    assert "nothing moves" not in note
+    charts = metrics_png(scene, ["linear"])
+    assert np.array_equal(charts, metrics_picture([], note=note))
+    assert not np.array_equal(charts, metrics_picture([], note="no shape has two keys: nothing moves"))
+    curves = qcurves_dict(scene)
+    assert np.array_equal(report_picture(curves), qcurves_picture([], note=curves["note"]))
+    assert not np.array_equal(report_picture(curves), qcurves_picture([], note="no shape has two keys: nothing moves"))
+
+
 def test_the_report_of_a_drawing_pair_in_a_real_browser(tmp_path: Path) -> None:
     if chromium() is None:
         pytest.skip("Debian's chromium is not installed (apt-get install chromium); .ci/run installs it")

@@ -68,6 +68,14 @@ class Painter:
             self.text(line, x + 14 * s, y + (44 + 17 * k) * s, 13, SOFT)
         return len(lines)
 
+    def note(self, words: str, x: float, middle: float, width: float, size: float = 16) -> None:
+        """``words`` at ``size`` (before scaling), wrapped to ``width`` pixels from ``x``, the lines' baselines
+        centred on pixel row ``middle``."""
+        lines = wrap(words, size * self.scale, width)
+        step = 1.35 * size * self.scale
+        for k, line in enumerate(lines):
+            self.text(line, x, middle + (k - (len(lines) - 1) / 2) * step, size)
+
     def text_width(self, words: str, size: float, bold: bool = False) -> float:
         """Pixels ``words`` take at ``size`` (before scaling)."""
         return font(size * self.scale, bold).measureText(words)

@@ -9,7 +9,7 @@ import numpy as np
 
 from ..core.measures import SWEEP, curves
 from ..model import Scene
-from .segments import SegmentPaths, entries
+from .segments import SegmentPaths, entries, nothing_measured
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -57,7 +57,7 @@ def metrics_png(scene: Scene, methods: Sequence[str]) -> NDArray[np.uint8]:
     """The charts of :func:`metric_panels`: straight RGBA ``(H, W, 4)``."""
     from ..raster.plots.metric_plot import metrics_picture
 
-    return metrics_picture(metric_panels(scene, methods))
+    return metrics_picture(metric_panels(scene, methods), note=nothing_measured(scene))
 
 
 def write_metric_plot(scene: Scene, methods: Sequence[str], target: Path) -> Path:

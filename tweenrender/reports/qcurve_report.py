@@ -142,7 +142,7 @@ def report_picture(report: dict[str, Any]) -> NDArray[np.uint8]:
     """The ``qcurves`` plot of a report: straight RGBA ``(H, W, 4)``."""
     from ..raster.plots.qcurve_plot import qcurves_picture
 
-    return qcurves_picture(report_panels(report))
+    return qcurves_picture(report_panels(report), **({"note": report["note"]} if "note" in report else {}))
 
 
 def write_qcurve_plot(report: dict[str, Any], target: Path) -> Path:

@@ -21,7 +21,7 @@ from ...model import Color
 from ..painter import SOFT as _SOFT
 from ..painter import Painter
 from ..surface import Raster, paint_color
-from .qcurve_plot import PALETTE
+from .qcurve_plot import NOTHING_MOVES, PALETTE
 
 __all__ = ["MPanel", "MEASURES", "metrics_picture", "nice_ticks"]
 
@@ -178,8 +178,8 @@ def _panel(p: _Painter, panel: MPanel, x: float, y: float, width: float, height:
 
 
 def metrics_picture(panels: Sequence[MPanel], panel_size: tuple[int, int] = (960, 640),
-                    scale: float = 1.0) -> NDArray[np.uint8]:
-    """Every panel stacked in one column, straight RGBA ``(H, W, 4)``."""
+                    scale: float = 1.0, note: str = NOTHING_MOVES) -> NDArray[np.uint8]:
+    """Every panel stacked in one column, straight RGBA ``(H, W, 4)``; without panels, ``note`` says why."""
     w = int(panel_size[0] * scale)
     heights = [int((panel_size[1] + 14 * max(0, len(panel.series) - 4)) * scale) for panel in panels] or \
         [int(120 * scale)]
@@ -187,7 +187,7 @@ def metrics_picture(panels: Sequence[MPanel], panel_size: tuple[int, int] = (960
     raster.clear(_BACK)
     painter = _Painter(raster, scale)
     if not panels:
-        painter.text("no shape has two keys: nothing moves", 20 * scale, heights[0] / 2, 16)
+        painter.note(note, 20 * scale, heights[0] / 2, w - 40 * scale)
     top = 0.0
     for panel, h in zip(panels, heights):
         if top > 0:

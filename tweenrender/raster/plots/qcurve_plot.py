@@ -23,7 +23,10 @@ from ..painter import SOFT as _SOFT
 from ..painter import Painter
 from ..surface import Raster, paint_color
 
-__all__ = ["QPanel", "PALETTE", "axis_range", "qcurves_picture"]
+__all__ = ["QPanel", "PALETTE", "NOTHING_MOVES", "axis_range", "qcurves_picture"]
+
+NOTHING_MOVES = "no shape has two keys: nothing moves"
+"""What a picture without panels says unless told why it has none."""
 
 PALETTE: tuple[Color, ...] = (
     (31, 119, 180, 255), (214, 39, 40, 255), (44, 160, 44, 255), (255, 127, 14, 255),
@@ -208,8 +211,9 @@ def _panel(p: _Painter, panel: QPanel, x: float, y: float, width: float, height:
 
 
 def qcurves_picture(panels: Sequence[QPanel], panel_size: tuple[int, int] = (620, 680),
-                    columns: int | None = None, scale: float = 1.0) -> NDArray[np.uint8]:
-    """Every panel in a grid (``columns`` default: up to 3), straight RGBA ``(H, W, 4)``."""
+                    columns: int | None = None, scale: float = 1.0, note: str = NOTHING_MOVES) -> NDArray[np.uint8]:
+    """Every panel in a grid (``columns`` default: up to 3), straight RGBA ``(H, W, 4)``; without panels,
+    ``note`` says why."""
     count = max(len(panels), 1)
     columns = columns or min(count, 3)
     rows = -(-count // columns)
@@ -218,7 +222,7 @@ def qcurves_picture(panels: Sequence[QPanel], panel_size: tuple[int, int] = (620
     raster.clear(_BACK)
     painter = _Painter(raster, scale)
     if not panels:
-        painter.text("no shape has two keys: nothing moves", 20 * scale, h / 2, 16)
+        painter.note(note, 20 * scale, h / 2, w * columns - 40 * scale)
     for k, panel in enumerate(panels):
         _panel(painter, panel, (k % columns) * w, (k // columns) * h, w, h)
     return raster.rgba().copy()

@@ -162,7 +162,8 @@ def test_the_page_says_what_auto_draws_what_tangles_and_why_injective_fell_back(
 
 
 def test_the_page_says_where_an_element_of_strokes_alone_crosses(tmp_path) -> None:
-    """An element of open strokes alone (an upright stroke sliding through a level one) has a table of its own:
+    """An element of open strokes alone (an upright stroke sliding through a level one) has a table of its own
+    (``others``):
     what auto draws and, per method, where its strokes cross, as `stats` has them; its name escaped."""
     import tweenrender as tr
     from tweenrender.reports.html_report import page
@@ -177,9 +178,9 @@ def test_the_page_says_where_an_element_of_strokes_alone_crosses(tmp_path) -> No
     scene = tr.load_scene([drawing(10), drawing(30)], step=1.0)
     stats = stats_dict(scene, [0.5], ["linear"])
     text = page(scene, [], stats, (64, 64))
-    (entry,) = stats["strokes"]
+    (entry,) = stats["others"]
     crossed = entry["methods"]["linear"]["stroke_crossings"]
     assert crossed and f"t = {crossed[0]:g}–{crossed[-1]:g}" in text
     assert "element a&amp;b, segment 0" in text and "2 open strokes" in text
     assert html.escape(entry["auto"]["why"], quote=False) in text
-    assert "measured for crossings" in text
+    assert "measured for tangles" in text

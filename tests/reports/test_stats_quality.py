@@ -215,15 +215,15 @@ def test_an_element_of_open_strokes_alone_is_measured_for_crossings(tmp_path) ->
     """An element whose contours are all open strokes has no closed contour for the thesis's measures, but its
     strokes can still cross: an upright stroke slides from x = 10 to 30 through a short level one at
     x = 18.5 … 21.5. They are apart in both keys, and on the straight paths meet from t = 0.425 to 0.575.
-    `stats` reports the element under ``strokes``, with what auto draws and, per method, the t at which
+    `stats` reports the element under ``others``, with what auto draws and, per method, the t at which
     shapely finds the drawn strokes crossing; no stray, which is measured on closed outlines' area."""
     import shapely
 
     scene = tr.load_scene([_two_strokes(tmp_path, 10), _two_strokes(tmp_path, 30)], step=1.0)
     stats = stats_dict(scene, [0.5], ["linear"])
     assert stats["shapes"] == []
-    (entry,) = stats["strokes"]
-    assert entry["element"] == "strokes" and entry["times"] == [0.0, 1.0] and entry["strokes"] == 2
+    (entry,) = stats["others"]
+    assert entry["element"] == "strokes" and entry["times"] == [0.0, 1.0] and (entry["strokes"], entry["growing"]) == (2, 0)
     assert set(entry["auto"]) == {"method", "balance", "why"}
     seen = []
     for t in SWEEP:
@@ -233,5 +233,36 @@ def test_an_element_of_open_strokes_alone_is_measured_for_crossings(tmp_path) ->
     assert seen and seen[0] == pytest.approx(0.43) and seen[-1] == pytest.approx(0.57)
     assert entry["methods"]["linear"]["stroke_crossings"] == seen and "stray_max" not in entry["methods"]["linear"]
     words = stats_text(stats)
-    assert "STROKES strokes, segment 0" in words and "Its strokes cross at t = 0.43 to 0.57" in words
-    assert "the thesis's measures need closed outlines" in words
+    assert "OTHERS strokes, segment 0 (0 s to 1 s): 2 open strokes" in words
+    assert "Its strokes cross at t = 0.43 to 0.57" in words and "the thesis's measures need closed outlines" in words
+
+
+def test_an_element_whose_contours_all_grow_or_shrink_is_measured_for_tangles(tmp_path) -> None:
+    """A level stroke 36 long with no partner shrinks to its middle while a square 20 wide, with none either,
+    grows from the same point: the stroke pokes through the square's sides until its half-length falls
+    below the square's half-side (each scaled by the square root of its share of area, 18·√(1 − t) = 10·√t at
+    t = 0.764). No contour is in both keys, so auto has nothing to choose over (``None``);
+    ``others`` still gives where the stroke crosses, at the t where shapely finds the drawn stroke and square
+    boundary meeting (a contour one point at a key meets nothing there)."""
+    import shapely
+
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40"><path id="e" fill="none" '
+                 'stroke="#000" d="M2 20 L38 20"/></svg>')
+    b.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40"><path id="e" fill="none" '
+                 'stroke="#000" d="M10 30 L30 30 L30 10 L10 10 Z"/></svg>')
+    scene = tr.load_scene([a, b], step=1.0)
+    stats = stats_dict(scene, [0.5], ["linear"])
+    (entry,) = stats["others"]
+    assert (entry["strokes"], entry["growing"], entry["auto"]) == (1, 2, None)
+    seen = []
+    for t in SWEEP[1:-1]:
+        stroke, square = tr.contours(scene, float(t), method="linear")
+        assert not stroke.closed and square.closed
+        if shapely.LineString(stroke.points).intersects(shapely.LinearRing(square.points)):
+            seen.append(float(t))
+    assert seen[-1] == pytest.approx(0.76) and seen == [float(t) for t in SWEEP[1:len(seen) + 1]]
+    assert entry["methods"]["linear"]["stroke_crossings"] == seen
+    assert entry["methods"]["linear"]["crossings"] == []
+    assert "1 open stroke, 2 contours growing or shrinking" in stats_text(stats)
+    assert "auto has no contour in both keys to choose over" in stats_text(stats)

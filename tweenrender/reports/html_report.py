@@ -23,7 +23,7 @@ from ..core.stacking import Switch, layered
 from ..errors import OptionError, printable
 from ..plan.options import own_method_first
 from ..model import Scene
-from .stats import auto_words, crossing_runs, fallback_words, strokes_words
+from .stats import auto_words, crossing_runs, fallback_words, others_words
 
 __all__ = ["REPORT_FILE", "report_methods", "write_report", "page"]
 
@@ -186,9 +186,9 @@ def _table(entry: dict[str, Any]) -> str:
             + "\n".join(rows) + "\n</tbody></table>" + "".join("\n" + f for f in fallbacks))
 
 
-def _strokes_table(entry: dict[str, Any]) -> str:
-    """A segment of open strokes alone (``stats``' ``strokes``): what auto draws, and per method where the
-    element tangles and where its strokes cross."""
+def _others_table(entry: dict[str, Any]) -> str:
+    """A segment with no closed contour in both keys (``stats``' ``others``): what auto draws, and per method
+    where the element tangles and where its strokes cross."""
     start, end = entry["times"]
     rows, fallbacks = [], []
     for method, r in entry["methods"].items():
@@ -198,8 +198,9 @@ def _strokes_table(entry: dict[str, Any]) -> str:
                     f"{_esc(_crossing_text(r['stroke_crossings']))}</td></tr>")
         if r.get("fallback"):
             fallbacks.append(f"<p class=\"note\">{_esc(method)}: {_esc(fallback_words(r['fallback']))}</p>")
+    auto = auto_words(entry["auto"]) if entry["auto"] else "auto has no contour in both keys to choose over"
     return (f"<h3>element {_esc(entry['name'])}, segment {entry['segment']} ({start:g}–{end:g} s): "
-            f"{strokes_words(entry['strokes'])}</h3>\n<p>{_esc(auto_words(entry['auto']))}</p>\n"
+            f"{_esc(others_words(entry))}</h3>\n<p>{_esc(auto)}</p>\n"
             "<table><thead><tr><th>method</th><th>shape tangles</th><th>strokes cross</th></tr></thead>\n<tbody>\n"
             + "\n".join(rows) + "\n</tbody></table>" + "".join("\n" + f for f in fallbacks))
 
@@ -231,7 +232,7 @@ def page(scene: Scene, videos: Sequence[tuple[str, str]], stats: dict[str, Any],
         f'preload="auto"></video><figcaption>{_esc(method)}</figcaption></figure>' for method, name in videos)
     nothing = stats.get("note", "no shape has two keys: nothing moves")
     tables = "\n".join(_table(entry) for entry in stats["shapes"]) or f"<p>{_esc(nothing[0].upper() + nothing[1:])}.</p>"
-    tables += "".join("\n" + _strokes_table(entry) for entry in stats.get("strokes", []))
+    tables += "".join("\n" + _others_table(entry) for entry in stats.get("others", []))
     source = _esc(scene.path) if scene.path else "a scene built in Python"
     stacking = "".join(f"<p>{_esc(words)}</p>\n" for words in stacking_words(scene, switches))
     if stacking:

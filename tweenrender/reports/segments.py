@@ -11,7 +11,7 @@ from numpy.typing import NDArray
 from ..core.timing.timeline import Pair, Segment, pair_paths, tracks_of
 from ..model import Matching, Scene, Shape
 
-__all__ = ["Entry", "entries", "nothing_measured", "SegmentPaths", "stroke_entries"]
+__all__ = ["Entry", "entries", "nothing_measured", "SegmentPaths", "other_entries"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -55,17 +55,17 @@ def entries(scene: Scene, matching: Matching | None = None, closed_only: bool = 
                 yield Entry(shape, index, segment, k if several else None, pair)
 
 
-def stroke_entries(scene: Scene) -> Iterator[Entry]:
-    """One entry for each segment whose moving contours are all open strokes (so :func:`entries` with
-    ``closed_only`` gives none for it): its first moving stroke stands for the segment."""
+def other_entries(scene: Scene) -> Iterator[Entry]:
+    """One entry for each segment that draws contours through it but has no closed contour in both keys,
+    which :func:`entries` with ``closed_only`` leaves out: open strokes, contours growing from or shrinking
+    to a point. Its first moving contour (else its first drawn through) stands for the segment."""
     for shape, track in zip(scene.shapes, tracks_of(scene)):
         for index, segment in enumerate(track.segments):
-            if not all(segment.shown):
+            drawn = [k for k, pair in enumerate(segment.pairs) if not pair.fades]
+            if not all(segment.shown) or not drawn or any(
+                    pair.moving and pair.closed and len(pair.k0) >= 3 for pair in segment.pairs):
                 continue
-            moving = [k for k, pair in enumerate(segment.pairs) if pair.moving]
-            if not moving or any(segment.pairs[k].closed and len(segment.pairs[k].k0) >= 3 for k in moving):
-                continue
-            k = moving[0]
+            k = next((k for k in drawn if segment.pairs[k].moving), drawn[0])
             yield Entry(shape, index, segment, k if len(segment.pairs) > 1 else None, segment.pairs[k])
 
 

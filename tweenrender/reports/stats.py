@@ -21,9 +21,9 @@ from ..core.timing.timeline import (ShapeAt, Track, evaluate_segment, injective_
 from ..core.view import Viewport
 from ..model import Scene, Shape
 from ..plan.job import scene_view, total_frames
-from .segments import Entry, SegmentPaths, entries, nothing_measured, stroke_entries
+from .segments import Entry, SegmentPaths, entries, nothing_measured, other_entries
 
-__all__ = ["stats_dict", "stats_text", "auto_words", "fallback_words", "strokes_words", "crossing_runs", "STATS_METHODS",
+__all__ = ["stats_dict", "stats_text", "auto_words", "fallback_words", "others_words", "crossing_runs", "STATS_METHODS",
            "POP_CELLS"]
 
 Array = NDArray[np.float64]
@@ -72,7 +72,7 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
                      "why": choice.why},
             "methods": measured,
         })
-    strokes = [_strokes_entry(entry, scene, methods, every, quality, paths) for entry in stroke_entries(scene)]
+    others = [_other_entry(entry, scene, methods, every, quality, paths) for entry in other_entries(scene)]
     # the view is worked out last: some methods keep what they worked out for the next call, so the
     # measures above see the calls in the order they always did
     tracks = tracks_of(scene)
@@ -80,27 +80,28 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
     reach = STRAY_REACH * max(view[2] - view[0], view[3] - view[1])
     for measures, found in filled_in:
         measures["stray_max"] = found.stray_max(reach)
-    out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes, "strokes": strokes}
+    out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes, "others": others}
     if not shapes:
-        out["note"] = _STROKES_ONLY if strokes else nothing_measured(scene)
+        out["note"] = _OTHERS_ONLY if others else nothing_measured(scene)
     measured_changes: dict[tuple[int, bytes], Array] = {}
     out["pops"] = {m: _pops(scene, tracks, view, m, measured_changes) for m in (every or STATS_METHODS)}
     return out
 
 
-_STROKES_ONLY = ("no closed contour is in both keys of a segment: the thesis's measures need closed outlines; "
-                 "the open strokes are measured for crossings (STROKES)")
+_OTHERS_ONLY = ("no closed contour is in both keys of a segment: the thesis's measures need closed outlines; "
+                "the open strokes and the contours that grow or shrink are measured for tangles (OTHERS)")
 
 
-def _strokes_entry(entry: Entry, scene: Scene, methods: Sequence[str] | None, every: dict[str, None],
-                   quality: dict[tuple[int, int, str], "_Quality"], paths: SegmentPaths) -> dict[str, Any]:
-    """A segment of open strokes alone (``strokes`` in ``stats --json``): what auto draws, and per method where
-    the element's contours tangle and its strokes cross (and why ``injective`` drew rigid paths). No stray:
-    it is measured on the area closed outlines enclose."""
-    segment, joints = entry.segment, entry.segment.joints
-    names = tuple(methods) if methods is not None else measured_methods(jointed=bool(joints))
+def _other_entry(entry: Entry, scene: Scene, methods: Sequence[str] | None, every: dict[str, None],
+                 quality: dict[tuple[int, int, str], "_Quality"], paths: SegmentPaths) -> dict[str, Any]:
+    """A segment with no closed contour in both keys (``others`` in ``stats --json``): its open strokes and
+    its contours growing or shrinking, what auto draws (None where no contour is in both keys), and per
+    method where the element tangles and its strokes cross (and why ``injective`` drew rigid paths). No
+    stray: it is measured on the area closed outlines in both keys enclose."""
+    segment = entry.segment
+    names = tuple(methods) if methods is not None else measured_methods(jointed=bool(segment.joints))
     every.update(dict.fromkeys(names))
-    choice = segment_choice(segment) or auto_choice(entry.pair.k0, entry.pair.k1, joints)
+    choice = segment_choice(segment)
     measured: dict[str, dict[str, Any]] = {}
     for method in names:
         found = _quality(entry, method, quality, paths, areas=False)
@@ -109,9 +110,11 @@ def _strokes_entry(entry: Entry, scene: Scene, methods: Sequence[str] | None, ev
             measured[method]["fallback"] = injective_fallback_of(segment)
     head = entry.head()
     head.pop("contour", None)
-    return {**head, "strokes": sum(1 for pair in segment.pairs if pair.moving),
-            "auto": {"method": choice.method, "balance": choice.balance or scene.balance_of(entry.shape),
-                     "why": choice.why},
+    drawn = [pair for pair in segment.pairs if not pair.fades]
+    return {**head, "strokes": sum(1 for pair in drawn if not pair.closed),
+            "growing": sum(1 for pair in drawn if not pair.moving),
+            "auto": None if choice is None else {"method": choice.method, "why": choice.why,
+                                                 "balance": choice.balance or scene.balance_of(entry.shape)},
             "methods": measured}
 
 
@@ -235,10 +238,11 @@ def stats_text(stats: dict[str, Any]) -> str:
             if "closure_tweak_max" in r:
                 lines.append(f"Closing the walk changed the lengths by at most {100 * r['closure_tweak_max']:.2f} % "
                              "of the perimeter")
-    for entry in stats.get("strokes", []):
+    for entry in stats.get("others", []):
         start, end = entry["times"]
-        lines += ["", f"STROKES {entry['name']}, segment {entry['segment']} ({start:g} s to {end:g} s), "
-                      f"{strokes_words(entry['strokes'])} moving", auto_words(entry["auto"])]
+        lines += ["", f"OTHERS {entry['name']}, segment {entry['segment']} ({start:g} s to {end:g} s): "
+                      f"{others_words(entry)}", auto_words(entry["auto"]) if entry["auto"] else
+                  "auto has no contour in both keys to choose over: each grows from or shrinks to a point"]
         for method, r in entry["methods"].items():
             lines += [f"{method.upper()} METHOD"] + _quality_words(r)
             if r.get("fallback"):
@@ -271,9 +275,16 @@ def auto_words(auto: dict[str, Any]) -> str:
     return f"auto draws {auto['method']} (balance {auto['balance']}): {auto['why']}"
 
 
-def strokes_words(count: int) -> str:
-    """``"1 open stroke"``, ``"3 open strokes"``."""
-    return f"{count} open stroke{'' if count == 1 else 's'}"
+def others_words(entry: dict[str, Any]) -> str:
+    """What an entry of ``others`` draws through its segment: ``"2 open strokes, 1 contour growing or
+    shrinking"``."""
+    def counted(n: int, what: str) -> str:
+        return f"{n} {what}{'' if n == 1 else 's'}"
+
+    parts = [counted(entry["strokes"], "open stroke")] if entry["strokes"] else []
+    if entry["growing"]:
+        parts.append(counted(entry["growing"], "contour") + " growing or shrinking")
+    return ", ".join(parts) or "nothing drawn through"
 
 
 def fallback_words(reason: str) -> str:

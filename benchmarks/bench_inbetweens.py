@@ -173,10 +173,12 @@ def measure_method(tr: Any, scene: Any, method: str | None, key_areas: tuple[Bas
     started = time.perf_counter()
     k0 = group(every_contour(tr, scene, KEY_EPS, method))
     k1 = group(every_contour(tr, scene, 1 - KEY_EPS, method))
+    at0, at1 = group(every_contour(tr, scene, 0.0, method)), group(every_contour(tr, scene, 1.0, method))
     at = {t: every_contour(tr, scene, t, method) for t in TIMES}
     seconds = time.perf_counter() - started
 
-    elements = {name: element_structure(name, k0[name], k1.get(name, [])) for name in k0}
+    elements = {name: element_structure(name, k0[name], k1.get(name, []), at0.get(name), at1.get(name))
+                for name in k0}
     a0, a1 = key_areas[0].area, key_areas[1].area
     amax = max(a0, a1, 1e-12)
     frames = []

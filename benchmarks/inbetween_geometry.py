@@ -149,30 +149,49 @@ def _ring(contour: Any) -> np.ndarray | None:
     return pts if pts is not None and len(pts) >= 3 else None
 
 
-def element_structure(name: str, k0: list[Any], k1: list[Any]) -> Element | None:
-    """The structure of element ``name`` from its contours in the two keys, or None when they differ."""
+def element_structure(name: str, k0: list[Any], k1: list[Any], at0: list[Any] | None = None,
+                      at1: list[Any] | None = None) -> Element | None:
+    """The structure of element ``name`` from its contours next to the two keys (``k0``, ``k1``: a hair inside
+    the segment, so each has the vertices it has at every t), or None when they differ. Which contours are apart
+    and which are holes is read from the keys themselves where given (``at0``, ``at1``: the contours at t = 0
+    and 1, a growing one its point there), else from ``k0``, ``k1``."""
     if len(k0) != len(k1) or any(len(a.points) != len(b.points) or a.closed != b.closed for a, b in zip(k0, k1)):
         return None
     closed = [c.closed for c in k0]
-    g0 = [_geometry(c.points, c.closed) for c in k0]
-    g1 = [_geometry(c.points, c.closed) for c in k1]
+    at0 = at0 if at0 is not None and len(at0) == len(k0) else k0
+    at1 = at1 if at1 is not None and len(at1) == len(k1) else k1
+    g0 = [_geometry(c.points, c.closed) for c in at0]
+    g1 = [_geometry(c.points, c.closed) for c in at1]
     valid = np.array([a is not None and b is not None for a, b in zip(g0, g1)])
-    simple = np.array([bool(v and a.is_simple and b.is_simple) for v, a, b in zip(valid, g0, g1)])
+    # whether a contour is simple is read a hair inside (a slit's two sides, coincident at the key, part there)
+    h0, h1 = ([_geometry(c.points, c.closed) for c in k] for k in (k0, k1))
+    simple = np.array([bool(v and a is not None and b is not None and a.is_simple and b.is_simple)
+                       for v, a, b in zip(valid, h0, h1)])
     idx = np.flatnonzero(valid)
     i, j = np.triu_indices(len(idx), k=1)
     i, j = idx[i], idx[j]
     if len(i):
         arr0, arr1 = np.array(g0, dtype=object), np.array(g1, dtype=object)
-        apart = ~shapely.intersects(arr0[i], arr0[j]) & ~shapely.intersects(arr1[i], arr1[j])
+        # a contour that is one point at a key (growing from it, shrinking to it) is drawn nowhere there: it
+        # meets nothing, so it is apart from every contour in that key (maths §5.16, as stats counts)
+        point0 = np.array([isinstance(g, shapely.Point) for g in arr0])
+        point1 = np.array([isinstance(g, shapely.Point) for g in arr1])
+        apart0 = ~shapely.intersects(arr0[i], arr0[j]) | point0[i] | point0[j]
+        apart1 = ~shapely.intersects(arr1[i], arr1[j]) | point1[i] | point1[j]
+        apart = apart0 & apart1
         pairs = np.stack([i[apart], j[apart]], axis=1)
     else:
         pairs = np.zeros((0, 2), dtype=np.int64)
     element = Element(name, closed, [len(c.points) for c in k0], [c.points for c in k0], [c.points for c in k1],
                       simple, pairs)
-    r0 = _roles([_ring(c) if v else None for c, v in zip(k0, valid)])
-    r1 = _roles([_ring(c) if v else None for c, v in zip(k1, valid)])
-    for k, (depth, parent) in r0.items():
-        if depth % 2 == 1 and k in r1 and r1[k][0] % 2 == 1 and r1[k][1] == parent and parent >= 0:
+    r0 = _roles([_ring(c) if v else None for c, v in zip(at0, valid)])
+    r1 = _roles([_ring(c) if v else None for c, v in zip(at1, valid)])
+    for k in sorted(set(r0) | set(r1)):
+        # a hole in both keys, inside the same parent; one that grows or shrinks is a hole as the key that
+        # draws it has it (its parent drawn there too)
+        roles = [r[k] for r in (r0, r1) if k in r]
+        depth, parent = roles[0]
+        if all(d % 2 == 1 and q == parent for d, q in roles) and parent >= 0:
             element.holes.append((k, parent))
     return element
 
@@ -207,7 +226,10 @@ def element_tangles(element: Element, contours: list[Any]) -> Tangles | None:
     if len(element.apart):
         arr = np.array(geoms, dtype=object)
         i, j = element.apart[:, 0], element.apart[:, 1]
-        ok = np.array([arr[a] is not None and arr[b] is not None for a, b in zip(i, j)])
+        # a contour that is one point at this t (not started yet, or all grown in) is drawn nowhere: it meets
+        # nothing, as in the keys
+        drawn = np.array([g is not None and not isinstance(g, shapely.Point) for g in arr])
+        ok = drawn[i] & drawn[j]
         if ok.any():
             hit = np.zeros(len(i), dtype=bool)
             hit[ok] = shapely.intersects(arr[i[ok]], arr[j[ok]])

@@ -1134,6 +1134,17 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
                                 [c.closed for c in shut_b], forced=forced)
         if len(closing) < len(partners):
             partners, a, b = closing, shut_a, shut_b
+    if any(i is None for i, _ in partners) and any(j is None for _, j in partners):
+        # an outline drawn as a stroke alone is an open stroke whose ends meet: paired with a stroke of the
+        # other key that has no partner either, if that leaves fewer alone, rather than one shrinking while
+        # the other grows across it
+        opened_a, opened_b = (_opened_alone(key, mine, theirs, partners, side, caps)
+                              for key, mine, theirs, side in ((before, a, b, 0), (after, b, a, 1)))
+        if opened_a is not a or opened_b is not b:
+            opening = pair_contours([c.points for c in opened_a], [c.closed for c in opened_a],
+                                    [c.points for c in opened_b], [c.closed for c in opened_b], forced=forced)
+            if len(opening) < len(partners):
+                partners, a, b = opening, opened_a, opened_b
     partners = keep_nesting(partners, [c.points for c in a], [c.closed for c in a], [c.points for c in b],
                             [c.closed for c in b], forced)
     if join and _joinable(before, after, unmatched, links):
@@ -1223,6 +1234,38 @@ def _shut_strokes(key: Key, caps: tuple[str, str]) -> tuple[Contour, ...]:
                 contour = Contour(points[:-1] if gap == 0.0 else points, True)
         out.append(contour)
     return tuple(out)
+
+
+def _opened_alone(key: Key, mine: Sequence[Contour], theirs: Sequence[Contour],
+                  partners: Sequence[tuple[int | None, int | None]], side: int, caps: tuple[str, str]
+                  ) -> Sequence[Contour]:
+    """``mine`` (the contours of ``key``, key ``side`` of the segment) with each closed contour that has no
+    partner opened into a stroke whose ends meet, where the other key (``theirs``) has an open stroke without
+    a partner, and where that draws the same: a solid stroke with round caps and joins, nothing filled. It is
+    cut at its vertex nearest the middle of that stroke's ends, where they come together."""
+    paint = key.paint
+    if (not _stroked(key) or (paint.fill is not None and paint.fill[3] > 0) or paint.gradient is not None
+            or paint.pattern is not None or paint.dash is not None
+            or (key.cap or caps[0]) != "round" or (key.join or caps[1]) != "round"):
+        return mine
+    alone = {pair[side] for pair in partners if pair[1 - side] is None} - {None}
+    strokes = [theirs[pair[1 - side]] for pair in partners
+               if pair[side] is None and pair[1 - side] is not None and not theirs[pair[1 - side]].closed]
+    strokes = [c for c in strokes if len(c.points) >= 2]
+    if not strokes:
+        return mine
+    out = list(mine)
+    for k in sorted(alone):
+        contour = mine[k]
+        if not contour.closed or len(contour.points) < 3:
+            continue
+        middle = contour.points.mean(axis=0)
+        nearest = min(strokes, key=lambda c: float(np.hypot(*(c.points.mean(axis=0) - middle))))
+        ends = 0.5 * (nearest.points[0] + nearest.points[-1])
+        cut = int(np.argmin(np.hypot(*(contour.points - ends).T)))
+        turned = np.roll(contour.points, -cut, axis=0)
+        out[k] = Contour(_frozen(np.vstack([turned, turned[:1]])), False)
+    return out if any(x is not y for x, y in zip(out, mine)) else mine
 
 
 def _paints(before: Key, after: Key, unmatched: str) -> tuple[Paint, Paint]:

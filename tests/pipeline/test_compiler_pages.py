@@ -30,17 +30,34 @@ def drawn():
 before = drawn()
 resident = compiler_resident_bytes()
 asked = page_out_compiler()
-after_page_out = compiler_resident_bytes()
+after_page_out = compiler_resident_bytes(private=True)
 again = drawn()
-print(resident, asked, after_page_out, compiler_resident_bytes(), int(np.array_equal(before, again)),
+print(resident, asked, after_page_out, compiler_resident_bytes(private=True), int(np.array_equal(before, again)),
       int(before.any()))
+"""
+
+_NEIGHBOUR = """
+import sys
+from numba import njit
+njit(lambda x: x + 1)(1)
+print("ready", flush=True)
+sys.stdin.read()
 """
 
 
 @pytest.mark.skipif(sys.platform != "linux", reason="paging out is Linux's madvise(MADV_PAGEOUT)")
 def test_the_compilers_code_is_paged_out_and_the_kernel_still_draws_the_same() -> None:
-    done = subprocess.run([sys.executable, "-c", _PROBE], capture_output=True, text=True, cwd=ROOT,
-                          env={**os.environ, "PYTHONPATH": str(ROOT)}, timeout=600)
+    """Another process holds LLVM's library mapped meanwhile (a second worker, a render beside the tests): the
+    pages it shares cannot leave memory, and are not this process's to count; its own pages must go."""
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    neighbour = subprocess.Popen([sys.executable, "-c", _NEIGHBOUR], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                 text=True, cwd=ROOT, env=env)
+    try:
+        assert neighbour.stdout is not None and neighbour.stdout.readline().strip() == "ready"
+        done = subprocess.run([sys.executable, "-c", _PROBE], capture_output=True, text=True, cwd=ROOT, env=env,
+                              timeout=600)
+    finally:
+        neighbour.communicate("", timeout=60)
     assert done.returncode == 0, done.stderr
     resident, asked, after_page_out, after_drawing, same, drew = (int(v) for v in done.stdout.split())
     if asked == 0:

@@ -51,17 +51,20 @@ def page_out_compiler() -> int:
     return sum(end - start for start, end in mappings if madvise(start, end - start, _MADV_PAGEOUT) == 0)
 
 
-def compiler_resident_bytes() -> int:
-    """Bytes of LLVM's read-only mappings resident in this process (``/proc/self/smaps``; 0 where none)."""
+def compiler_resident_bytes(private: bool = False) -> int:
+    """Bytes of LLVM's read-only mappings resident in this process (``/proc/self/smaps``; 0 where none); with
+    ``private``, only those no other process maps (another process using the library shares its pages, which
+    stay resident for it)."""
     starts = {start for start, _ in _compiler_mappings()}
     if not starts:
         return 0
+    fields = ("Private_Clean:", "Private_Dirty:") if private else ("Rss:",)
     total, inside = 0, False
     with open("/proc/self/smaps") as smaps:
         for line in smaps:
             head = line.split(maxsplit=1)[0]
             if "-" in head and not head.endswith(":"):
                 inside = int(head.split("-")[0], 16) in starts
-            elif inside and head == "Rss:":
+            elif inside and head in fields:
                 total += int(line.split()[1]) * 1024
     return total

@@ -156,7 +156,7 @@ def _crossing_text(at: list[float]) -> str:
 def _table(entry: dict[str, Any]) -> str:
     start, end = entry["times"]
     m, n = entry["vertices"]
-    rows, fallbacks = [], []
+    rows = []
     for method, r in entry["methods"].items():
         ratios = " / ".join(f"{x:.4f}" for x in r["perimeter_ratio"])
         areas = " / ".join(f"{x:.4f}" for x in r["area_ratio"])
@@ -168,8 +168,6 @@ def _table(entry: dict[str, Any]) -> str:
                     f"<td class=\"{'bad' if r['self_intersects'] else ''}\">{_esc(crossing)}</td>"
                     f"<td class=\"{'bad' if tangled else ''}\">{_esc(_crossing_text(tangled))}</td>"
                     f"<td>{'' if stray is None else f'{stray:.3f}'}</td></tr>")
-        if r.get("fallback"):
-            fallbacks.append(f"<p class=\"note\">{_esc(method)}: {_esc(fallback_words(r['fallback']))}</p>")
     where = _esc(entry["name"])
     if "element" in entry:
         where = f"element {_esc(entry['element'])}, contour {entry['contour']}"
@@ -183,26 +181,29 @@ def _table(entry: dict[str, Any]) -> str:
             "<th>area ratio at t = .25 / .5 / .75</th><th>worst edge error</th>"
             "<th>worst angle error (°)</th><th>crosses itself</th><th>shape tangles</th>"
             "<th>stray (share of area)</th></tr></thead>\n<tbody>\n"
-            + "\n".join(rows) + "\n</tbody></table>" + "".join("\n" + f for f in fallbacks))
+            + "\n".join(rows) + "\n</tbody></table>" + _fallback_notes(entry))
+
+
+def _fallback_notes(entry: dict[str, Any]) -> str:
+    """Where a method had no morph of its own (``injective``'s ``fallback``), why: a note per method."""
+    return "".join(f"\n<p class=\"note\">{_esc(method)}: {_esc(fallback_words(r['fallback']))}</p>"
+                   for method, r in entry["methods"].items() if r.get("fallback"))
 
 
 def _others_table(entry: dict[str, Any]) -> str:
     """A segment with no closed contour in both keys (``stats``' ``others``): what auto draws, and per method
     where the element tangles and where its strokes cross."""
     start, end = entry["times"]
-    rows, fallbacks = [], []
+    rows = []
     for method, r in entry["methods"].items():
         rows.append(f"<tr><td>{_esc(method)}</td>"
                     f"<td class=\"{'bad' if r['crossings'] else ''}\">{_esc(_crossing_text(r['crossings']))}</td>"
                     f"<td class=\"{'bad' if r['stroke_crossings'] else ''}\">"
                     f"{_esc(_crossing_text(r['stroke_crossings']))}</td></tr>")
-        if r.get("fallback"):
-            fallbacks.append(f"<p class=\"note\">{_esc(method)}: {_esc(fallback_words(r['fallback']))}</p>")
-    auto = auto_words(entry["auto"]) if entry["auto"] else "auto has no contour in both keys to choose over"
     return (f"<h3>element {_esc(entry['name'])}, segment {entry['segment']} ({start:g}–{end:g} s): "
-            f"{_esc(others_words(entry))}</h3>\n<p>{_esc(auto)}</p>\n"
+            f"{_esc(others_words(entry))}</h3>\n<p>{_esc(auto_words(entry['auto']))}</p>\n"
             "<table><thead><tr><th>method</th><th>shape tangles</th><th>strokes cross</th></tr></thead>\n<tbody>\n"
-            + "\n".join(rows) + "\n</tbody></table>" + "".join("\n" + f for f in fallbacks))
+            + "\n".join(rows) + "\n</tbody></table>" + _fallback_notes(entry))
 
 
 def stacking_words(scene: Scene, switches: Sequence[Switch]) -> list[str]:

@@ -11,7 +11,7 @@ from numpy.typing import NDArray
 from ..core.coverage import Grid
 from ..core.measures import SWEEP, report
 from ..core.methods.intrinsic import closure_tweak
-from ..core.methods.qcurves import auto_choice
+from ..core.methods.qcurves import AutoChoice, auto_choice
 from ..core.methods.registry import REGISTRY, measured_methods
 from ..core.pops import changes, frames_digest, pops
 from ..core.stray import STRAY_REACH, Area, stray_shares
@@ -68,8 +68,7 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
             **entry.head(),
             "vertices": list(pair.counts),
             "balanced": len(pair.k0),
-            "auto": {"method": choice.method, "balance": choice.balance or scene.balance_of(entry.shape),
-                     "why": choice.why},
+            "auto": _auto_of(choice, scene, entry.shape),
             "methods": measured,
         })
     others = [_other_entry(entry, scene, methods, every, quality, paths) for entry in other_entries(scene)]
@@ -113,9 +112,13 @@ def _other_entry(entry: Entry, scene: Scene, methods: Sequence[str] | None, ever
     drawn = [pair for pair in segment.pairs if not pair.fades]
     return {**head, "strokes": sum(1 for pair in drawn if not pair.closed),
             "growing": sum(1 for pair in drawn if not pair.moving),
-            "auto": None if choice is None else {"method": choice.method, "why": choice.why,
-                                                 "balance": choice.balance or scene.balance_of(entry.shape)},
+            "auto": None if choice is None else _auto_of(choice, scene, entry.shape),
             "methods": measured}
+
+
+def _auto_of(choice: AutoChoice, scene: Scene, shape: Shape) -> dict[str, Any]:
+    """An entry's ``auto``: what render draws (the method, its balance: the choice's, else the shape's) and why."""
+    return {"method": choice.method, "balance": choice.balance or scene.balance_of(shape), "why": choice.why}
 
 
 @dataclass(slots=True)
@@ -241,8 +244,7 @@ def stats_text(stats: dict[str, Any]) -> str:
     for entry in stats.get("others", []):
         start, end = entry["times"]
         lines += ["", f"OTHERS {entry['name']}, segment {entry['segment']} ({start:g} s to {end:g} s): "
-                      f"{others_words(entry)}", auto_words(entry["auto"]) if entry["auto"] else
-                  "auto has no contour in both keys to choose over: each grows from or shrinks to a point"]
+                      f"{others_words(entry)}", auto_words(entry["auto"])]
         for method, r in entry["methods"].items():
             lines += [f"{method.upper()} METHOD"] + _quality_words(r)
             if r.get("fallback"):
@@ -270,8 +272,11 @@ def _quality_words(r: dict[str, Any]) -> list[str]:
     return lines
 
 
-def auto_words(auto: dict[str, Any]) -> str:
-    """What ``auto`` draws and why, from an entry's ``auto`` (method, balance, why): one sentence."""
+def auto_words(auto: dict[str, Any] | None) -> str:
+    """What ``auto`` draws and why, from an entry's ``auto`` (method, balance, why; None where no contour is in
+    both keys): one sentence."""
+    if auto is None:
+        return "auto has no contour in both keys to choose over: each grows from or shrinks to a point"
     return f"auto draws {auto['method']} (balance {auto['balance']}): {auto['why']}"
 
 

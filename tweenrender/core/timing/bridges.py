@@ -35,11 +35,12 @@ _PAIRS_CAP = 1_000_000  # vertex pairs measured when looking for the shortest jo
 
 
 def join_alone(contours: Sequence[Array], closed: Sequence[bool], partnered: Sequence[bool], wanted: Sequence[int],
-               evenodd: bool) -> tuple[list[Array], list[bool]]:
+               evenodd: bool, toward: tuple[float, float] | None = None) -> tuple[list[Array], list[bool]]:
     """One key's contours ``(N_i, 2)`` with each closed one of ``wanted`` that has no partner
     (``partnered[i]`` False) joined into a neighbour where it can be: the contours (a joined one's
     neighbour now holds it, in the neighbour's place) and, per contour, whether it was joined into
-    another (and is gone)."""
+    another (and is gone). With ``toward`` (a direction), each slit leaves its piece from the vertex
+    farthest that way (:func:`_slit`)."""
     n = len(contours)
     points = [np.asarray(c, dtype=np.float64) for c in contours]
     shut = [bool(closed[i]) and len(points[i]) >= 3 and signed_area(points[i]) != 0.0 for i in range(n)]
@@ -69,7 +70,7 @@ def join_alone(contours: Sequence[Array], closed: Sequence[bool], partnered: Seq
                     continue
                 piece = piece[::-1].copy()
             slit = _slit(out[t], piece, [out[k] for k in range(n) if shut[k] and _find(root, k) == k
-                                         and k not in (t, u)])
+                                         and k not in (t, u)], toward)
             if slit is None:
                 continue
             ti, ui = slit
@@ -139,16 +140,24 @@ def _clear(u: int, out: Sequence[Array], root: list[int], shut: Sequence[bool]) 
     return True
 
 
-def _slit(target: Array, piece: Array, others: Sequence[Array]) -> tuple[int, int] | None:
+def _slit(target: Array, piece: Array, others: Sequence[Array], toward: tuple[float, float] | None = None
+          ) -> tuple[int, int] | None:
     """The shortest join from a vertex of ``target (N, 2)`` to one of ``piece (M, 2)`` that crosses
-    no edge of either or of ``others``: their vertex indices, or None."""
-    squared, it, ip = _distances(target, piece)
-    order = np.argsort(squared, axis=None)[:CANDIDATES]
+    no edge of either or of ``others``: their vertex indices, or None. With ``toward`` (a direction
+    ``(dx, dy)``), the join leaves from the piece's vertex farthest that way (from its vertex mean) to the
+    nearest vertex of ``target`` it reaches so."""
     walls = [target, piece, *others]
     starts = np.concatenate(walls)
     ends = np.concatenate([np.roll(w, -1, axis=0) for w in walls])
-    for flat in order:
-        ti, ui = int(it[flat // len(ip)]), int(ip[flat % len(ip)])
+    if toward is not None:
+        ui = int(np.argmax((piece - piece.mean(axis=0)) @ np.asarray(toward, dtype=np.float64)))
+        gaps = ((target - piece[ui]) ** 2).sum(axis=1)
+        candidates = [(int(ti), ui) for ti in np.argsort(gaps, kind="stable")[:CANDIDATES]]
+    else:
+        squared, it, ip = _distances(target, piece)
+        candidates = [(int(it[flat // len(ip)]), int(ip[flat % len(ip)]))
+                      for flat in np.argsort(squared, axis=None)[:CANDIDATES]]
+    for ti, ui in candidates:
         if not _crosses(target[ti], piece[ui], starts, ends):
             return ti, ui
     return None

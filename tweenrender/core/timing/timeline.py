@@ -887,20 +887,26 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
                 and not easing_of(first).overshoots:  # a slit would turn inside out
             crowded = _crowded(pairs, first, last, method, shape.stagger, view)
         if crowded:
-            # joined where that tangles no more than growing late and the area changes no less evenly:
-            # all of them, or only the pieces, or only the holes
+            # joined where that tangles no more than growing late, the area changes no less evenly and
+            # balloons no more: all of them, or only the pieces, or only the holes; where the shortest slits
+            # leave the in-betweens ballooned or tangled and growing late balloons, slits leaving the
+            # contours each way in turn (where the other key's shape opens)
             plain = _join_measures(pairs, first, last, method, shape.stagger, view)
-            best: tuple[tuple[int, float], tuple[Pair, ...]] | None = None
+            best: tuple[JoinMeasures, tuple[Pair, ...]] | None = None
             # injective paths that hold them in their mesh need no slit (which has no mesh)
             probe = _probe(pairs, first, last, shape.stagger, view)
             held = method == "injective" and bool(held_in_mesh(probe, method))
-            for part in [] if held else _join_choices(crowded, first, last):
+            ways: tuple[tuple[float, float] | None, ...] = (None, *SLIT_WAYS) if plain[2] > BALLOON else (None,)
+            for part, toward in [] if held else [(p, w) for p in _join_choices(crowded, first, last) for w in ways]:
                 joined = _pairs(first, last, shape.fill_rule, matching, rule, balance, links,
-                                (shape.cap, shape.join), part)
+                                (shape.cap, shape.join), part, toward)
+                if toward is not None and not any(p.joined for p in joined):
+                    continue  # no slit that way
                 found = _join_measures(joined, first, last, method, shape.stagger, view)
-                if found[0] <= plain[0] and found[1] <= max(plain[1], EVEN) and (best is None or found < best[0]):
+                if found[0] <= plain[0] and found[1] <= max(plain[1], EVEN) and found[2] <= max(plain[2], BALLOON) \
+                        and (best is None or _join_rank(found) < _join_rank(best[0])):
                     best = found, joined
-                    if found[0] == 0 and found[1] <= EVEN:
+                    if found[0] == 0 and found[1] <= EVEN and found[2] <= BALLOON:
                         break
             # auto keeps them unjoined where its mesh holds them without a tangle or a stray and no join
             # is as clean (a mesh that holds everything may carry shapes far: elsewhere joins are weighed
@@ -954,6 +960,16 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
 
 EVEN = 3.0
 """A segment's area changes evenly where no step is over this many times the median (as pops are told)."""
+BALLOON = 0.25
+"""A segment's in-betweens balloon where the area their closed contours fill (holes taken away) leaves the
+straight blend of the keys' by more than this share of the larger key's: a hole that shrinks early as the
+outline round it narrows into a band fills the ring in (joins are weighed on it)."""
+SLIT_WAYS = tuple((float(np.cos(a)), float(np.sin(a))) for a in np.linspace(0.0, 2.0 * np.pi, 8, endpoint=False))
+"""The directions a slit is tried leaving the contour it joins, where the shortest slits leave the in-betweens
+ballooned or tangled (:data:`BALLOON`): every 45°."""
+JoinMeasures = tuple[int, float, float]
+"""How in-betweens fare at :data:`JOIN_CHECKS` (:func:`_join_measures`): tangled checks, the largest area step
+over the median, how far the area balloons."""
 JOIN_CHECKS = np.concatenate([[1e-6], np.linspace(0.0, 1.0, 13)[1:-1], [1.0 - 1e-6]])
 """The parameters at which a segment's in-betweens with contours joined (:mod:`.bridges`) are measured
 against those without: the keys as the first and last are approached (a contour growing from a point
@@ -968,13 +984,15 @@ def _probe(pairs: tuple[Pair, ...], first: Key, last: Key, stagger: float, view:
 
 
 def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, stagger: float, view: float = 0.0
-                   ) -> tuple[int, float]:
+                   ) -> JoinMeasures:
     """How the in-betweens of ``pairs`` under ``method``, growing and shrinking clear of the moving ones (as
     if no mesh held them: joins are weighed against that, and holding is for the pairs kept), fare at
     :data:`JOIN_CHECKS`: at how many of the
     inner ones their contours tangle (:func:`.tangles.contact_times`, crossings and stroke crossings,
-    among the contours that are more than a point then), and the largest change of their closed
-    contours' signed area from one check to the next over the median change (the pops rule)."""
+    among the contours that are more than a point then), the largest change of their closed
+    contours' signed area from one check to the next over the median change (the pops rule), and how far
+    the area they fill (:func:`_filled_areas`) leaves the straight blend of the first and last checks', over
+    the larger of those (:data:`BALLOON`)."""
     frames = method_paths(_probe(pairs, first, last, stagger, view), JOIN_CHECKS, method, hold=False)
     inner = slice(1, len(JOIN_CHECKS) - 1)
     there = np.array([[bool(np.any(f[k] != f[k][:1])) for f in frames] for k in range(len(JOIN_CHECKS))])[inner]
@@ -990,7 +1008,32 @@ def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, 
     steps = np.abs(np.diff(area))
     middle = float(np.median(steps))
     uneven = float(steps.max()) / middle if middle > 0 else (0.0 if steps.max() == 0 else np.inf)
-    return len(tangled), uneven
+    filled = _filled_areas(pairs, frames)
+    larger = max(abs(filled[0]), abs(filled[-1]))
+    blend = (1.0 - JOIN_CHECKS) * filled[0] + JOIN_CHECKS * filled[-1]
+    balloon = float(np.abs(filled - blend).max()) / larger if larger > 0 else 0.0
+    return len(tangled), uneven, balloon
+
+
+def _filled_areas(pairs: Sequence[Pair], frames: Sequence[Array]) -> Array:
+    """The area the closed contours of ``pairs`` (``frames[i] (T, L_i, 2)``) enclose at each of the T, each
+    counted whatever way it winds, holes (by their nesting in the key where they are drawn) taken away:
+    ``(T,)``."""
+    closed = [i for i, p in enumerate(pairs) if p.closed]
+    if not closed:
+        return np.zeros(len(frames[0]) if frames else 0)
+    kinds = [roles([pairs[i].k0 for i in closed], [True] * len(closed)),
+             roles([pairs[i].k1 for i in closed], [True] * len(closed))]
+    out = np.zeros(frames[closed[0]].shape[0])
+    for n, i in enumerate(closed):
+        kind = kinds[1][n] if pairs[i].source[0] is None else kinds[0][n]  # where it is drawn
+        out += (-1.0 if kind == "hole" else 1.0) * np.abs(_signed_areas(frames[i]))
+    return out
+
+
+def _join_rank(found: JoinMeasures) -> tuple[int, float, float]:
+    """Joins are ranked by tangles, then by how far they balloon past :data:`BALLOON`, then by evenness."""
+    return found[0], max(found[2], BALLOON), found[1]
 
 
 def _uneven(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array]) -> float:
@@ -1111,10 +1154,12 @@ def make_breakdowns(shape: Shape, matching: Matching, method: str, *, unmatched:
 
 def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatched: str,
            balance: str = "copies", links: tuple[Link, ...] = (), caps: tuple[str, str] = ("round", "round"),
-           join: frozenset[tuple[int, int]] = frozenset()) -> tuple[Pair, ...]:
+           join: frozenset[tuple[int, int]] = frozenset(), toward: tuple[float, float] | None = None
+           ) -> tuple[Pair, ...]:
     """The contour pairs of the segment from ``before`` to ``after`` (``caps``: the shape's cap and join,
     where its keys do not set their own; ``join``: the contours without a partner, as (key 0 or 1,
-    index), to join to a neighbour where they can be, :mod:`.bridges`)."""
+    index), to join to a neighbour where they can be, :mod:`.bridges`, their slits leaving them
+    ``toward`` a direction where one is given)."""
     a, b = before.contours, after.contours
     if before.hidden or after.hidden:
         # a hidden key is made contour by contour, vertex by vertex, from its neighbour: pair them in order;
@@ -1149,7 +1194,8 @@ def _pairs(before: Key, after: Key, fill_rule: str, matching: Matching, unmatche
                             [c.closed for c in b], forced)
     if join and _joinable(before, after, unmatched, links):
         # a piece or hole without room to grow joins a neighbour by a slit and morphs with it (§5.17)
-        a, b, partners = _joined(a, b, partners, before.fill_rule or fill_rule, after.fill_rule or fill_rule, join)
+        a, b, partners = _joined(a, b, partners, before.fill_rule or fill_rule, after.fill_rule or fill_rule, join,
+                                 toward)
     anchored = {} if unmatched == "fade" else \
         _anchor_points(a, b, partners, before.fill_rule or fill_rule, after.fill_rule or fill_rule)
     pairs = []
@@ -1199,17 +1245,18 @@ def _stroked(key: Key) -> bool:
 
 
 def _joined(a: Sequence[Contour], b: Sequence[Contour], partners: Sequence[tuple[int | None, int | None]],
-            rule_a: str, rule_b: str, join: frozenset[tuple[int, int]]
+            rule_a: str, rule_b: str, join: frozenset[tuple[int, int]], toward: tuple[float, float] | None = None
             ) -> tuple[list[Contour], list[Contour], list[tuple[int | None, int | None]]]:
     """The two keys' contours with those of ``join`` (key 0 or 1, index) joined into neighbours
-    (:func:`.bridges.join_alone`), and the partners left."""
+    (:func:`.bridges.join_alone`, slits leaving them ``toward`` a direction where given), and the partners
+    left."""
     out = []
     gone: list[set[int]] = []
     for side, contours, rule in ((0, a, rule_a), (1, b, rule_b)):
         has = {p[side] for p in partners if None not in p}
         points, joined = join_alone([c.points for c in contours], [c.closed for c in contours],
                                     [k in has for k in range(len(contours))],
-                                    [k for s, k in join if s == side], rule == "evenodd")
+                                    [k for s, k in join if s == side], rule == "evenodd", toward)
         out.append([Contour(_frozen(p), c.closed) if p is not c.points else c for p, c in zip(points, contours)])
         gone.append({k for k, j in enumerate(joined) if j})
     kept = [(i, j) for i, j in partners if not (i in gone[0] and j is None) and not (j in gone[1] and i is None)]

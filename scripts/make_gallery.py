@@ -21,6 +21,7 @@ MORPHS = {  # name: drawings, one key a second (and a view, where the drawing's 
     "heart-star": ["heroicons/heart.svg", "octicons/star-24.svg"],
     "potato-olive": ["fluent-emoji/potato.svg", "fluent-emoji/olive.svg"],
     "page-truck": ["twemoji/1f4c4.svg", "twemoji/1f69a.svg"],
+    "smiley-letter-a": ["octicons/smiley-24.svg", "tabler/letter-a.svg"],
 }
 WIDTH = 960
 ROW = 250  # pixels per method row of a sheet

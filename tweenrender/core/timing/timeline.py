@@ -901,9 +901,9 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
             def measures(joined: tuple[Pair, ...], way: str) -> JoinMeasures:
                 return _join_measures(joined, first, last, way, shape.stagger, view)
 
-            holes = frozenset(c for c, kind in _roles_of(first, last).items() if kind == "hole")
-            best = None if held else _best_join(_join_choices(crowded, first, last), plain, method, joining, measures,
-                                                holes)
+            role = _roles_of(first, last)
+            holes = frozenset(c for c, kind in role.items() if kind == "hole")
+            best = None if held else _best_join(_join_choices(crowded, role), plain, method, joining, measures, holes)
             # auto keeps them unjoined where its mesh holds them without a tangle or a stray and no join
             # is as clean (a mesh that holds everything may carry shapes far: elsewhere joins are weighed
             # against growing clear of the moving contours, as if none were held)
@@ -1058,7 +1058,8 @@ def _best_join(choices: Sequence[frozenset[tuple[int, int]]], plain: JoinMeasure
         if plain[2] <= BALLOON or not part & holes:
             continue
         ways = [found for found in (joining(part, toward) for toward in SLIT_WAYS) if any(p.joined for p in found)]
-        ranked = sorted(ways, key=lambda found: _join_rank(measures(tuple(p for p in found if p.moving), "linear")))
+        ranked = sorted(ways, key=lambda found: _join_rank(measures(tuple(p for p in found if p.moving) or found,
+                                                                    "linear")))
         if any(weigh(measures(found, method), found) for found in ranked[:SCREENED]):
             break
     return best
@@ -1088,9 +1089,10 @@ def _signed_areas(frames: Array) -> Array:
     return 0.5 * np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1)
 
 
-def _join_choices(crowded: frozenset[tuple[int, int]], first: Key, last: Key) -> list[frozenset[tuple[int, int]]]:
-    """The sets of ``crowded`` contours to try joining, best first: all, the pieces only, the holes only."""
-    role = _roles_of(first, last)
+def _join_choices(crowded: frozenset[tuple[int, int]], role: dict[tuple[int, int], str]
+                  ) -> list[frozenset[tuple[int, int]]]:
+    """The sets of ``crowded`` contours to try joining, best first: all, the pieces only, the holes only
+    (``role``: each contour's, :func:`_roles_of`)."""
     out = [crowded]
     for kind in ("outer", "hole"):
         part = frozenset(c for c in crowded if role.get(c) == kind)

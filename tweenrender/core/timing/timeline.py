@@ -961,8 +961,8 @@ BALLOON = 0.25
 straight blend of the keys' by more than this share of the larger key's: a hole that shrinks early as the
 outline round it narrows into a band fills the ring in (joins are weighed on it)."""
 SLIT_WAYS = tuple((float(np.cos(a)), float(np.sin(a))) for a in np.linspace(0.0, 2.0 * np.pi, 8, endpoint=False))
-"""The directions a slit is tried leaving the contour it joins, where the shortest slits leave the in-betweens
-ballooned or tangled (:data:`BALLOON`): every 45°."""
+"""The directions a slit is tried leaving the contour it joins, every 45°, where growing late balloons
+(:data:`BALLOON`) and the shortest slits are not clean (:func:`_best_join`)."""
 SCREENED = 4
 """How many of the slits leaving each way, ranked under straight paths, are measured under the method."""
 JoinMeasures = tuple[int, float, float]
@@ -989,7 +989,7 @@ def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, 
     inner ones their contours tangle (:func:`.tangles.contact_times`, crossings and stroke crossings,
     among the contours that are more than a point then), the largest change of their closed
     contours' signed area from one check to the next over the median change (the pops rule), and how far
-    the area they fill (:func:`_filled_areas`) leaves the straight blend of the first and last checks', over
+    the area they fill (holes taken away, :func:`_hole_signs`) leaves the straight blend of the first and last checks', over
     the larger of those (:data:`BALLOON`)."""
     frames = method_paths(_probe(pairs, first, last, stagger, view), JOIN_CHECKS, method, hold=False)
     inner = slice(1, len(JOIN_CHECKS) - 1)
@@ -1002,31 +1002,26 @@ def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, 
                                          JOIN_CHECKS[inner][when], [frames[i][0] for i in which],
                                          [frames[i][-1] for i in which])
         tangled |= set(crossed) | set(stroked)
-    area = sum((_signed_areas(frames[i]) for i, p in enumerate(pairs) if p.closed), np.zeros(len(JOIN_CHECKS)))
+    closed = [i for i, p in enumerate(pairs) if p.closed]
+    signed = [_signed_areas(frames[i]) for i in closed]  # (T,) each
+    area = sum(signed, np.zeros(len(JOIN_CHECKS)))
     steps = np.abs(np.diff(area))
     middle = float(np.median(steps))
     uneven = float(steps.max()) / middle if middle > 0 else (0.0 if steps.max() == 0 else np.inf)
-    filled = _filled_areas(pairs, frames)
+    # the area filled: each contour counted whatever way it winds, holes taken away
+    filled = sum((sign * np.abs(a) for sign, a in zip(_hole_signs([pairs[i] for i in closed]), signed)),
+                 np.zeros(len(JOIN_CHECKS)))
     larger = max(abs(filled[0]), abs(filled[-1]))
     blend = (1.0 - JOIN_CHECKS) * filled[0] + JOIN_CHECKS * filled[-1]
     balloon = float(np.abs(filled - blend).max()) / larger if larger > 0 else 0.0
     return len(tangled), uneven, balloon
 
 
-def _filled_areas(pairs: Sequence[Pair], frames: Sequence[Array]) -> Array:
-    """The area the closed contours of ``pairs`` (``frames[i] (T, L_i, 2)``) enclose at each of the T, each
-    counted whatever way it winds, holes (by their nesting in the key where they are drawn) taken away:
-    ``(T,)``."""
-    closed = [i for i, p in enumerate(pairs) if p.closed]
-    if not closed:
-        return np.zeros(len(frames[0]) if frames else 0)
-    kinds = [roles([pairs[i].k0 for i in closed], [True] * len(closed)),
-             roles([pairs[i].k1 for i in closed], [True] * len(closed))]
-    out = np.zeros(frames[closed[0]].shape[0])
-    for n, i in enumerate(closed):
-        kind = kinds[1][n] if pairs[i].source[0] is None else kinds[0][n]  # where it is drawn
-        out += (-1.0 if kind == "hole" else 1.0) * np.abs(_signed_areas(frames[i]))
-    return out
+def _hole_signs(pairs: Sequence[Pair]) -> list[float]:
+    """Per closed pair, -1 where it is a hole (by its nesting in the key where it is drawn: the last for one
+    growing from a point), else 1."""
+    kinds = [roles([p.k0 for p in pairs], [True] * len(pairs)), roles([p.k1 for p in pairs], [True] * len(pairs))]
+    return [-1.0 if kinds[p.source[0] is None][n] == "hole" else 1.0 for n, p in enumerate(pairs)]
 
 
 def _best_join(choices: Sequence[frozenset[tuple[int, int]]], plain: JoinMeasures, method: str,

@@ -175,9 +175,10 @@ def test_the_last_key_is_painted_in_its_own_order(a: str, b: str) -> None:
     assert iou >= 0.99 and error <= 0.02, (iou, error)
 
 
-def _two_squares(folder: Path, first: str, second: str, x: float) -> Path:
-    squares = {"a": f'<rect id="a" x="{x}" y="4" width="2" height="2" fill="#ff0000"/>',
-               "b": '<rect id="b" x="8.5" y="4" width="2" height="2" fill="#0000ff"/>'}
+def _two_squares(folder: Path, first: str, second: str, x: float, paints: tuple[str, str] = ('fill="#ff0000"',
+                                                                                 'fill="#0000ff"')) -> Path:
+    squares = {"a": f'<rect id="a" x="{x}" y="4" width="2" height="2" {paints[0]}/>',
+               "b": f'<rect id="b" x="8.5" y="4" width="2" height="2" {paints[1]}/>'}
     path = folder / f"{first}{second}{x}.svg"
     path.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 20 10">{squares[first]}{squares[second]}</svg>')
     return path
@@ -203,3 +204,24 @@ def test_the_order_switches_once_where_the_swapped_elements_overlap_least(tmp_pa
     middle = tr.frame(scene, 0.5, size=size)
     assert tuple(middle[50, 95, :3]) == (0, 0, 255)  # x = 9.5, inside both: b's blue on top
     assert tuple(drawer.order_at(0.0)) == switch.before and tuple(drawer.order_at(1.0)) == switch.after
+
+
+@pytest.mark.parametrize("paints, counted", [(('fill="#000000"', 'fill="#000000"'), False),
+                                             (('fill="#000000"', 'fill="#000" stroke="#000000"'), False),
+                                             (('fill="#000000"', 'fill="#000000" fill-opacity="0.5"'), True),
+                                             (('fill="#000000"', 'fill="#000001"'), True)])
+def test_the_overlap_of_elements_is_counted_only_where_their_order_shows(tmp_path: Path, monkeypatch, paints,  # type: ignore[no-untyped-def]
+                                                                         counted: bool) -> None:
+    """Two elements of one opaque colour draw the same picture in either order (source-over of one colour is
+    symmetric): the switch does not count where they overlap, and falls at t = 1/2. Another colour, or a
+    translucent one, shows which is on top: the overlap is counted as above."""
+    import tweenrender.core.stacking as stacking
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
+
+    calls = []
+    counting = stacking.overlap_area
+    monkeypatch.setattr(stacking, "overlap_area", lambda *a: calls.append(1) or counting(*a))
+    scene = tr.load_scene([_two_squares(tmp_path, "a", "b", 4, paints), _two_squares(tmp_path, "b", "a", 14, paints)])
+    (switch,) = Frames(RenderJob(scene)).stacking
+    assert (len(calls) == 31, switch.t) == ((True, 21 / 32) if counted else (False, 16 / 32))

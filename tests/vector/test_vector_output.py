@@ -333,9 +333,10 @@ def test_a_reel_to_a_vector_file_is_a_usage_error(tmp_path: Path, suffix: str) -
     assert not (tmp_path / f"reel{suffix}").exists()
 
 
-def _two_squares(folder: Path, first: str, second: str, x: float) -> Path:
-    squares = {"a": f'<rect id="a" x="{x}" y="4" width="2" height="2" fill="#ff0000"/>',
-               "b": '<rect id="b" x="8.5" y="4" width="2" height="2" fill="#0000ff"/>'}
+def _two_squares(folder: Path, first: str, second: str, x: float, paints: tuple[str, str] = ('fill="#ff0000"',
+                                                                                 'fill="#0000ff"')) -> Path:
+    squares = {"a": f'<rect id="a" x="{x}" y="4" width="2" height="2" {paints[0]}/>',
+               "b": f'<rect id="b" x="8.5" y="4" width="2" height="2" {paints[1]}/>'}
     path = folder / f"{first}{second}{x}.svg"
     path.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 20 10">{squares[first]}{squares[second]}'
                     "</svg>")
@@ -362,6 +363,18 @@ def test_layers_split_and_reorder_where_the_paint_order_switches(tmp_path: Path)
     ids = re.findall(r'<g id="([ab])-(\d+)"', svg)  # in paint order, first painted first
     assert [name for name, start in ids if int(start) < switch] == ["a", "b"]
     assert [name for name, start in ids if int(start) >= switch] == ["b", "a"]
+
+
+def test_elements_of_one_opaque_colour_keep_one_layer_each_where_their_order_switches(tmp_path: Path) -> None:
+    """The squares above, both black: either order draws the same picture, so each is one layer (one group of the
+    SVG) over the whole clip, not split where the order switches."""
+    black = ('fill="#000000"', 'fill="#000000"')
+    scene = tr.load_scene([_two_squares(tmp_path, "a", "b", 4, black), _two_squares(tmp_path, "b", "a", 14, black)])
+    document = json.loads(tr.write(scene, tmp_path / "swap.json").read_text())
+    assert sorted((layer["nm"], layer["ip"], layer["op"]) for layer in _shape_layers(document)) == [
+        ("a", 0, document["op"]), ("b", 0, document["op"])]
+    svg = tr.write(scene, tmp_path / "swap.svg").read_text()
+    assert sorted(re.findall(r'<g id="([ab])-(\d+)"', svg)) == [("a", "0"), ("b", "0")]
 
 
 def _drawing(folder: Path, name: str, body: str) -> Path:

@@ -3,11 +3,12 @@
 Every key of a drawing knows its element's place in that drawing's paint order (``Key.layer``).
 At a key the scene is painted in that key's order. Between two keys whose orders differ the
 order switches once, at the ``t = k / 32`` (``0 < k < 32``) of the segment where the elements
-that change places overlap least: the sum, over every pair of shapes whose order differs, of the
-area where both are drawn. Ties go to the t nearest 0.5. The areas are counted on a grid of
-:data:`GRID` × :data:`GRID` points over the pair's common bounding box, with each shape's own fill
-rule and windings (strokes as the points within half their width of the outline), so the switch
-does not depend on the frame rate, the picture's size or how frames are split into chunks.
+that change places overlap least: the sum, over every pair of shapes whose order differs and shows
+(:func:`order_shows`: not two of one opaque colour), of the area where both are drawn. Ties go to
+the t nearest 0.5. The areas are counted on a grid of :data:`GRID` × :data:`GRID` points over the
+pair's common bounding box, with each shape's own fill rule and windings (strokes as the points
+within half their width of the outline), so the switch does not depend on the frame rate, the
+picture's size or how frames are split into chunks.
 """
 
 from __future__ import annotations
@@ -18,11 +19,11 @@ from typing import Callable, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ..model import Shape
+from ..model import Color, Shape
 from .timing.timeline import ShapeAt
 
-__all__ = ["SWEEP", "GRID", "Switch", "layered", "key_order", "swapped_pairs", "coverage", "overlap_area", "choose_switch",
-           "stacking_plan", "order_at"]
+__all__ = ["SWEEP", "GRID", "Switch", "layered", "key_order", "swapped_pairs", "plain_ink", "order_shows", "coverage",
+           "overlap_area", "choose_switch", "stacking_plan", "order_at"]
 
 Array = NDArray[np.float64]
 SWEEP = np.arange(1, 32) / 32.0
@@ -81,6 +82,27 @@ def swapped_pairs(before: Sequence[int], after: Sequence[int]) -> list[tuple[int
     """Pairs ``(a, b)`` painted a-below-b in ``before`` and b-below-a in ``after``."""
     rank = {s: i for i, s in enumerate(after)}
     return [(a, b) for i, a in enumerate(before) for b in before[i + 1:] if rank[a] > rank[b]]
+
+
+def plain_ink(at: ShapeAt) -> Color | None:
+    """The one opaque colour ``at`` draws everything in (fill and stroke alike, at full opacity, no gradient,
+    pattern, mask nor cross-fade), else None."""
+    paint = at.paint
+    if paint.opacity != 1.0 or at.fade is not None or at.masks or any(
+            p is not None for p in (paint.gradient, paint.stroke_gradient, paint.pattern, paint.stroke_pattern)):
+        return None
+    drawn = {colour for colour in (paint.fill, paint.stroke if paint.stroke_width > 0 else None)
+             if colour is not None and colour[3] > 0}
+    return drawn.pop() if len(drawn) == 1 and next(iter(drawn))[3] == 255 else None
+
+
+def order_shows(a: ShapeAt, b: ShapeAt) -> bool:
+    """Whether painting ``a`` over ``b`` may look otherwise than ``b`` over ``a``: not when either draws nothing,
+    nor when both draw one opaque colour, the same (source-over of one opaque colour is symmetric)."""
+    if not (a.visible and a.paint.visible and b.visible and b.paint.visible):
+        return False
+    ink = plain_ink(a)
+    return ink is None or ink != plain_ink(b)
 
 
 def _winding(points: Array, polygon: Array) -> NDArray[np.int64]:
@@ -178,8 +200,9 @@ def stacking_plan(shapes: Sequence[Shape], shapes_at: Callable[[int, Array], lis
         for k in range(len(SWEEP)):
             for a, b in pairs:
                 at_a, at_b = drawn[a][k], drawn[b][k]
-                areas[k] += overlap_area(at_a, _rule(shapes[a], at_a), _width(shapes[a], at_a),
-                                         at_b, _rule(shapes[b], at_b), _width(shapes[b], at_b))
+                if order_shows(at_a, at_b):
+                        areas[k] += overlap_area(at_a, _rule(shapes[a], at_a), _width(shapes[a], at_a),
+                                             at_b, _rule(shapes[b], at_b), _width(shapes[b], at_b))
         plan.append(Switch(start, end, choose_switch(areas), before, after, tuple(pairs), tuple(areas.tolist())))
     return tuple(plan)
 

@@ -32,7 +32,7 @@ from ..encode.vector_data import PIXEL_DIGITS, STRAIGHT, ContourMove, Handles, V
 from ..errors import OptionError
 from ..model import Color, Paint, Scene, Shape
 from ..core.view import Viewport
-from ..core.stacking import order_at
+from ..core.stacking import order_at, order_shows, swapped_pairs
 from ..plan.job import RenderJob, scene_view, stacking_of, tracks_of
 from ..plan.options import RenderOptions
 from .paint_keys import clip_path_keys, clip_path_make, gradient_frame_paths, gradient_look, gradient_samples
@@ -102,11 +102,11 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
     offset, count = picked.start, len(picked)
     _check_samples(tracks, count)
     times = np.arange(offset, offset + count) / job.rate
-    orders, phases = _stacking(scene, tracks, times)
+    methods = [job.methods[0] or scene.method_of(shape) for shape in scene.shapes]
+    drawn = [track.at(times, method) for track, method in zip(tracks, methods)]
+    orders, phases = _stacking(scene, tracks, times, drawn)
     placed: list[tuple[int, int, VectorRun]] = []  # (stacking phase, place in its order, run)
-    for index, (shape, track) in enumerate(zip(scene.shapes, tracks)):
-        method = job.methods[0] or scene.method_of(shape)
-        shapes = track.at(times, method)
+    for index, (shape, track, method, shapes) in enumerate(zip(scene.shapes, tracks, methods, drawn)):
         segments = track.segment_index(times) if track.segments else np.zeros(count, dtype=np.intp)
         for first, stop in _runs_of(shape, shapes, segments, phases):
             whole = int(phases[first]) == int(phases[stop - 1]) and (stop == count or phases[stop] == phases[first])
@@ -116,6 +116,7 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
             run = _run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error,
                        times[first:stop], ending)
             placed.append((int(phases[first]), orders[int(phases[first])].index(index), run))
+        drawn[index] = []  # its samples are keyframed: let them go
     runs = tuple(run for _, _, run in sorted(placed, key=lambda item: item[:2]))
     return VectorClip((width, height), job.rate, count, scene.background, runs, max_error)
 
@@ -131,16 +132,19 @@ def _check_samples(tracks: tuple[Track, ...], frames: int) -> None:
                           "render fewer frames (a lower --fps or a shorter range) or a video", "format")
 
 
-def _stacking(scene: Scene, tracks: tuple[Track, ...], times: Array) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:
+def _stacking(scene: Scene, tracks: tuple[Track, ...], times: Array, drawn: list[list[ShapeAt]]
+              ) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:
     """The paint orders the clip passes through (shape indices, first painted first) and, per frame, which
     of them is in force: ``(F,)``. A layer is split where the order switches (docs/artwork.md;
-    :mod:`..core.stacking`)."""
+    :mod:`..core.stacking`), unless no two shapes that change places look otherwise for it at any frame until
+    the next split (``drawn``: each shape as drawn at each frame; :func:`..core.stacking.order_shows`)."""
     plan = stacking_of(scene, tracks)
     orders: list[tuple[int, ...]] = []
     phases = np.zeros(len(times), dtype=np.intp)
     for f, time in enumerate(times.tolist()):
         order = order_at(plan, scene.shapes, time)
-        if not orders or orders[-1] != order:
+        if not orders or (order != orders[-1] and any(order_shows(drawn[a][f], drawn[b][f])
+                                                      for a, b in swapped_pairs(orders[-1], order))):
             orders.append(order)
         phases[f] = len(orders) - 1
     return orders, phases

@@ -47,7 +47,8 @@ ICON_PAIRS = [("mdi/alpha-a.svg", "mdi/alpha-b.svg"),  # holes
               ("tabler/letter-a.svg", "tabler/heart.svg"),
               ("twemoji/1f4c4.svg", "twemoji/1f69a.svg"),  # a page becomes a truck: the paint order switches
               ("heroicons/check-circle.svg", "octicons/sun-24.svg"),  # even-odd, pieces that appear
-              ("simple-icons/github.svg", "lucide/apple.svg")]
+              ("simple-icons/github.svg", "lucide/apple.svg"),
+              ("octicons/smiley-24.svg", "tabler/letter-a.svg")]  # black elements change places: one layer each
 PAINT = """size = [480, 270]
 fps = 12
 view = [0, 0, 16, 9]

@@ -126,6 +126,32 @@ def write_scene(folder: Path, text: str, name: str = "scene.toml") -> Path:
     return path
 
 
+def overlapping_squares(folder: Path) -> list[Path]:
+    """Two drawings of one path of two overlapping squares wound alike (the overlap winds twice), filled
+    ``nonzero`` in the first (the overlap filled) and ``evenodd`` in the second (the overlap a hole), the
+    squares drawn apart a little more: the picture shows which rule is in force. Each square begins on an edge
+    outside the other, so both are outlines (not holes) in both drawings and pair with themselves."""
+    drawings = []
+    for name, rule, gap in (("nonzero.svg", "nonzero", 3), ("evenodd.svg", "evenodd", 4)):
+        path = folder / name
+        path.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 16 12">'
+                        f'<path id="squares" fill-rule="{rule}" d="M2 2h7v7h-7z M{9 + gap} 3v7h-7v-7z"/></svg>')
+        drawings.append(path)
+    return drawings
+
+
+def same_wound_rings(folder: Path) -> list[Path]:
+    """Two drawings of a square ring filled ``evenodd``, its outline and its hole wound the same way (as editors
+    often write a compound path): only the even-odd rule leaves the hole empty."""
+    drawings = []
+    for name, x in (("ring-a.svg", 2), ("ring-b.svg", 4)):
+        path = folder / name
+        path.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 16 12">'
+                        f'<path id="ring" fill-rule="evenodd" d="M{x} 2h8v8h-8z M{x + 2} 4h4v4h-4z"/></svg>')
+        drawings.append(path)
+    return drawings
+
+
 SQUARE = """size = [320, 240]
 view = [-2, -2, 10, 7]
 [[shape]]

@@ -18,7 +18,7 @@ import pytest
 
 import tweenrender as tr
 from tweenrender.errors import OptionError
-from tests.helpers import run_main, write_scene
+from tests.helpers import overlapping_squares, run_main, write_scene
 from tests.vector_curves import distance, lottie_error, svg_path_points
 
 # 400 × 300 pixels over the view [0, 0, 40, 30]: 10 pixels a unit, pixel = (10 x, 300 - 10 y)
@@ -375,6 +375,50 @@ def test_elements_of_one_opaque_colour_keep_one_layer_each_where_their_order_swi
         ("a", 0, document["op"]), ("b", 0, document["op"])]
     svg = tr.write(scene, tmp_path / "swap.svg").read_text()
     assert sorted(re.findall(r'<g id="([ab])-(\d+)"', svg)) == [("a", "0"), ("b", "0")]
+
+
+def test_a_fill_rule_that_switches_inside_a_run_keeps_one_layer_with_a_fill_of_each_rule(tmp_path: Path) -> None:
+    """Two overlapping squares wound alike, filled nonzero at the first key and evenodd at the second: one
+    layer of two fills of the same paths, the nonzero one shown until the frame where the raster takes the
+    second key's rule, the evenodd one from there (the players draw it: tests/encode/test_vector_players.py);
+    in the SVG, one path whose ``fill-rule`` switches at that frame."""
+    scene = tr.load_scene(overlapping_squares(tmp_path))
+    document = json.loads(tr.write(scene, tmp_path / "rule.json").read_text())
+    (layer,) = _shape_layers(document)
+    assert (layer["ip"], layer["op"]) == (0, document["op"])
+    fills = _items(layer, "fl")
+    assert [fill["r"] for fill in fills] == [1, 2]
+    size = (document["w"], document["h"])
+    scale = min(size[0] / 16, size[1] / 12)  # the 16 × 12 view box, centred
+    overlap = (round((size[0] - 16 * scale) / 2 + 6.5 * scale), size[1] // 2)  # (6.5, 6): inside both squares
+    filled = [bool(tr.frame(scene, f / document["fr"], size=size, background="#ffffff")[overlap[1], overlap[0], 0] < 128)
+              for f in range(document["op"])]
+    switch = filled.index(False)
+    assert switch > 0 and not any(filled[switch:])  # the raster switches once
+
+    def shown(fill: dict, frame: int) -> bool:
+        keys = fill["o"]["k"]
+        before = [k for k in keys if k["t"] <= frame]
+        return (before[-1] if before else keys[0])["s"][0] > 0
+
+    assert [shown(fills[0], f) for f in range(document["op"])] == filled
+    assert [shown(fills[1], f) for f in range(document["op"])] == [not f for f in filled]
+    svg = tr.write(scene, tmp_path / "rule.svg").read_text()
+    assert svg.count("<path ") == 1 and f'values="nonzero;evenodd"' in svg
+
+
+def test_the_fill_rule_of_an_element_that_fills_nothing_starts_no_new_layer(tmp_path: Path) -> None:
+    """The squares above stroked, not filled: their rule and windings change nothing drawn, so one layer (one SVG
+    path) with no second fill and no switch."""
+    drawings = overlapping_squares(tmp_path)
+    for path in drawings:
+        path.write_text(path.read_text().replace('<path ', '<path fill="none" stroke="#000" '))
+    scene = tr.load_scene(drawings)
+    document = json.loads(tr.write(scene, tmp_path / "rule.json").read_text())
+    (layer,) = _shape_layers(document)
+    assert (layer["ip"], layer["op"]) == (0, document["op"]) and not _items(layer, "fl")
+    svg = tr.write(scene, tmp_path / "rule.svg").read_text()
+    assert svg.count("<path ") == 1 and 'attributeName="fill-rule"' not in svg
 
 
 def _drawing(folder: Path, name: str, body: str) -> Path:

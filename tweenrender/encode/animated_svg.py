@@ -5,7 +5,8 @@ a group, shown only over its frames (``visibility``, discrete) and faded by the 
 ``opacity``, holding one ``<path>``: all its contours as subpaths, so holes follow the fill rule.
 ``<animate>`` moves ``d`` through the path keyframes (``calcMode="spline"`` with the easing's
 ``keySplines`` for an exact segment) and ``fill``, ``fill-opacity``, ``stroke``,
-``stroke-opacity``, ``stroke-width`` through the paint keyframes; gradient fills and clip paths as
+``stroke-opacity``, ``stroke-width`` through the paint keyframes, and ``fill-rule`` (discrete) where it
+switches inside a run; gradient fills and clip paths as
 :mod:`.svg_paint` writes them, with ids of the file's own (``tr-run0-fill``, ``tr-run0-clip-0``, …, under
 a prefix no group id begins with: :func:`own_prefix`); each group's id is its element's name and first
 frame. Frame ``f`` is at ``keyTime f / F`` of ``dur = F / fps`` seconds; every animation freezes at its end.
@@ -109,6 +110,10 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
     d_values = [path_data(s, tuple(run.closed[i] for i in members), lines) for s in shapes]
     attributes = [f'd="{d_values[0]}"', f'fill-rule="{run.fill_rule}"']
     inner = [animate("d", run.path_frames, d_values, total, timing, run.eases)]
+    if filled and run.rule_switch is not None:  # switched as the run's visibility is, a thousandth of a frame early
+        at, rule = run.rule_switch
+        inner.append(f'<animate attributeName="fill-rule" {timing} calcMode="discrete" '
+                     f'keyTimes="0;{number((at - _EARLY) / total, 9)}" values="{run.fill_rule};{rule}"/>')
     for name, colours in (("fill", run.fill if filled else None), ("stroke", run.stroke if widths is not None
                                                                           else None)):
         if name == "fill" and filled and gradient is not None:

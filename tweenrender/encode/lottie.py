@@ -4,7 +4,8 @@ One shape layer per run (an element over the frames of one segment and one paint
 ``ip`` to ``op``, about half a frame before the run's first frame and after its last), first in
 the list on top; in it one group: a ``sh`` path per contour (straight edges: in and out tangents
 zero; holes are sibling paths), the stroke (``st``) above the fill (``fl``, ``r`` 1 nonzero,
-2 even-odd), and the group's transform (contours growing from a point: a group per stroke width
+2 even-odd; where the rule switches inside the run, a fill of each rule, its opacity held at 0 while the other's is
+in force), and the group's transform (contours growing from a point: a group per stroke width
 above one of the fill). A contour that only grows, shrinks and moves is a still path in a group of its own,
 whose transform's position and scale are keyed: the fill and stroke of the group above draw it with the
 others, holes and all. The layer's opacity is the paint's, so fill and stroke fade together as
@@ -20,7 +21,7 @@ from typing import Any
 
 from .atomic import replacing
 from .lottie_paint import gradient_fill, masks, matte, refuse_unsupported, stretched_fill
-from .lottie_values import animated, moved_group, path_item, percent, scalar, static, transform
+from .lottie_values import animated, moved_group, path_item, percent, scalar, static, switched, transform
 from .vector_data import Array, VectorClip, VectorRun
 
 __all__ = ["lottie_document", "lottie_text", "write_lottie"]
@@ -146,7 +147,15 @@ def _fill(run: VectorRun) -> list[dict[str, Any]]:
     if run.fill is None:
         return []
     colour, alpha = _colour_prop(run.paint_frames, run.fill)
-    return [{"ty": "fl", "nm": "fill", "c": colour, "o": alpha, "r": _FILL_RULES[run.fill_rule]}]
+    if run.rule_switch is None:
+        return [{"ty": "fl", "nm": "fill", "c": colour, "o": alpha, "r": _FILL_RULES[run.fill_rule]}]
+    # the fill rule switches: two fills of the same paths, each shown while its rule is in force
+    at, rule = run.rule_switch
+    alphas = percent(run.fill[:, 3])
+    return [{"ty": "fl", "nm": "fill", "c": colour, "o": switched(run.paint_frames, alphas, at, False, _EARLY_IN),
+             "r": _FILL_RULES[run.fill_rule]},
+            {"ty": "fl", "nm": f"fill from frame {at}", "c": colour, "o": switched(run.paint_frames, alphas, at, True, _EARLY_IN),
+             "r": _FILL_RULES[rule]}]
 
 
 def _background(clip: VectorClip) -> dict[str, Any]:

@@ -8,7 +8,8 @@ import numpy as np
 
 from .vector_data import HANDLE_DIGITS, PIXEL_DIGITS, SCALE_DIGITS, STRAIGHT, Array, ContourMove, Handles
 
-__all__ = ["DIGITS", "compact", "static", "animated", "scalar", "percent", "transform", "contour", "path_item", "moved_group"]
+__all__ = ["DIGITS", "compact", "static", "animated", "switched", "scalar", "percent", "transform", "contour", "path_item",
+           "moved_group"]
 
 DIGITS = PIXEL_DIGITS  # pixels are written to a hundredth
 
@@ -32,6 +33,31 @@ def animated(frames: tuple[int, ...], values: list[Any], eases: tuple[Handles, .
             key["i"] = {"x": [x2], "y": [y2]}
         keys.append(key)
     return {"a": 1, "k": keys}
+
+
+def switched(frames: tuple[int, ...], values: list[float], at: int, after: bool, early: float) -> dict[str, Any]:
+    """A number keyed straight at ``frames`` (held before the first and after the last) until frame ``at``, 0 from
+    it on; or (``after``) 0 until ``at`` and the number from it on. It switches ``early`` frames before ``at``,
+    held from frame ``at - 1``: no player that draws a frame a hair early or late sees it."""
+    def value(frame: float) -> float:
+        return round(float(np.interp(frame, frames, values)), 3)
+
+    edge = at - early
+    if after:
+        keys = [(at - 1, 0.0, True), (edge, value(edge), False), *((f, v, False) for f, v in zip(frames, values)
+                                                                      if f > edge)]
+    else:
+        keys = [*((f, v, False) for f, v in zip(frames, values) if f < at - 1), (at - 1, value(at - 1), True),
+                (edge, 0.0, False)]
+    out: list[dict[str, Any]] = []
+    for index, (frame, number, hold) in enumerate(keys):
+        key: dict[str, Any] = {"t": frame, "s": [number]}
+        if hold:
+            key["h"] = 1
+        elif index < len(keys) - 1:
+            key["o"], key["i"] = {"x": [0], "y": [0]}, {"x": [1], "y": [1]}
+        out.append(key)
+    return {"a": 1, "k": out}
 
 
 def _short(value: float) -> float | int:

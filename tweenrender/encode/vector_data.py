@@ -112,7 +112,8 @@ class VectorRun:
     dash lengths (dash, gap, …; the same even count C at every paint keyframe) then its offset, in pixels, for
     the contour drawn from its vertex 0 (``None``: solid). ``contour_moves``: per contour, a :class:`ContourMove`
     placing its one still keyframe in :attr:`contour_keys` (a contour that only grows, shrinks and moves), or
-    ``None`` (``None`` for all: no contour moves so).
+    ``None`` (``None`` for all: no contour moves so). ``rule_switch``: the clip frame from which the fill rule
+    is the one it names instead of ``fill_rule`` (a plain fill only; ``None``: ``fill_rule`` throughout).
     """
 
     element: str
@@ -140,6 +141,7 @@ class VectorRun:
     contour_keys: tuple[tuple[tuple[int, ...], Array, tuple[Handles, ...]], ...] | None = None
     dash: tuple[Array, ...] | None = None
     contour_moves: tuple[ContourMove | None, ...] | None = None
+    rule_switch: tuple[int, str] | None = None
 
     def move_of(self, index: int) -> ContourMove | None:
         """Contour ``index``'s place over time where its path (:meth:`keys_of`, then one still keyframe) only grows,

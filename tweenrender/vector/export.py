@@ -1,11 +1,10 @@
 """What a vector file holds: every element's contours and paint at every frame, reduced to keyframes.
 
 :func:`vector_clip` samples each shape once per frame of the clip (exactly what the raster draws),
-maps scene units to output pixels, and splits each shape's frames into *runs*: consecutive frames
-of one segment on which it is drawn. A run keeps one list of contours (the segment's pairs, so
-every contour keeps one vertex count) and becomes a layer (Lottie, with ``ip``/``op``) or a path
-element shown over those frames (SVG); a run goes on where a key's windings, fill rule or stroke
-ends take over only if the picture changes. Paths are cubic Bézier contours (:mod:`.curves`) keyed by
+maps scene units to output pixels, and splits each shape's frames into *runs* (:mod:`.runs`):
+consecutive frames of one segment on which it is drawn alike. A run keeps one list of contours (the
+segment's pairs, so every contour keeps one vertex count) and becomes a layer (Lottie, with
+``ip``/``op``) or a path element shown over those frames (SVG). Paths are cubic Bézier contours (:mod:`.curves`) keyed by
 :mod:`.keyframes`: a contour that moves straight between its segment's keys (``linear``, ``auto``'s
 straight paths with their copies spread) whose keys fall on whole frames is those two keys, timed by
 the segment's easing (in the Lottie, even where its element's other contours need more); every other
@@ -25,6 +24,7 @@ from numpy.typing import NDArray
 from .curves import Blend, RIDGE, STRAIGHT_RIDGE, distance_to_polyline, fit_curves, free_points, with_fixed_points
 from .dash_keys import contour_dashes, dash_rows
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
+from .runs import Span, runs_of, stacking_phases, stroked, style
 from .scaled_keys import scaled_contour
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
 from ..encode.formats import is_vector, listing, names, writer
@@ -32,10 +32,9 @@ from ..encode.vector_data import PIXEL_DIGITS, STRAIGHT, ContourMove, Handles, V
 from ..errors import OptionError
 from ..model import Color, Paint, Scene, Shape
 from ..core.view import Viewport
-from ..core.stacking import order_at, order_shows, swapped_pairs
-from ..plan.job import RenderJob, scene_view, stacking_of, tracks_of
+from ..plan.job import RenderJob, scene_view, tracks_of
 from ..plan.options import RenderOptions
-from .paint_keys import clip_path_keys, clip_path_make, gradient_frame_paths, gradient_look, gradient_samples
+from .paint_keys import clip_path_keys, gradient_frame_paths, gradient_samples
 
 __all__ = ["vector_clip", "write_vector", "refuse_raster_options", "RASTER_ONLY", "DEFAULT_MAX_ERROR", "VECTOR_SAMPLES"]
 
@@ -104,17 +103,18 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
     times = np.arange(offset, offset + count) / job.rate
     methods = [job.methods[0] or scene.method_of(shape) for shape in scene.shapes]
     drawn = [track.at(times, method) for track, method in zip(tracks, methods)]
-    orders, phases = _stacking(scene, tracks, times, drawn)
+    orders, phases = stacking_phases(scene, tracks, times, drawn)
     placed: list[tuple[int, int, VectorRun]] = []  # (stacking phase, place in its order, run)
     for index, (shape, track, method, shapes) in enumerate(zip(scene.shapes, tracks, methods, drawn)):
         segments = track.segment_index(times) if track.segments else np.zeros(count, dtype=np.intp)
-        for first, stop in _runs_of(shape, shapes, segments, phases):
+        for span in runs_of(shape, shapes, segments, phases):
+            first, stop = span.first, span.stop
             whole = int(phases[first]) == int(phases[stop - 1]) and (stop == count or phases[stop] == phases[first])
             exact = _exact_keys(track, int(segments[first]), method, job.rate, offset, count)
             ending = _ending(track, int(segments[first]), method, stop, job.rate, offset, count) \
                 if exact is None and whole else None
-            run = _run(shape, shapes[first:stop], first, stop, viewport, exact, method, max_error,
-                       times[first:stop], ending)
+            run = _run(shape, shapes[first:stop], span, viewport, exact, method, max_error, times[first:stop],
+                       ending)
             placed.append((int(phases[first]), orders[int(phases[first])].index(index), run))
         drawn[index] = []  # its samples are keyframed: let them go
     runs = tuple(run for _, _, run in sorted(placed, key=lambda item: item[:2]))
@@ -130,99 +130,6 @@ def _check_samples(tracks: tuple[Track, ...], frames: int) -> None:
         raise OptionError(f"expected a vector file of at most {VECTOR_SAMPLES:,} vertex samples (frames × vertices "
                           f"drawn at once), found {frames:,} frames × {vertices:,} vertices = {frames * vertices:,}; "
                           "render fewer frames (a lower --fps or a shorter range) or a video", "format")
-
-
-def _stacking(scene: Scene, tracks: tuple[Track, ...], times: Array, drawn: list[list[ShapeAt]]
-              ) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:
-    """The paint orders the clip passes through (shape indices, first painted first) and, per frame, which
-    of them is in force: ``(F,)``. A layer is split where the order switches (docs/artwork.md;
-    :mod:`..core.stacking`), unless no two shapes that change places look otherwise for it at any frame until
-    the next split (``drawn``: each shape as drawn at each frame; :func:`..core.stacking.order_shows`)."""
-    plan = stacking_of(scene, tracks)
-    orders: list[tuple[int, ...]] = []
-    phases = np.zeros(len(times), dtype=np.intp)
-    for f, time in enumerate(times.tolist()):
-        order = order_at(plan, scene.shapes, time)
-        if not orders or (order != orders[-1] and any(order_shows(drawn[a][f], drawn[b][f])
-                                                      for a, b in swapped_pairs(orders[-1], order))):
-            orders.append(order)
-        phases[f] = len(orders) - 1
-    return orders, phases
-
-
-def _runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp],
-             phases: NDArray[np.intp]) -> list[tuple[int, int]]:
-    """Maximal ranges of frames of one segment and one paint order on which ``shape`` is drawn with finite
-    contours, the same windings, the same key's fill rule and stroke ends, the same kind of gradient fill
-    and clip paths of the same make."""
-    drawn = []
-    for at in shapes:
-        _refuse_uncarried(shape, at)
-        drawn.append(at.visible and all(np.all(np.isfinite(c)) for c in at.contours)
-                     and all(at.clips))  # a clip region with no contours hides everything
-    gradients = _gradient_looks(shapes, segments)
-
-    def look(f: int) -> tuple[object, ...]:
-        at = shapes[f]
-        return (int(segments[f]), int(phases[f]), len(at.contours), _windings(shape, at), _drawn_style(shape, at),
-                gradients[f],
-                clip_path_make(at))
-
-    out: list[tuple[int, int]] = []
-    start = None
-    for f in range(len(shapes) + 1):
-        same = start is not None and f < len(shapes) and drawn[f] and look(f) == look(start)
-        if start is not None and not same:
-            out.append((start, f))
-            start = None
-        if start is None and f < len(shapes) and drawn[f]:
-            start = f
-    return out
-
-
-def _windings(shape: Shape, at: ShapeAt) -> tuple[bool, ...]:
-    """Which contours are drawn reversed, as far as the picture can tell: nothing under ``evenodd``, and under
-    ``nonzero`` only relative to the first contour (every contour reversed fills the same), so a run goes on
-    where a key's windings take over and the picture does not change."""
-    if _style(shape, at)[0] == "evenodd" or not at.reversed:
-        return ()
-    return tuple(flip != at.reversed[0] for flip in at.reversed)
-
-
-def _refuse_uncarried(shape: Shape, at: ShapeAt) -> None:
-    """A vector file cannot carry cross-fading contours, masks, group opacity nor pictures: refuse, naming the element."""
-    if at.fade is not None:
-        raise OptionError(f"element {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which the "
-                          "vector formats do not carry; render a video or PNG frames", "format")
-    if at.key is not None and at.key.groups:
-        raise OptionError(f"element {shape.name!r}: it is drawn in a group with an opacity (an SVG <g opacity>) "
-                          "composited as one, which the vector formats do not carry yet; render a video or PNG "
-                          "frames, or put the opacity on each element in the drawing", "format")
-    if at.masks:
-        raise OptionError(f"element {shape.name!r}: it is masked (an SVG <mask>), which the vector formats do not "
-                          "carry; render a video or PNG frames, or use a clip-path in the drawing", "format")
-    if any(p is not None and p.image is not None for p in (at.paint.pattern, at.paint.stroke_pattern)):
-        raise OptionError(f"element {shape.name!r}: it is a picture (an SVG <image>), which the vector formats do "
-                          "not carry yet; render a video or PNG frames", "format")
-
-
-def _gradient_looks(shapes: list[ShapeAt], segments: NDArray[np.intp]) -> list[tuple[str, str] | None]:
-    """Per frame, the kind and spread of its gradient fill; a frame without one takes the nearest frame's of its
-    segment, so a key filled plainly stays in the run of the gradient it blends with."""
-    looks = [gradient_look(at.paint) for at in shapes]
-    count = len(looks)
-    nearest: list[list[int]] = [[] for _ in range(count)]  # the frames of the segment with a look, either side
-    for order in (range(count), range(count - 1, -1, -1)):
-        last, previous = None, None
-        for f in order:
-            if previous is not None and segments[f] != segments[previous]:
-                last = None
-            if looks[f] is not None:
-                last = f
-            if last is not None:
-                nearest[f].append(last)
-            previous = f
-    return [looks[min(near, key=lambda i: abs(i - f))] if near else None for f, near in enumerate(nearest)]
 
 
 def _exact_keys(track: Track, segment: int, method: str, fps: float, offset: int,
@@ -273,11 +180,13 @@ def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offs
     return (end, points) if end.fade is None and all(np.all(np.isfinite(p)) for p in points) else None
 
 
-def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: Viewport,
+def _run(shape: Shape, shapes: list[ShapeAt], span: Span, viewport: Viewport,
          exact: tuple[int, int, Segment] | None, method: str, max_error: float, run_times: Array,
          ending: tuple[ShapeAt, list[Array]] | None = None) -> VectorRun:
+    """The run ``span`` of ``shape``, drawn as ``shapes`` at its frames, as keyframes."""
+    first, stop = span.first, span.stop
     keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
-    flips = shapes[0].reversed or (False,) * len(shapes[0].contours)
+    flips = span.reversed or (False,) * len(shapes[0].contours)
     samples = [_drawn(viewport, np.stack([at.contours[i] for at in shapes]), flips[i]) for i in keep]  # (F, L_i, 2)
     joined = np.concatenate(samples, axis=1) if samples else np.zeros((len(shapes), 0, 2))
     every_pair = exact is not None and len(shapes[0].contours) == len(exact[2].pairs)
@@ -357,16 +266,16 @@ def _run(shape: Shape, shapes: list[ShapeAt], first: int, stop: int, viewport: V
         channels = np.concatenate([channels, gradient.channels()], axis=1)
     paint_keys = greedy_keyframes(channels, 1.0)
     pick = np.array(paint_keys)
-    rule, cap, join, miter = _style(shape, next((at for at in shapes if _stroked(at)), shapes[0]))
+    _, cap, join, miter = style(shape, next((at for at in shapes if stroked(at)), shapes[0]))
     run = VectorRun(shape.name, first, stop, path_frames, paths, closed, eases, tuple(first + k for k in paint_keys),
                     None if fill is None else fill[pick], None if stroke is None else stroke[pick], width[pick],
-                    opacity[pick], rule, cap, join, miter, joined,
+                    opacity[pick], span.rule, cap, join, miter, joined,
                     None if contour_widths is None else contour_widths[pick],
                     None if gradient is None else gradient.keys(pick),
                     clip_path_keys(shapes, first, viewport, max_error),
                     exact_lengths=tuple(s.shape[1] for s in samples),
                     contour_keys=contour_keys,
-                    dash=None if dashes is None else tuple(d[pick] for d in dashes))
+                    dash=None if dashes is None else tuple(d[pick] for d in dashes), rule_switch=span.switch)
     run = replace(run, gradient_paths=gradient_frame_paths(run, max_error, keyed_curves))
     return _with_moves(run, samples, max_error)
 
@@ -487,28 +396,6 @@ def _key_tolerance(max_error: float, fitted: float) -> float:
     ``fitted`` pixels from the exact in-between: the rest of ``max_error``, less the files' rounding (a
     point of a cubic is a convex combination of its control points, so it strays no farther)."""
     return max(max_error - fitted - 2 * _ROUNDING, max_error * (1 - CURVE_SHARE) / 2)
-
-
-def _stroked(at: ShapeAt) -> bool:
-    """Whether ``at`` draws a stroke (a colour not fully transparent, a width)."""
-    stroke = at.paint.stroke
-    return stroke is not None and stroke[3] > 0 and at.paint.stroke_width > 0
-
-
-def _drawn_style(shape: Shape, at: ShapeAt) -> tuple[str, str | None, str | None, float | None]:
-    """:func:`_style` as far as the picture can tell: no caps, joins nor miter limit where no stroke is drawn,
-    so a run goes on where the next key's stroke ends take over while neither key strokes."""
-    rule, cap, join, miter = _style(shape, at)
-    return (rule, cap, join, miter) if _stroked(at) else (rule, None, None, None)
-
-
-def _style(shape: Shape, at: ShapeAt) -> tuple[str, str, str, float]:
-    """The fill rule, caps, joins and miter limit ``shape`` is drawn with at one time: its key's own, else its own."""
-    key = at.key
-    if key is None:
-        return shape.fill_rule, shape.cap, shape.join, shape.miter_limit
-    return (key.fill_rule or shape.fill_rule, key.cap or shape.cap, key.join or shape.join,
-            key.miter_limit or shape.miter_limit)
 
 
 def _drawn(viewport: Viewport, points: Array, flip: bool) -> Array:

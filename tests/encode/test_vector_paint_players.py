@@ -24,7 +24,7 @@ import pytest
 
 import tweenrender as tr
 from tests.helpers import DATA
-from tests.vector_players import Clip, PlayerBrowser, module_browser
+from tests.vector_players import Clip, PlayerBrowser, lottie_web_missing, module_browser, skottie_missing
 
 EMOJI = [("fluent-emoji/red-circle.svg", "fluent-emoji/egg.svg"),
          ("fluent-emoji/chestnut.svg", "fluent-emoji/drop-of-blood.svg"),
@@ -134,6 +134,24 @@ def test_emoji_gradients_in_rlottie_and_thorvg(clip: Clip) -> None:
 @pytest.mark.parametrize("clip", list(DRAWN), indirect=True)
 def test_drawn_gradients_and_clips_in_rlottie_and_thorvg(clip: Clip) -> None:
     _in_rlottie_and_thorvg(clip)
+
+
+@pytest.mark.parametrize("clip", list(EMOJI_CASES), indirect=True)
+def test_emoji_gradients_in_skottie_every_frame(clip: Clip) -> None:
+    """Elliptical gradients drawn through a matte of the element's paths, as Skottie plays them."""
+    reason = skottie_missing()
+    if reason is not None:
+        pytest.skip(reason)
+    clip.check_skottie()
+
+
+@pytest.mark.parametrize("clip", list(EMOJI_CASES), indirect=True)
+def test_emoji_gradients_in_lottie_web_every_frame(clip: Clip, browser: PlayerBrowser | None) -> None:
+    reason = lottie_web_missing()
+    if reason is not None:
+        pytest.skip(reason)
+    assert browser is not None
+    clip.check_lottie_web(browser=browser)
 
 
 @pytest.mark.parametrize("clip", [*EMOJI_CASES, *DRAWN, "spread"], indirect=True)

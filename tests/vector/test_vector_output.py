@@ -442,6 +442,35 @@ _THREE_STOPS = ('<linearGradient id="g" x2="0" y2="1"><stop offset="0" stop-colo
 _CLIP = '<clipPath id="c"><rect x="0" y="0" width="{w}" height="10"/></clipPath>'
 
 
+def _paths_in(items: list[dict]) -> list[dict]:
+    """Every path item (``sh``) among ``items`` and in their groups."""
+    return [item for item in items if item["ty"] == "sh"] + [
+        found for item in items if item["ty"] == "gr" for found in _paths_in(item["it"])]
+
+
+def test_an_elliptical_gradient_fills_a_still_rectangle_through_a_matte_of_the_paths(tmp_path: Path) -> None:
+    """fluent-emoji's egg (an elliptical radial gradient, no stroke, no clip) becoming bootstrap's heart: the
+    element's paths, keyed as in pixels (a few keyframes), are a matte layer (``td``) drawing them in white; the
+    gradient fills one still rectangle below it (``tt`` 1), its group's transform placing the gradient's frame.
+    Written in that frame instead, as before, the paths changed at every frame (the players draw it:
+    tests/encode/test_vector_paint_players.py)."""
+    icons = Path(__file__).resolve().parents[1] / "data" / "icons"
+    scene = tr.load_scene([icons / "fluent-emoji" / "egg.svg", icons / "bootstrap" / "heart-fill.svg"])
+    document = json.loads(tr.write(scene, tmp_path / "egg.json").read_text())
+    layers = _shape_layers(document)
+    mattes = [i for i, layer in enumerate(layers) if layer.get("td") == 1]
+    assert mattes, "a matte layer"
+    for i in mattes:
+        matte, filled = layers[i], layers[i + 1]
+        assert filled.get("tt") == 1 and (matte["ip"], matte["op"]) == (filled["ip"], filled["op"])
+        (group,) = filled["shapes"]
+        (cover,) = [item for item in group["it"] if item["ty"] == "sh"]
+        assert cover["ks"]["a"] == 0 and len(cover["ks"]["k"]["v"]) == 4
+        assert [item["ty"] for item in group["it"]] == ["sh", "gf", "tr"]
+        paths = _paths_in(matte["shapes"])  # some may be still paths in a group that moves them
+        assert paths and all(not p["ks"]["a"] or len(p["ks"]["k"]) < document["op"] // 2 for p in paths)
+
+
 def test_gradients_and_clip_paths_are_written(tmp_path: Path) -> None:
     """A linear gradient of two stops becoming one of three, under a clip path: Lottie's gradient fill keeps
     one stop count (the three offsets) in every keyframe, its clip path is the layer's mask; the SVG has a

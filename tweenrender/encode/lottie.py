@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from .atomic import replacing
-from .lottie_paint import gradient_fill, masks, matte, refuse_unsupported, stretched_fill
+from .lottie_paint import gradient_fill, masks, matte, matte_of, refuse_unsupported, stretched_cover, stretched_fill
 from .lottie_values import animated, moved_group, path_item, percent, scalar, static, switched, transform
 from .vector_data import Array, VectorClip, VectorRun
 
@@ -71,7 +71,8 @@ def _colour_prop(frames: tuple[int, ...], colours: Array) -> tuple[dict[str, Any
 
 
 def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
-    """The run's layer, below the matte of its clip path of several contours if it has one."""
+    """The run's layer, below the matte of its clip path of several contours if it has one; or, for a fill of an
+    elliptical gradient neither stroked nor clipped, a layer of the gradient below a matte of the run's paths."""
     frames = clip.frames
     paths = []
     for i, shut in enumerate(run.closed):
@@ -81,7 +82,16 @@ def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
         paths.append(item if move is None else moved_group(item, move))
     groups = run.stroke_groups() if run.stroke is not None else []
     gradient = run.gradient
-    stretched = run.gradient_paths is not None
+    stretched = gradient is not None and gradient.kind == "radial" and not gradient.circular
+    opacity = scalar(animated(run.paint_frames, [[v] for v in percent(run.opacity)]))
+    start = run.first - _EARLY_IN if run.first > 0 else 0
+    stop = run.stop - _EARLY_OUT if run.stop < frames else frames
+    if stretched and run.gradient_matted():  # the gradient's frame fills the picture, seen through the paths
+        assert gradient is not None
+        outline = matte_of(run.element, paths, _FILL_RULES[run.fill_rule])
+        shape = _shape_layer(f"{run.element} shape", static(100), [outline], start, stop)
+        cover = _shape_layer(run.element, opacity, [stretched_cover(run, gradient, clip.size)], start, stop)
+        return [dict(shape, td=1), dict(cover, tt=1)]
     shapes: list[dict[str, Any]] = []
     if len(groups) == 1 and not stretched:  # one group: the paths, the stroke above the fill
         items = [*paths, _stroke(run, groups[0][1], groups[0][0]), *_fill(run),
@@ -98,10 +108,7 @@ def _layers(run: VectorRun, clip: VectorClip) -> list[dict[str, Any]]:
         else:
             shapes.append({"ty": "gr", "nm": run.element,
                            "it": [*paths, *_fill(run), {"ty": "tr", **transform(static(100))}]})
-    opacity = scalar(animated(run.paint_frames, [[v] for v in percent(run.opacity)]))
-    layer = _shape_layer(run.element, opacity, shapes,
-                         run.first - _EARLY_IN if run.first > 0 else 0, run.stop - _EARLY_OUT if run.stop < frames
-                         else frames)
+    layer = _shape_layer(run.element, opacity, shapes, start, stop)
     if run.clip_paths is None:
         return [layer]
     clipping = masks(run.clip_paths)

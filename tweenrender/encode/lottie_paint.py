@@ -5,8 +5,11 @@ the paths: start ``s`` and end ``e`` in pixels, a radial one's focal point as it
 of the radius, at angle ``a`` from ``s → e``), the stops as ``g`` (``p`` colour stops ``offset, r, g, b``
 then as many opacity stops ``offset, alpha``), all keyed at the paint keyframes. Lottie's gradients are
 circles: an elliptical one is drawn in its own group whose transform (position, rotation, scale) turns
-the circle into the ellipse, with the paths written in that group's frame, from the exact paths at every
-frame through the transform the player computes there, keyframed within the tolerance. Lottie gradients
+the circle into the ellipse. It fills a rectangle that covers the picture at every frame, drawn through a
+matte of the run's own paths (a layer above it drawing them in white); where the run is stroked or clipped
+(its layer's one matte taken, or the stroke to be drawn with the fill) the paths are written in that
+group's frame instead, from the exact paths at every frame through the transform the player computes
+there, keyframed within the tolerance. Lottie gradients
 pad: a gradient that repeats or reflects is refused.
 
 Clip paths of one contour are the layer's masks (in pixels; a layer is not transformed), intersected
@@ -25,9 +28,9 @@ import numpy as np
 
 from ..errors import OptionError
 from .lottie_values import animated, contour, path_item, percent, scalar, static, transform
-from .vector_data import Array, ClipPathKeys, GradientKeys, VectorRun
+from .vector_data import Array, ClipPathKeys, GradientKeys, VectorRun, into_gradient_frame
 
-__all__ = ["gradient_fill", "stretched_fill", "masks", "matte", "refuse_unsupported"]
+__all__ = ["gradient_fill", "stretched_fill", "stretched_cover", "masks", "matte", "refuse_unsupported"]
 
 _DECIMALS = 5
 
@@ -100,6 +103,33 @@ def stretched_fill(run: VectorRun, gradient: GradientKeys, rule: int) -> dict[st
     return {"ty": "gr", "nm": run.element, "it": items}
 
 
+def stretched_cover(run: VectorRun, gradient: GradientKeys, size: tuple[int, int]) -> dict[str, Any]:
+    """A group filling, with the run's elliptical ``gradient``, a rectangle in the gradient's own frame that covers
+    the picture (``size`` pixels) at every frame of the run, as the player places that frame: drawn through a
+    matte of the run's paths (:func:`matte_of`)."""
+    frames = run.paint_frames
+    position = animated(frames, _points(gradient.start))
+    rotation = scalar(animated(frames, [[round(float(a), 4)] for a in gradient.angle]))
+    scale = animated(frames, [[100.0, round(float(100.0 * r), 4)] for r in gradient.ratio])
+    width, height = size
+    corners = np.array([[0.0, 0.0], [width, 0.0], [width, height], [0.0, height]])
+    centre, angle, ratio = run.gradient_placed(np.arange(run.first, run.stop, dtype=np.float64))
+    local = np.concatenate([into_gradient_frame(corners, c, a, r) for c, a, r in zip(centre, angle, ratio)])
+    low, high = np.floor(local.min(axis=0)) - 1, np.ceil(local.max(axis=0)) + 1  # a pixel's margin and more
+    box = np.array([[low[0], low[1]], [high[0], low[1]], [high[0], high[1]], [low[0], high[1]]])
+    items = [path_item("cover", 0, (run.first,), box[None], True),
+             gradient_fill(frames, gradient, 1, stretched=True),
+             {"ty": "tr", **transform(static(100), position, rotation, scale)}]
+    return {"ty": "gr", "nm": run.element, "it": items}
+
+
+def matte_of(name: str, paths: list[dict[str, Any]], rule: int) -> dict[str, Any]:
+    """The shapes of a matte layer (``td``) drawing ``paths`` (path items) in white, filled by ``rule``."""
+    return {"ty": "gr", "nm": name, "it": [*paths, {"ty": "fl", "nm": "matte", "c": static([1, 1, 1, 1]),
+                                                    "o": static(100), "r": rule},
+                                           {"ty": "tr", **transform(static(100))}]}
+
+
 def masks(clip_paths: ClipPathKeys) -> list[dict[str, Any]]:
     """A layer's masks: the clip paths of one contour each, intersected (none when there are none)."""
     singles = [region[0] for region in clip_paths.regions if len(region) == 1]
@@ -114,6 +144,4 @@ def matte(clip_paths: ClipPathKeys) -> dict[str, Any] | None:
     if not several:
         return None
     paths = [path_item(f"clip {i}", i, clip_paths.frames, points, True) for i, points in enumerate(several[0])]
-    return {"ty": "gr", "nm": "clip", "it": [*paths, {"ty": "fl", "nm": "clip", "c": static([1, 1, 1, 1]),
-                                                      "o": static(100), "r": 1},
-                                             {"ty": "tr", **transform(static(100))}]}
+    return matte_of("clip", paths, 1)

@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from ..model import Color
 
-__all__ = ["PIXEL_DIGITS", "SCALE_DIGITS", "HANDLE_DIGITS", "Handles", "STRAIGHT", "GradientKeys", "ClipPathKeys", "ContourMove", "VectorRun", "VectorClip"]
+__all__ = ["into_gradient_frame", "PIXEL_DIGITS", "SCALE_DIGITS", "HANDLE_DIGITS", "Handles", "STRAIGHT", "GradientKeys", "ClipPathKeys", "ContourMove", "VectorRun", "VectorClip"]
 
 Array = NDArray[np.float64]
 
@@ -33,6 +33,14 @@ Handles = tuple[float, float, float, float]
 
 STRAIGHT: Handles = (0.0, 0.0, 1.0, 1.0)
 """Even timing: a straight line through (0, 0) and (1, 1)."""
+
+
+def into_gradient_frame(points: Array, centre: Array, angle: float, ratio: float) -> Array:
+    """Pixels ``(..., 2)`` in the frame ``pixel = centre + R(angle) · diag(1, ratio) · u`` (angle in degrees)."""
+    theta = np.radians(angle)
+    c, s = np.cos(theta), np.sin(theta)
+    d = points - centre
+    return np.stack([c * d[..., 0] + s * d[..., 1], (-s * d[..., 0] + c * d[..., 1]) / ratio], axis=-1)
 
 
 @dataclass(frozen=True)
@@ -154,6 +162,20 @@ class VectorRun:
         if self.contour_keys is not None:
             return self.contour_keys[index]
         return self.path_frames, self.paths[index], self.eases
+
+    def gradient_matted(self) -> bool:
+        """Whether a Lottie draws the run's fill, where its gradient is an ellipse, through a matte of its own paths
+        (neither stroked nor clipped), rather than with the paths written in the gradient's frame."""
+        return self.stroke is None and self.clip_paths is None
+
+    def gradient_placed(self, frames: Array) -> tuple[Array, Array, Array]:
+        """Where a player places the gradient's own frame at clip ``frames (F,)``, each value keyed straight at the
+        paint keyframes: centres ``(F, 2)``, angles ``(F,)`` (degrees), ratios ``(F,)`` (:class:`GradientKeys`)."""
+        gradient = self.gradient
+        assert gradient is not None, "a run filled by a gradient"
+        keys = np.array(self.paint_frames, dtype=np.float64)
+        centre = np.stack([np.interp(frames, keys, gradient.start[:, k]) for k in range(2)], axis=1)
+        return centre, np.interp(frames, keys, gradient.angle), np.interp(frames, keys, gradient.ratio)
 
     def exact_contours(self) -> list[Array]:
         """:attr:`exact_frames` split per contour: ``(stop - first, L_i, 2)`` each."""

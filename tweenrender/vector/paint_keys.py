@@ -23,7 +23,7 @@ from numpy.typing import NDArray
 
 from .keyframes import greedy_keyframes
 from ..core.timing.timeline import ShapeAt
-from ..encode.vector_data import ClipPathKeys, GradientKeys, Handles, VectorRun
+from ..encode.vector_data import ClipPathKeys, GradientKeys, Handles, VectorRun, into_gradient_frame
 from ..model import Gradient, Paint
 from ..core.view import Viewport, pixel_affine
 
@@ -278,24 +278,23 @@ def gradient_frame_paths(run: VectorRun, tolerance: float, keyed: Callable[..., 
                          ) -> tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None:
     """The run's contours in its elliptical radial gradient's own frame, as the player places that frame at
     each frame: ``(frames, (one path per contour, as ``VectorRun.paths``), eases (K - 1,))``; ``None`` for a
-    linear or circular gradient (or none). Where the frame never moves, the run's own keyframes mapped into it
+    linear or circular gradient (or none), and for a run that is neither stroked nor clipped, whose Lottie
+    draws the gradient through a matte of its own paths (:func:`..encode.lottie_paint.stretched_cover`). Where the frame never moves, the run's own keyframes mapped into it
     (an affine map keeps a cubic a cubic of its mapped control points); else the exact paths at every frame of
     the run mapped through the player's transform there and keyed as curves by ``keyed`` (``(samples, closed,
     tolerance) -> (frames from 0, paths, eases, ...)``) so that, mapped back, they stay within ``tolerance``
     pixels."""
     gradient = run.gradient
-    if gradient is None or gradient.kind == "linear" or gradient.circular:
+    if gradient is None or gradient.kind == "linear" or gradient.circular or run.gradient_matted():
         return None
-    keys = np.array(run.paint_frames, dtype=np.float64)
     still = all(np.array_equal(a[:1].repeat(len(a), 0), a) for a in (gradient.start, gradient.angle, gradient.ratio))
     if still:
-        local = tuple(_into(p, gradient.start[0], gradient.angle[0], gradient.ratio[0]) for p in run.paths)
+        local = tuple(into_gradient_frame(p, gradient.start[0], gradient.angle[0], gradient.ratio[0]) for p in run.paths)
         return run.path_frames, local, run.eases
     frames = np.arange(run.first, run.stop, dtype=np.float64)
-    centre = np.stack([np.interp(frames, keys, gradient.start[:, k]) for k in range(2)], axis=1)  # (F, 2)
-    angle, ratio = np.interp(frames, keys, gradient.angle), np.interp(frames, keys, gradient.ratio)
+    centre, angle, ratio = run.gradient_placed(frames)
     exact = run.exact_frames  # (F, sum L_i, 2)
-    placed = np.stack([_into(exact[f], centre[f], angle[f], ratio[f]) for f in range(len(frames))])
+    placed = np.stack([into_gradient_frame(exact[f], centre[f], angle[f], ratio[f]) for f in range(len(frames))])
     stretch = max(1.0, float(ratio.max()))  # the transform lengthens no distance more than this
     bounds = np.cumsum([0] + [c.shape[1] for c in run.exact_contours()])
     picked, paths, eases = keyed([placed[:, a:b] for a, b in zip(bounds, bounds[1:])], run.closed,
@@ -303,9 +302,3 @@ def gradient_frame_paths(run: VectorRun, tolerance: float, keyed: Callable[..., 
     return tuple(run.first + k for k in picked), paths, eases
 
 
-def _into(points: Array, centre: Array, angle: float, ratio: float) -> Array:
-    """Pixels ``(..., 2)`` in the frame ``pixel = centre + R(angle) · diag(1, ratio) · u`` (angle in degrees)."""
-    theta = np.radians(angle)
-    c, s = np.cos(theta), np.sin(theta)
-    d = points - centre
-    return np.stack([c * d[..., 0] + s * d[..., 1], (-s * d[..., 0] + c * d[..., 1]) / ratio], axis=-1)

@@ -159,10 +159,9 @@ def _fill(run: VectorRun) -> list[dict[str, Any]]:
     # the fill rule switches: two fills of the same paths, each shown while its rule is in force
     at, rule = run.rule_switch
     alphas = percent(run.fill[:, 3])
-    return [{"ty": "fl", "nm": "fill", "c": colour, "o": switched(run.paint_frames, alphas, at, False, _EARLY_IN),
-             "r": _FILL_RULES[run.fill_rule]},
-            {"ty": "fl", "nm": f"fill from frame {at}", "c": colour, "o": switched(run.paint_frames, alphas, at, True, _EARLY_IN),
-             "r": _FILL_RULES[rule]}]
+    return [{"ty": "fl", "nm": name, "c": colour, "o": switched(run.paint_frames, alphas, at, after, _EARLY_IN),
+             "r": _FILL_RULES[chosen]}
+            for name, chosen, after in (("fill", run.fill_rule, False), (f"fill from frame {at}", rule, True))]
 
 
 def _background(clip: VectorClip) -> dict[str, Any]:

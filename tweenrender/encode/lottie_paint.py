@@ -91,26 +91,26 @@ def stretched_fill(run: VectorRun, gradient: GradientKeys, rule: int) -> dict[st
     """A group filling the run's contours with its elliptical ``gradient``: its transform places the
     gradient's own frame (``pixel = start + R(angle) · diag(1, ratio) · u``), the paths are written in it."""
     frames = run.paint_frames
-    position = animated(frames, _points(gradient.start))
-    rotation = scalar(animated(frames, [[round(float(a), 4)] for a in gradient.angle]))
-    scale = animated(frames, [[100.0, round(float(100.0 * r), 4)] for r in gradient.ratio])
     assert run.gradient_paths is not None, "an elliptical gradient's run carries its paths in the gradient's frame"
     path_frames, local, eases = run.gradient_paths
     paths = [path_item(f"contour {i}", i, path_frames, points, shut, eases)
              for i, (points, shut) in enumerate(zip(local, run.closed))]
-    items = [*paths, gradient_fill(frames, gradient, rule, stretched=True),
-             {"ty": "tr", **transform(static(100), position, rotation, scale)}]
+    items = [*paths, gradient_fill(frames, gradient, rule, stretched=True), _gradient_frame(frames, gradient)]
     return {"ty": "gr", "nm": run.element, "it": items}
+
+
+def _gradient_frame(frames: tuple[int, ...], gradient: GradientKeys) -> dict[str, Any]:
+    """A group's transform (``tr``) placing the elliptical ``gradient``'s own frame, keyed at ``frames``."""
+    position = animated(frames, _points(gradient.start))
+    rotation = scalar(animated(frames, [[round(float(a), 4)] for a in gradient.angle]))
+    scale = animated(frames, [[100.0, round(float(100.0 * r), 4)] for r in gradient.ratio])
+    return {"ty": "tr", **transform(static(100), position, rotation, scale)}
 
 
 def stretched_cover(run: VectorRun, gradient: GradientKeys, size: tuple[int, int]) -> dict[str, Any]:
     """A group filling, with the run's elliptical ``gradient``, a rectangle in the gradient's own frame that covers
     the picture (``size`` pixels) at every frame of the run, as the player places that frame: drawn through a
     matte of the run's paths (:func:`matte_of`)."""
-    frames = run.paint_frames
-    position = animated(frames, _points(gradient.start))
-    rotation = scalar(animated(frames, [[round(float(a), 4)] for a in gradient.angle]))
-    scale = animated(frames, [[100.0, round(float(100.0 * r), 4)] for r in gradient.ratio])
     width, height = size
     corners = np.array([[0.0, 0.0], [width, 0.0], [width, height], [0.0, height]])
     centre, angle, ratio = run.gradient_placed(np.arange(run.first, run.stop, dtype=np.float64))
@@ -118,8 +118,7 @@ def stretched_cover(run: VectorRun, gradient: GradientKeys, size: tuple[int, int
     low, high = np.floor(local.min(axis=0)) - 1, np.ceil(local.max(axis=0)) + 1  # a pixel's margin and more
     box = np.array([[low[0], low[1]], [high[0], low[1]], [high[0], high[1]], [low[0], high[1]]])
     items = [path_item("cover", 0, (run.first,), box[None], True),
-             gradient_fill(frames, gradient, 1, stretched=True),
-             {"ty": "tr", **transform(static(100), position, rotation, scale)}]
+             gradient_fill(run.paint_frames, gradient, 1, stretched=True), _gradient_frame(run.paint_frames, gradient)]
     return {"ty": "gr", "nm": run.element, "it": items}
 
 

@@ -8,8 +8,8 @@ import numpy as np
 
 from .vector_data import HANDLE_DIGITS, PIXEL_DIGITS, SCALE_DIGITS, STRAIGHT, Array, ContourMove, Handles
 
-__all__ = ["DIGITS", "compact", "static", "animated", "switched", "scalar", "percent", "transform", "contour", "path_item",
-           "moved_group"]
+__all__ = ["DIGITS", "compact", "static", "animated", "switched", "scalar", "percent", "transform", "contour",
+           "path_item", "moved_group"]
 
 DIGITS = PIXEL_DIGITS  # pixels are written to a hundredth
 

@@ -1,16 +1,16 @@
 """What a vector file holds: every element's contours and paint at every frame, reduced to keyframes.
 
-:func:`vector_clip` samples each shape once per frame of the clip (exactly what the raster draws),
-maps scene units to output pixels, and splits each shape's frames into *runs* (:mod:`.runs`):
-consecutive frames of one segment on which it is drawn alike. A run keeps one list of contours (the
-segment's pairs, so every contour keeps one vertex count) and becomes a layer (Lottie, with
-``ip``/``op``) or a path element shown over those frames (SVG). Paths are cubic Bézier contours (:mod:`.curves`) keyed by
+:func:`vector_clip` samples each shape once per frame of the clip (exactly what the raster draws), maps
+scene units to output pixels, and splits each shape's frames into *runs* (:mod:`.runs`): consecutive
+frames of one segment on which it is drawn alike. A run keeps one list of contours (the segment's pairs,
+so every contour keeps one vertex count) and becomes a layer (Lottie, with ``ip``/``op``) or a path
+element shown over those frames (SVG). Paths are cubic Bézier contours (:mod:`.curves`) keyed by
 :mod:`.keyframes`: a contour that moves straight between its segment's keys (``linear``, ``auto``'s
-straight paths with their copies spread) whose keys fall on whole frames is those two keys, timed by
-the segment's easing (in the Lottie, even where its element's other contours need more); every other
-run's paths are fitted within ``max_error`` pixels (keyframe values free within it, each span with its
-own timing; the run's first and last keyframes exact); paint within 1/255 (width, a gradient's geometry
-and clip paths within ``max_error``; see :mod:`.paint_keys`).
+straight paths with their copies spread) whose keys fall on whole frames is those two keys, timed by the
+segment's easing (in the Lottie, even where its element's other contours need more); every other run's
+paths are fitted within ``max_error`` pixels (keyframe values free within it, each span with its own
+timing; the run's first and last keyframes exact); paint within 1/255 (width, a gradient's geometry and
+clip paths within ``max_error``; see :mod:`.paint_keys`).
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pa
 from ..encode.formats import is_vector, listing, names, writer
 from ..encode.vector_data import PIXEL_DIGITS, STRAIGHT, ContourMove, Handles, VectorClip, VectorRun
 from ..errors import OptionError
-from ..model import Color, Paint, Scene, Shape
+from ..model import Color, Paint, Shape
 from ..core.view import Viewport
 from ..plan.job import RenderJob, scene_view, tracks_of
 from ..plan.options import RenderOptions

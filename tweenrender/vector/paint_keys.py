@@ -289,7 +289,8 @@ def gradient_frame_paths(run: VectorRun, tolerance: float, keyed: Callable[..., 
         return None
     still = all(np.array_equal(a[:1].repeat(len(a), 0), a) for a in (gradient.start, gradient.angle, gradient.ratio))
     if still:
-        local = tuple(into_gradient_frame(p, gradient.start[0], gradient.angle[0], gradient.ratio[0]) for p in run.paths)
+        local = tuple(into_gradient_frame(p, gradient.start[0], gradient.angle[0], gradient.ratio[0])
+                      for p in run.paths)
         return run.path_frames, local, run.eases
     frames = np.arange(run.first, run.stop, dtype=np.float64)
     centre, angle, ratio = run.gradient_placed(frames)

@@ -6,7 +6,8 @@ windings go on where the picture does not change: windings only relative to one 
 at all under ``evenodd`` nor where nothing is filled, and a solid fill may switch once between the two rules
 inside a run, drawn with the windings of its ``nonzero`` frames (under ``evenodd`` they change nothing), the files
 switching the rule at that frame. A run under ``evenodd`` alone is wound by nesting, so that its picture is
-the same under either rule wherever its contours do not cross. The paint order splits runs where it shows (:mod:`..core.stacking`).
+the same under either rule wherever its contours do not cross. The paint order splits runs where it shows
+(:mod:`..core.stacking`).
 """
 
 from __future__ import annotations
@@ -95,8 +96,8 @@ def runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp], pha
                     filling = now
             if not same:
                 dashed = any(at.paint.dash is not None for at in shapes[start:f])
-                out.append(Span(start, f, rule, _drawn_windings(shapes[start], rule, switch, shapes[windings_at], dashed),
-                                switch))
+                windings = _drawn_windings(shapes[start], rule, switch, shapes[windings_at], dashed)
+                out.append(Span(start, f, rule, windings, switch))
                 start = None
         if start is None and f < len(shapes) and drawn[f]:
             start, filling, switch, windings_at = f, _filling(shape, shapes[f]), None, f
@@ -146,7 +147,8 @@ def _windings(shape: Shape, at: ShapeAt) -> tuple[bool, ...]:
 
 
 def _refuse_uncarried(shape: Shape, at: ShapeAt) -> None:
-    """A vector file cannot carry cross-fading contours, masks, group opacity nor pictures: refuse, naming the element."""
+    """A vector file cannot carry cross-fading contours, masks, group opacity nor pictures: refuse, naming the
+    element."""
     if at.fade is not None:
         raise OptionError(f"element {shape.name!r}: its contours cross-fade (unmatched = \"fade\"), which the "
                           "vector formats do not carry; render a video or PNG frames", "format")

@@ -49,7 +49,8 @@ ICON_PAIRS = [("mdi/alpha-a.svg", "mdi/alpha-b.svg"),  # holes
               ("heroicons/check-circle.svg", "octicons/sun-24.svg"),  # even-odd, pieces that appear
               ("simple-icons/github.svg", "lucide/apple.svg"),
               ("octicons/smiley-24.svg", "tabler/letter-a.svg"),  # black elements change places: one layer each
-              ("octicons/heart-24.svg", "heroicons/check-circle.svg")]  # the fill rule switches inside a layer
+              ("octicons/heart-24.svg", "heroicons/check-circle.svg"),  # the fill rule switches inside a layer
+              ("mdi/weather-night.svg", "bootstrap/sun-fill.svg")]  # windings change where contours lie apart
 PAINT = """size = [480, 270]
 fps = 12
 view = [0, 0, 16, 9]

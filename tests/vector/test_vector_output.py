@@ -407,6 +407,18 @@ def test_a_fill_rule_that_switches_inside_a_run_keeps_one_layer_with_a_fill_of_e
     assert svg.count("<path ") == 1 and f'values="nonzero;evenodd"' in svg
 
 
+@pytest.mark.parametrize("paths, layers", [
+    (("M2 2h4v4h-4z M10 2h4v4h-4z", "M2 3h4v4h-4z M10 3v4h4v-4z"), 1),  # apart: their windings change nothing
+    (("M2 2h8v8h-8z M4 4h4v4h-4z", "M2 2h8v8h-8z M4 4v4h4v-4z"), 2)])  # nested: filled, then a hole
+def test_windings_that_change_between_keys_start_a_layer_only_where_contours_meet(tmp_path: Path, paths, layers) -> None:  # type: ignore[no-untyped-def]
+    """Two squares filled nonzero, the second drawing winding the second square the other way: apart, the picture
+    is the same either way and the element stays one layer; one inside the other, the inner square turns from
+    filled to a hole where the second key's windings take over, and the layer splits there."""
+    drawings = [_drawing(tmp_path, f"{name}.svg", f'<path id="squares" d="{d}"/>') for name, d in zip("ab", paths)]
+    document = json.loads(tr.write(tr.load_scene(drawings), tmp_path / "windings.json").read_text())
+    assert len(_shape_layers(document)) == layers
+
+
 def test_the_fill_rule_of_an_element_that_fills_nothing_starts_no_new_layer(tmp_path: Path) -> None:
     """The squares above stroked, not filled: their rule and windings change nothing drawn, so one layer (one SVG
     path) with no second fill and no switch."""

@@ -1,13 +1,13 @@
 """Where an element's layers begin and end: its frames split into *runs*, each drawn alike.
 
-A run is consecutive frames of one segment and one paint order on which the element is drawn with finite contours,
-the same contours, stroke ends and kind of gradient fill and clip paths of the same make; its fill rule and
-windings go on where the picture does not change: windings only relative to one another under ``nonzero``, not
-at all under ``evenodd`` nor where nothing is filled, and a solid fill may switch once between the two rules
-inside a run, drawn with the windings of its ``nonzero`` frames (under ``evenodd`` they change nothing), the files
-switching the rule at that frame. A run under ``evenodd`` alone is wound by nesting, so that its picture is
-the same under either rule wherever its contours do not cross. The paint order splits runs where it shows
-(:mod:`..core.stacking`).
+A run is consecutive frames of one segment and one paint order on which the element is drawn with finite
+contours, the same contours, stroke ends and kind of gradient fill and clip paths of the same make; its fill
+rule and windings go on where the picture does not change: windings only relative to one another under
+``nonzero``, and there only between contours that meet or nest; not at all under ``evenodd`` nor where nothing
+is filled, and a solid fill may switch once between the two rules inside a run, drawn with the windings of its
+``nonzero`` frames (under ``evenodd`` they change nothing), the files switching the rule at that frame. A run
+under ``evenodd`` alone is wound by nesting, so that its picture is the same under either rule wherever its
+contours do not cross. The paint order splits runs where it shows (:mod:`..core.stacking`).
 """
 
 from __future__ import annotations
@@ -17,9 +17,10 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.contours import roles
+from ..core.contours import inside, roles
 from ..core.geometry import signed_area
 from ..core.stacking import order_at, order_shows, swapped_pairs
+from ..core.tangles import proper_crossings
 from ..core.timing.timeline import ShapeAt, Track
 from ..errors import OptionError
 from ..model import Scene, Shape
@@ -83,6 +84,9 @@ def runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp], pha
         if start is not None:
             same = f < len(shapes) and drawn[f] and look(f) == look(start)
             now = _filling(shape, shapes[f]) if same else None
+            if now is not None and filling is not None and now[0] == filling[0] == "nonzero" \
+                    and not (now[2] or filling[2]) and _apart_where_they_differ(shapes[f], filling[1], now[1]):
+                now = filling  # drawn with the run's windings, this frame looks the same
             if now is not None and now != filling:
                 if filling is None:  # the first frame of the run that fills or dashes
                     rule = now[0]
@@ -119,6 +123,26 @@ def _drawn_windings(first: ShapeAt, rule: str, switch: tuple[int, str] | None, n
     kinds = roles(list(first.contours), list(first.closed))
     return tuple(kind != "open" and len(c) >= 3 and (signed_area(c) > 0) != (kind == "outer")
                  for c, kind in zip(first.contours, kinds))
+
+
+def _apart_where_they_differ(at: ShapeAt, ours: tuple[bool, ...], theirs: tuple[bool, ...]) -> bool:
+    """Whether ``at`` fills nonzero the same with the relative windings ``ours`` as with ``theirs``
+    (:func:`_windings`): every two contours wound alike by one and not by the other lie apart (no edges meet, as
+    the exact test finds them, and neither holds the other), so that neither's winding adds to the other's."""
+    count = len(at.contours)
+    ours, theirs = ours or (False,) * count, theirs or (False,) * count  # none reversed
+    if not len(ours) == len(theirs) == count:
+        return False
+    changed = {i for i, (a, b) in enumerate(zip(ours, theirs)) if a != b}
+    pairs = [(i, j) for i in changed for j in range(count) if j not in changed]  # their relative winding changed
+    if not pairs:
+        return True
+    shut = [len(c) >= 3 for c in at.contours]
+    meeting = set(proper_crossings(list(at.contours), [True] * count, touching=True))
+    return not any((min(i, j), max(i, j)) in meeting
+                   or (shut[i] and len(at.contours[j]) and inside(at.contours[j][:1], at.contours[i])[0])
+                   or (shut[j] and len(at.contours[i]) and inside(at.contours[i][:1], at.contours[j])[0])
+                   for i, j in pairs)
 
 
 def _filling(shape: Shape, at: ShapeAt) -> tuple[str, tuple[bool, ...], bool] | None:

@@ -201,7 +201,7 @@ def stacking_plan(shapes: Sequence[Shape], shapes_at: Callable[[int, Array], lis
             for a, b in pairs:
                 at_a, at_b = drawn[a][k], drawn[b][k]
                 if order_shows(at_a, at_b):
-                        areas[k] += overlap_area(at_a, _rule(shapes[a], at_a), _width(shapes[a], at_a),
+                    areas[k] += overlap_area(at_a, _rule(shapes[a], at_a), _width(shapes[a], at_a),
                                              at_b, _rule(shapes[b], at_b), _width(shapes[b], at_b))
         plan.append(Switch(start, end, choose_switch(areas), before, after, tuple(pairs), tuple(areas.tolist())))
     return tuple(plan)

@@ -45,7 +45,7 @@ class Span:
 
 
 def stacking_phases(scene: Scene, tracks: tuple[Track, ...], times: Array, drawn: list[list[ShapeAt]]
-              ) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:
+                    ) -> tuple[list[tuple[int, ...]], NDArray[np.intp]]:
     """The paint orders the clip passes through (shape indices, first painted first) and, per frame, which
     of them is in force: ``(F,)``. A layer is split where the order switches (docs/artwork.md;
     :mod:`..core.stacking`), unless no two shapes that change places look otherwise for it at any frame until
@@ -79,10 +79,10 @@ def runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp], pha
     out: list[Span] = []
     start: int | None = None
     filling: tuple[str, tuple[bool, ...], bool] | None = None
-    rule, windings_at, switch = "", 0, None
+    rule, windings_at, switch, looks = "", 0, None, None
     for f in range(len(shapes) + 1):
         if start is not None:
-            same = f < len(shapes) and drawn[f] and look(f) == look(start)
+            same = f < len(shapes) and drawn[f] and look(f) == looks
             now = _filling(shape, shapes[f]) if same else None
             if now is not None and filling is not None and now[0] == filling[0] == "nonzero" \
                     and not (now[2] or filling[2]) and _apart_where_they_differ(shapes[f], filling[1], now[1]):
@@ -104,7 +104,7 @@ def runs_of(shape: Shape, shapes: list[ShapeAt], segments: NDArray[np.intp], pha
                 out.append(Span(start, f, rule, windings, switch))
                 start = None
         if start is None and f < len(shapes) and drawn[f]:
-            start, filling, switch, windings_at = f, _filling(shape, shapes[f]), None, f
+            start, filling, switch, windings_at, looks = f, _filling(shape, shapes[f]), None, f, look(f)
             rule = filling[0] if filling is not None else style(shape, shapes[f])[0]
     return out
 

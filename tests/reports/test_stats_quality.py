@@ -266,3 +266,21 @@ def test_an_element_whose_contours_all_grow_or_shrink_is_measured_for_tangles(tm
     assert entry["methods"]["linear"]["crossings"] == []
     assert "1 open stroke, 2 contours growing or shrinking" in stats_text(stats)
     assert "auto has no contour in both keys to choose over" in stats_text(stats)
+
+
+def test_auto_says_when_contours_without_a_partner_tangle_and_no_mesh_holds_them() -> None:
+    """lucide's book-search becoming mdi's inbox (``tests/data/pairs``): the tray has no partner and grows where the
+    book's outline still passes, and no mesh can hold it. What render draws tangles, as shapely sees it, and auto's
+    reason says so, with the count of t, rather than only the moving contours' count ("injective: tangled at 0")."""
+    folder = DATA / "pairs"
+    scene = tr.load_scene([folder / "lucide-book-search.svg", folder / "mdi-inbox-arrow-up-outline.svg"], step=1.0)
+    seen = _shapely_crossings(scene, scene.method_of(scene.shapes[0]))
+    assert seen, "shapely finds the drawn in-betweens tangled"
+    shapes = stats_dict(scene, [0.5], ["auto"])["shapes"]
+    tangled_shapes = {name for name, _ in seen}
+    for shape in shapes:
+        if shape["name"] in tangled_shapes:
+            why = shape["auto"]["why"]
+            assert "with the contours without a partner:" in why and "no mesh holds them" in why, why
+            count = int(why.split("with the contours without a partner:")[1].split("tangled at ")[1].split(" of")[0])
+            assert count >= 1

@@ -321,6 +321,10 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     first = candidate_quality(*as_grown, view=segment.view)
     held = _meshed_alone(segment) if first[0] else []  # the mesh only where they tangle as they grow
     if not held:
+        if first[0]:  # they tangle as drawn, and no mesh holds them: say so
+            return replace(choice, why=f"{choice.why}; with the contours without a partner: {choice.method} tangled "
+                                       f"at {first[0]} of {len(QUALITY_T)} t, stray {first[1]:.3f}; no mesh holds "
+                                       "them"), None
         return choice, None
     from ..methods.injective import injective_contours
 

@@ -119,3 +119,46 @@ def test_a_vector_file_past_the_sample_limit_is_refused_before_any_work(cli, tmp
     assert code == 2, err
     assert err.count("\n") == 1 and "vector" in err and "10,000,000" in err, err
     assert max(sampled, default=0) < 100 and not out.exists()  # the view's few probes at most, no frame
+
+
+
+GROWING = """size = [400, 300]
+fps = 20
+view = [0, 0, 40, 30]
+method = "linear"
+[[shape]]
+name = "squares"
+fill = "#3366cc"
+[[shape.key]]
+time = 0
+contours = [[[10, 10], [14, 10], [14, 14], [10, 14]]{first_extra}]
+[[shape.key]]
+time = 2
+contours = [[[12, 10], [16, 10], [16, 14], [12, 14]], [[25, 18], [35, 18], [35, 28], [25, 28]]]
+"""
+
+
+@pytest.mark.parametrize("grows, fitted", [(True, 1), (False, 2)])
+def test_contours_off_their_straight_path_are_not_fitted_for_two_keyframes(tmp_path: Path,
+                                                                          monkeypatch: pytest.MonkeyPatch,
+                                                                          grows: bool, fitted: int) -> None:
+    """Between two keys of a ``linear`` segment a contour may take two keyframes only where its vertices stay
+    within the bound (0.25 px) of the straight line between their keys at every frame. A square that grows from a
+    point with its area even in time is scaled by about the square root of the time: a corner 50 px from the
+    point (10 px a unit) leaves its chord by up to a quarter of that, 12 px, so it is not fitted for two keyframes
+    (it was fitted, then the fit thrown away); the square that moves is, and keeps its two. Where both squares
+    move (the second key's big square has a partner), both are fitted."""
+    import json
+
+    from tweenrender.vector import export
+
+    calls = []
+    fewest = export._fewest_cubics
+    monkeypatch.setattr(export, "_fewest_cubics", lambda *args, **kwargs: calls.append(1) or fewest(*args, **kwargs))
+    extra = "" if grows else ", [[20, 14], [30, 14], [30, 24], [20, 24]]"
+    scene = tr.load_scene(write_scene(tmp_path, GROWING.format(first_extra=extra)))
+    document = json.loads(tr.write(scene, tmp_path / "squares.json").read_text())
+    assert len(calls) == fitted
+    paths = [item for layer in document["layers"] if layer["nm"] != "background"
+             for group in layer["shapes"] for item in group.get("it", []) if item["ty"] == "sh"]
+    assert len(paths[0]["ks"]["k"]) == 2  # the moving square, straight between its keys

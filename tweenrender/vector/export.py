@@ -212,23 +212,25 @@ def _run(shape: Shape, shapes: list[ShapeAt], span: Span, viewport: Viewport,
         # every frame's cubics are the keys' blended by the segment's eased progress, as a player draws them,
         # and are measured against every frame's exact in-between
         blend = Blend(len(t), len(t) + 1, np.concatenate([t, [0.0, 1.0]]))
-        fitted_curves = [_fewest_cubics(np.concatenate([s, e]), shut, exact_tolerance, blend)
-                         for s, e, shut in zip(samples, ends, closed)]
-        curves = [c for _, c, _ in fitted_curves]  # (F + 2, M_i, 3, 2) each
-        paths = tuple(c[-2:] for c in curves)
         ease = _timing(segment) or STRAIGHT
         eases: tuple[Handles, ...] = (ease,)
-        # the fit measured each blended cubic against every frame; a span that is one edge is the blend of its two
+        # the fit measures each blended cubic against every frame; a span that is one edge is the blend of its two
         # vertices, so each contour's vertices moved along the eased chord must be within what the fit left of
         # the bound (less the files' rounding) of their own at every frame (a contour may grow otherwise than
-        # straight); those that are keep their two keyframes
-        for index, (s, e, (_, _, error)) in enumerate(zip(samples, ends, fitted_curves)):
+        # straight); those that are keep their two keyframes. A contour whose vertices leave the chord by the
+        # whole bound cannot be one of them, whatever its fit: it is not fitted
+        for index, (s, e, shut) in enumerate(zip(samples, ends, closed)):
             chord = e[0] + t[:, None, None] * (e[1] - e[0])
-            if float(np.linalg.norm(chord - s[:len(t)], axis=-1).max()) <= max_error - error - 2 * _ROUNDING:
-                exact_own[index] = (path_frames, paths[index], eases)
-        if len(exact_own) < len(curves):
-            paths = ()
+            off = float(np.linalg.norm(chord - s[:len(t)], axis=-1).max())
+            if off > max_error - 2 * _ROUNDING:
+                continue
+            _, curve, error = _fewest_cubics(np.concatenate([s, e]), shut, exact_tolerance, blend)  # (F + 2, M, 3, 2)
+            if off <= max_error - error - 2 * _ROUNDING:
+                exact_own[index] = (path_frames, curve[-2:], eases)
+        if len(exact_own) < len(samples):
             exact = None
+        else:
+            paths = tuple(path for _, path, _ in exact_own.values())
     if exact is None or not every_pair:
         path_frames, paths, eases = (first,), (), ()
         if samples:

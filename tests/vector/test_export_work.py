@@ -162,3 +162,16 @@ def test_contours_off_their_straight_path_are_not_fitted_for_two_keyframes(tmp_p
     paths = [item for layer in document["layers"] if layer["nm"] != "background"
              for group in layer["shapes"] for item in group.get("it", []) if item["ty"] == "sh"]
     assert len(paths[0]["ks"]["k"]) == 2  # the moving square, straight between its keys
+
+
+def test_a_blended_span_solves_its_least_squares_once_for_all_its_slides(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A span fitted between two keys is fitted at one set of parameters, then refitted four times to the points its
+    cubics pass nearest (the slides): the least-squares map depends on the parameters alone, so it is worked out
+    once a span (one 2 × 2 pseudo-inverse), not once a fit (five)."""
+    slides, inverses = [], []
+    slid, pinv = curves._slid_keys, np.linalg.pinv
+    monkeypatch.setattr(curves, "_slid_keys", lambda *args: slides.append(1) or slid(*args))
+    monkeypatch.setattr(np.linalg, "pinv", lambda *args, **kwargs: inverses.append(1) or pinv(*args, **kwargs))
+    frames = _turning(25)
+    curves.fit_curves(frames, True, 0.25, blend=curves.Blend(0, 24, np.linspace(0.0, 1.0, 25)))
+    assert slides and len(inverses) <= len(slides), (len(inverses), len(slides))

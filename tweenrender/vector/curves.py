@@ -104,14 +104,17 @@ def _blend_fit(ring: Array, i0: int, i1: int, ridge: float, blend: Blend) -> tup
     parameters ``(i1 - i0 + 1,)``."""
     ends = ring[[blend.first, blend.last]]
     u = _parameters(ring, i0, i1)
-    keys = _slid_keys(ends, i0, i1, u, ridge, _solve(ends, i0, i1, u, ridge))
+    keys = _slid_keys(ends, i0, i1, u, ridge)
     return blend.of(keys), keys, u
 
 
-def _slid_keys(ends: Array, i0: int, i1: int, u: Array, ridge: float, keys: Array) -> Array:
-    """The two key cubics ``keys (2, 4, 2)`` refitted, :data:`_SLIDES` times, to the points of the key polylines
-    ``ends[:, i0:i1 + 1]`` nearest to where the cubics pass at the parameters ``u``: each key's vertices may slide
-    along its own polyline, so the two keys need not reach their matched vertices at one parameter."""
+def _slid_keys(ends: Array, i0: int, i1: int, u: Array, ridge: float) -> Array:
+    """The two key cubics ``(2, 4, 2)`` over vertices ``i0..i1`` of ``ends (2, L', 2)`` fitted at the parameters ``u``,
+    then refitted, :data:`_SLIDES` times, to the points of the key polylines nearest to where the cubics pass at
+    ``u``: each key's vertices may slide along its own polyline, so the two keys need not reach their matched
+    vertices at one parameter. Every fit is at ``u``: one least-squares map (:func:`_solver`) serves them all."""
+    solver = _solver(u, ridge)
+    keys = _solve(ends, i0, i1, u, ridge, solver)
     if i1 - i0 < 2:
         return keys
     span = ends[:, i0:i1 + 1]
@@ -119,7 +122,7 @@ def _slid_keys(ends: Array, i0: int, i1: int, u: Array, ridge: float, keys: Arra
         passing = curve_points(keys, u[1:-1])  # (2, n, 2)
         targets = ends.copy()
         targets[:, i0 + 1:i1] = _nearest_on_polyline(passing, span)
-        keys = _solve(targets, i0, i1, u, ridge)
+        keys = _solve(targets, i0, i1, u, ridge, solver)
     return keys
 
 
@@ -134,20 +137,30 @@ def _nearest_on_polyline(points: Array, polyline: Array) -> Array:
     return np.take_along_axis(foot, which[..., None, None], axis=2)[:, :, 0]
 
 
-def _solve(samples: Array, i0: int, i1: int, u: Array, ridge: float = 0.0) -> Array:
+def _solver(u: Array, ridge: float) -> Array | None:
+    """The least-squares map from the offsets of a span's inner vertices, at parameters ``u (n + 2,)``, to those of its
+    two inner control points: ``(2, n)``, a ``ridge`` (a share of the normal matrix's mean diagonal) keeping them
+    steady where the parameters crowd; ``None`` where there are no inner vertices."""
+    inner = u[1:-1]
+    if inner.size == 0:
+        return None
+    basis = _bernstein(inner)[:, 1:3]  # (n, 2)
+    normal = basis.T @ basis
+    # least norm where the parameters give no hold (every inner vertex on an end: no offset moves the cubic)
+    return np.linalg.pinv(normal + ridge * np.trace(normal) / 2 * np.eye(2)) @ basis.T
+
+
+def _solve(samples: Array, i0: int, i1: int, u: Array, ridge: float = 0.0, solver: Array | None = None) -> Array:
     """Control points ``(F, 4, 2)`` of the cubic from vertex ``i0`` to ``i1`` of ``samples (F, L', 2)`` through
-    the vertices at parameters ``u``: the straight line's thirds plus inner offsets solved by least squares,
-    a ``ridge`` (a share of the normal matrix's mean diagonal) keeping them steady where the parameters crowd."""
+    the vertices at parameters ``u``: the straight line's thirds plus inner offsets solved by least squares
+    (:func:`_solver`, or ``solver``, its map at these ``u`` and ``ridge``)."""
     p0, p3 = samples[:, i0], samples[:, i1]  # (F, 2)
     thirds = np.stack([p0, (2 * p0 + p3) / 3, (p0 + 2 * p3) / 3, p3], axis=1)  # (F, 4, 2): the straight line
     inner = u[1:-1]
     if inner.size == 0:
         return thirds
-    basis = _bernstein(inner)[:, 1:3]  # (n, 2)
+    solve = _solver(u, ridge) if solver is None else solver  # (2, n)
     residual = samples[:, i0 + 1:i1] - (p0[:, None] + inner[None, :, None] * (p3 - p0)[:, None])  # (F, n, 2)
-    normal = basis.T @ basis
-    # least norm where the parameters give no hold (every inner vertex on an end: no offset moves the cubic)
-    solve = np.linalg.pinv(normal + ridge * np.trace(normal) / 2 * np.eye(2)) @ basis.T  # (2, n)
     controls = thirds.copy()
     controls[:, 1:3] += np.einsum("kn,fnd->fkd", solve, residual)
     return controls
@@ -234,7 +247,7 @@ def _span_fit(ring: Array, i0: int, i1: int, tolerance: float, ridge: float,
         for _ in range(_NEWTON_ROUNDS):
             if blend is not None:
                 u = _newton_step(ends[:, i0:i1 + 1], keys, u)
-                keys = _slid_keys(ends, i0, i1, u, ridge, _solve(ends, i0, i1, u, ridge))
+                keys = _slid_keys(ends, i0, i1, u, ridge)
             else:
                 u = _newton_step(ring[:, i0:i1 + 1], moved, u)
                 moved = _solve(ring, i0, i1, u, ridge)

@@ -121,7 +121,6 @@ def test_a_vector_file_past_the_sample_limit_is_refused_before_any_work(cli, tmp
     assert max(sampled, default=0) < 100 and not out.exists()  # the view's few probes at most, no frame
 
 
-
 GROWING = """size = [400, 300]
 fps = 20
 view = [0, 0, 40, 30]

@@ -320,12 +320,10 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
                 shut + [pairs[i].closed for i in alone])
     first = candidate_quality(*as_grown, view=segment.view)
     held = _meshed_alone(segment) if first[0] else []  # the mesh only where they tangle as they grow
-    if not held:
-        if first[0]:  # they tangle as drawn, and no mesh holds them: say so
-            return replace(choice, why=f"{choice.why}; with the contours without a partner: {choice.method} tangled "
-                                       f"at {first[0]} of {len(QUALITY_T)} t, stray {first[1]:.3f}; no mesh holds "
-                                       "them"), None
-        return choice, None
+    grown_words = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
+                   f"stray {first[1]:.3f}")
+    if not held:  # where they tangle as drawn and no mesh holds them, say so
+        return (replace(choice, why=f"{choice.why}; {grown_words}; no mesh holds them") if first[0] else choice), None
     from ..methods.injective import injective_contours
 
     every0 = k0s + [k0 for _, k0, _ in held]
@@ -339,8 +337,7 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     # open strokes by their length: a mesh may carry one far where no area shows it
     strokes = stroke_stray(*as_grown, view=segment.view), stroke_stray(held_frames, every0, every1, closed,
                                                                       view=segment.view)
-    measures = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
-                f"stray {first[1]:.3f}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}, "
+    measures = (f"{grown_words}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}, "
                 f"largest area step {uneven:.1f} × the median")
     if strokes != (0.0, 0.0):
         measures += f"; strokes' stray {strokes[0]:.3f} and {strokes[1]:.3f} holding them"

@@ -6,6 +6,7 @@ crossing tests.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -190,3 +191,56 @@ def test_a_drawings_segments_measure_stray_within_its_view() -> None:
     expected = float(np.ptp(points, axis=0).max()) if square.view is None else max(
         square.view[2] - square.view[0], square.view[3] - square.view[1])
     assert view_side(square) == pytest.approx(expected)
+
+
+def _element_area_deviation(scene: object, t: float) -> float:
+    """Shapely's area of each element as drawn at ``t`` against the straight blend of its keys' areas, at most,
+    over the larger key's area."""
+    import tweenrender as tr
+    from tests.core.shapely_areas import drawn_area
+
+    def areas(at: float) -> dict[str, float]:
+        found: dict[str, tuple[list[np.ndarray], str]] = {}
+        for c in tr.contours(scene, at, points=True):
+            if c.closed:
+                kept = found.setdefault(c.element, ([], c.fill_rule))
+                kept[0].append(c.points[::-1] if c.reversed else c.points)
+        return {name: drawn_area(cs, rule).area for name, (cs, rule) in found.items()}
+
+    first, last, now = areas(0.0), areas(1.0), areas(t)
+    return max(abs(now.get(name, 0.0) - ((1 - t) * first[name] + t * last.get(name, 0.0)))
+               / max(first[name], last.get(name, 0.0)) for name in first if first[name] > 0)
+
+
+def test_lines_that_straight_paths_swell_into_a_blob_take_the_way_that_keeps_them() -> None:
+    """SPEC §5.16: octicons' tab-external-24 (a frame and an arrow) into feather's eye-off. The arrow's outline is the
+    eye's partner, and every contour has one; straight paths swell it into a black mass (shapely: its area 1.09 of
+    the larger key's off the straight blend of the keys'). auto measures the area too and draws in-betweens whose
+    every element stays within a quarter of it, and says so."""
+    import tweenrender as tr
+    from tests.helpers import DATA
+
+    pairs = DATA / "pairs"
+    scene = tr.load_scene([pairs / "octicons-tab-external-24.svg", pairs / "feather-eye-off.svg"], step=1.0)
+    swell = max(_element_area_deviation(scene, float(t)) for t in QUALITY_T)
+    assert swell <= 0.25, swell
+    reasons = [shape["auto"]["why"] for shape in tr.stats(scene)["shapes"]]
+    assert any(re.search(r"linear: tangled at 0 of 19 t, stray [0-9.]+, area [0-9.]+ off the keys' blend", why)
+               for why in reasons), reasons
+
+
+def test_balloon_is_the_area_off_the_keys_blend_holes_taken_away() -> None:
+    """A ring, outline 4 wide and hole 2 wide in both keys (area 12), whose hole shrinks to side s(t) between:
+    it fills 16 − s², off the blend by (4 − s²) / 12 — counted whatever way either contour winds."""
+    from tweenrender.core.methods.qcurves import balloon
+
+    outer, hole = _square(-2, -2, 4), _square(-1, -1, 2)
+    sides = 2.0 - 1.5 * np.sin(np.pi * QUALITY_T)
+    for wound in (hole, hole[::-1]):
+        frames = [np.repeat(outer[None], len(QUALITY_T), axis=0), sides[:, None, None] / 2.0 * wound]
+        expected = float(((4.0 - sides**2) / 12.0).max())
+        assert balloon(frames, [outer, wound], [outer, wound], [True, True]) == pytest.approx(expected)
+    # keys that nest differently (the hole a piece beside the outline in the second key) have no one area to follow
+    apart = _square(5, 5, 2)
+    assert balloon([np.repeat(outer[None], len(QUALITY_T), axis=0), np.repeat(hole[None], len(QUALITY_T), axis=0)],
+                   [outer, hole], [outer, apart], [True, True]) == 0.0

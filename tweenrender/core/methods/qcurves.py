@@ -21,7 +21,8 @@ from numpy.typing import ArrayLike, NDArray
 from ...errors import GeometryError
 from . import joints as _joints
 from . import paths
-from ..geometry import best_fit_rotation, cross, edge_lengths
+from ..contours import roles
+from ..geometry import area, best_fit_rotation, cross, edge_lengths
 from ..balance import spread_copies
 from .injective import injective, injective_contours
 from ..stray import STRAY_REACH, stray_shares, stroke_stray_shares
@@ -301,6 +302,10 @@ def _untangled(choice: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array],
 
 STRAY_LIMIT = 0.02
 """The stray (maths §5.16) beyond the straight paths' that an in-between may have for ``auto`` to take it."""
+BALLOON = 0.25
+"""How far the area a shape's closed contours fill (holes taken away) may leave the straight blend of the keys'
+areas, as a share of the larger, for ``auto`` to take its in-betweens (maths §5.16): straight paths that close a
+hole early, or swell outlines over it, fill a drawing of lines into a blob. Joins are weighed on it too."""
 QUALITY_T = np.arange(1, 20) / 20.0
 """The t at which ``auto`` measures its candidates: .05, .10, … .95."""
 _CACHED = 512  # shapes whose measured choice is kept (frames are evaluated block by block)
@@ -324,6 +329,25 @@ def candidate_quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequen
     """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included) and the largest
     stray, the reach 12 % of the view's larger side ``view`` (:func:`stray_reach`)."""
     return _tangled(frames, k0s, k1s, closed), _stray(frames, k0s, k1s, closed, view)
+
+
+def balloon(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> float:
+    """How far the area the closed contours of ``frames`` (``(T, L_i, 2)`` at :data:`QUALITY_T`) fill leaves the
+    straight blend of the keys' (``k0s``, ``k1s``, ``(L_i, 2)``), at most, over the larger key's: each contour
+    counted whatever way it winds, holes (by their nesting in the keys) taken away. 0 where the keys nest
+    differently (no one area to follow) or fill nothing."""
+    shut = [k for k, c in enumerate(closed) if c and len(k0s[k]) >= 3]
+    kinds = roles([k0s[k] for k in shut], [True] * len(shut))
+    if not shut or kinds != roles([k1s[k] for k in shut], [True] * len(shut)):
+        return 0.0
+    signs = np.array([-1.0 if kind == "hole" else 1.0 for kind in kinds])
+    first = float(signs @ np.array([area(k0s[k]) for k in shut]))
+    last = float(signs @ np.array([area(k1s[k]) for k in shut]))
+    filled = sum((s * area(frames[k]) for s, k in zip(signs, shut)), np.zeros(len(QUALITY_T)))
+    larger = max(abs(first), abs(last))
+    if not larger > 0:
+        return 0.0
+    return float(np.abs(filled - ((1.0 - QUALITY_T) * first + QUALITY_T * last)).max() / larger)
 
 
 def _tangled(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> int:
@@ -369,23 +393,26 @@ def stray_reach(k0s: Sequence[Array], k1s: Sequence[Array], view: float = 0.0) -
 
 
 def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
-              view: float = 0.0) -> AutoChoice:
+              view: float = 0.0, area: bool = True) -> AutoChoice:
     """``auto``'s choice by measured quality (maths §5.16), among ``first`` where it is ``nonlinear`` (the
     Q-curves' rigid turn), straight paths with spread copies, and injective paths: the first whose
-    in-betweens never tangle and stray at most :data:`STRAY_LIMIT` more than the straight paths do (they
+    in-betweens never tangle, stray at most :data:`STRAY_LIMIT` more than the straight paths do (they
     sweep what the motion itself sweeps; a rigid turn's arc is the turn itself, so ``nonlinear`` needs no
-    tangle only); else, of those straying at most as much more (a way round that leaves the keys looks
-    worse than straight paths that cross), the one tangling at the fewest t (straight paths, in the
-    list's order, on a tie): by these measures, over the contours that move, never more tangled than
-    straight paths, nor straying more than :data:`STRAY_LIMIT` past them.
-    ``first``'s reason stands where it passes; elsewhere the measures are the reason. Stray is measured within
-    12 % of the drawing's view, ``view`` its larger side (:func:`stray_reach`)."""
+    tangle only) and fill an area within :data:`BALLOON` of the straight blend of the keys' (:func:`balloon`:
+    straight paths can close a hole into a blob); else, of those straying at most as much more (a way round
+    that leaves the keys looks worse than straight paths that cross), the one tangling at the fewest t, then
+    ballooning least past :data:`BALLOON` (straight paths, in the list's order, on a tie): by these measures,
+    over the contours that move, never more tangled than straight paths, nor straying more than
+    :data:`STRAY_LIMIT` past them. ``first``'s reason stands where it passes; elsewhere the measures are the
+    reason. Stray is measured within 12 % of the drawing's view, ``view`` its larger side
+    (:func:`stray_reach`). Without ``area`` (a shape whose contours without a partner come and go beside these,
+    so that their area is not the shape's) the area is not measured."""
     k0s = [np.asarray(k, dtype=np.float64) for k in k0s]
     k1s = [np.asarray(k, dtype=np.float64) for k in k1s]
     closed = [bool(c) and len(k) >= 3 for c, k in zip(closed, k0s)]
     if not k0s or not all(np.all(np.isfinite(k)) for k in [*k0s, *k1s]):
         return first
-    key = b"|".join(k.tobytes() for k in [*k0s, *k1s]) + repr((first, closed, float(view))).encode()
+    key = b"|".join(k.tobytes() for k in [*k0s, *k1s]) + repr((first, closed, float(view), area)).encode()
     found = _measured_cache.get(key)
     if found is not None:
         _measured_cache.move_to_end(key)
@@ -393,37 +420,42 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     straight_choice = first if first.method == "linear" else AutoChoice("linear", first.why, ("linear",))
     candidates = ([first] if first.method == "nonlinear" else []) + [straight_choice]
     candidates.append(AutoChoice("injective", first.why, ("injective",)))
-    # the first candidate passes on no tangle alone (straight paths' stray is the limit itself, a rigid
-    # turn's arc no stray): where it does not tangle, no stray is measured
-    measured: dict[str, tuple[int, float]] = {}
+
+    def quality(method: str) -> tuple[int, float, float]:
+        frames = candidate_paths(method, k0s, k1s, closed, QUALITY_T)
+        return (*candidate_quality(frames, k0s, k1s, closed, view),
+                balloon(frames, k0s, k1s, closed) if area and method != "nonlinear" else 0.0)
+
+    # the first candidate passes on no tangle (and, straight, no balloon) alone (straight paths' stray is the
+    # limit itself, a rigid turn's arc no stray): where it passes, no stray is measured
+    measured: dict[str, tuple[int, float, float]] = {}
     if first.method in ("linear", "nonlinear"):
         frames = candidate_paths(first.method, k0s, k1s, closed, QUALITY_T)
         crossed = _tangled(frames, k0s, k1s, closed)
-        if crossed == 0:
+        swell = balloon(frames, k0s, k1s, closed) if area and first.method == "linear" else 0.0
+        if crossed == 0 and swell <= BALLOON:
             _remember(key, first)
             return first
-        measured[first.method] = (crossed, _stray(frames, k0s, k1s, closed, view))
+        measured[first.method] = (crossed, _stray(frames, k0s, k1s, closed, view), swell)
     for c in candidates:
         if c.method not in measured and c.method != "injective":
-            measured[c.method] = candidate_quality(candidate_paths(c.method, k0s, k1s, closed, QUALITY_T), k0s, k1s,
-                                                   closed, view)
+            measured[c.method] = quality(c.method)
     # straight paths sweep what the motion itself sweeps: a method strays where it goes past that
     limit = STRAY_LIMIT + measured["linear"][1]
-    scores: list[tuple[int, float, int, AutoChoice]] = []
+    scores: list[tuple[int, float, float, int, AutoChoice]] = []
     chosen = None
     for rank, candidate in enumerate(candidates):
         if candidate.method not in measured:
-            measured[candidate.method] = candidate_quality(candidate_paths(candidate.method, k0s, k1s, closed, QUALITY_T),
-                                                           k0s, k1s, closed, view)
-        crossed, stray = measured[candidate.method]
-        scores.append((crossed, stray, rank, candidate))
+            measured[candidate.method] = quality(candidate.method)
+        crossed, stray, swell = measured[candidate.method]
+        scores.append((crossed, stray, swell, rank, candidate))
         # a rigid turn's arc is the motion itself, not a stray: it keeps the shape at every t
-        if crossed == 0 and (stray <= limit or candidate.method == "nonlinear"):
+        if crossed == 0 and (stray <= limit or candidate.method == "nonlinear") and swell <= BALLOON:
             chosen = candidate if rank == 0 else replace(candidate, why=f"{first.why}; {_measures(scores)}")
             break
     if chosen is None:  # none passes: the least tangled of those that stray no more than the limit
-        kept = [s for s in scores if s[1] <= limit or s[3].method == "nonlinear"]
-        best = min(kept, key=lambda s: (s[0], s[2]))[3]
+        kept = [s for s in scores if s[1] <= limit or s[4].method == "nonlinear"]
+        best = min(kept, key=lambda s: (s[0], max(s[2], BALLOON), s[3]))[4]
         chosen = replace(best, why=f"{first.why}; {_measures(scores)}; {best.method} the least tangled of those that stray no further")
     _remember(key, chosen)
     return chosen
@@ -435,25 +467,28 @@ def _remember(key: bytes, chosen: AutoChoice) -> None:
         _measured_cache.popitem(last=False)
 
 
-def _measures(scores: Sequence[tuple[int, float, int, AutoChoice]]) -> str:
-    return "; ".join(f"{c.method}: tangled at {n} of {len(QUALITY_T)} t, stray {s:.3f}" for n, s, _, c in scores)
+def _measures(scores: Sequence[tuple[int, float, float, int, AutoChoice]]) -> str:
+    return "; ".join(f"{c.method}: tangled at {n} of {len(QUALITY_T)} t, stray {s:.3f}"
+                     + (f", area {b:.3f} off the keys' blend" if b > BALLOON else "") for n, s, b, _, c in scores)
 
 
-def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool = True, view: float = 0.0
-                ) -> AutoChoice:
+def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool = True, view: float = 0.0,
+                area: bool = True) -> AutoChoice:
     """Choose by measured quality (maths §5.16, :func:`_measured`): nonlinear paths where the Q-curves show
     a rigid rotation, straight paths, injective paths — the first that neither tangles nor strays.
 
     With ``joints`` the choice is made per local body (each with its own size
     for the tolerance); the method is then ``"jointed"`` if any body turns, and
     ``"linear"`` (or ``"injective"``) if none does (averaged linear paths are the linear paths).
-    ``closed=False`` reads the keys as an open stroke when it looks for crossings.
+    ``closed=False`` reads the keys as an open stroke when it looks for crossings; ``area=False`` leaves the
+    area out of the measures (:func:`_measured`).
     Raises :class:`joints.JointError` for bad joints.
     """
     k0, k1 = _keys(k0, k1)
     if len(joints) == 0:
         motion = classify(k0, k1)
-        return _measured(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed], view)
+        return _measured(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed], view,
+                         area)
     motions = [classify(k0[b], k1[b]) for b in _joints.bodies(k0.shape[0], joints)]
     methods = tuple(_method(m) for m in motions)
     method = "jointed" if "nonlinear" in methods else "linear"
@@ -462,12 +497,12 @@ def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool 
 
 
 def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
-                         strokes0: Sequence[ArrayLike] = (), strokes1: Sequence[ArrayLike] = (), view: float = 0.0
-                         ) -> AutoChoice:
+                         strokes0: Sequence[ArrayLike] = (), strokes1: Sequence[ArrayLike] = (), view: float = 0.0,
+                         area: bool = True) -> AutoChoice:
     """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys (and
     the open strokes ``strokes0``, ``strokes1`` that move with them), by measured quality: nonlinear
     first where every closed contour turns rigidly by the same angle (within 1°), then straight paths,
-    then injective (:func:`_measured`)."""
+    then injective (:func:`_measured`; ``area`` as there)."""
     motions = [classify(a, b) for a, b in zip(k0s, k1s)]
     every0 = [np.asarray(k, dtype=np.float64) for k in [*k0s, *strokes0]]
     every1 = [np.asarray(k, dtype=np.float64) for k in [*k1s, *strokes1]]
@@ -483,7 +518,7 @@ def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
     else:
         first = AutoChoice("linear", "contours change or move differently: " + " / ".join(_short(m) for m in motions),
                            ("linear",))
-    return _measured(first, every0, every1, closed, view)
+    return _measured(first, every0, every1, closed, view, area)
 
 
 def straight(k0: Array, k1: Array, t: ArrayLike) -> Array:

@@ -46,6 +46,7 @@ from ..correspondence.hints import Link, forced_contour_pairs, segment_links, ve
 
 if TYPE_CHECKING:
     from ..methods.qcurves import AutoChoice
+from ..methods.qcurves import BALLOON
 from ..methods.registry import interpolate, per_outline
 from ..dashes import start_share
 from ..memo import Remembered
@@ -247,23 +248,26 @@ def segment_choice(segment: Segment, hold: bool = True) -> AutoChoice | None:
     """What ``auto`` draws for a segment's moving pairs, and why (None where nothing moves): one closed
     outline decides per body; one open stroke takes straight or injective paths where auto would (its
     crossings read as a stroke's), else what auto does with it as an outline; several contours are
-    chosen over together (maths §5.16); with ``hold``, measured again with the contours without a partner
-    (:func:`_with_alone`)."""
+    chosen over together (maths §5.16), their area measured where no contour comes or goes beside them; with
+    ``hold``, measured again with the contours without a partner (:func:`_with_alone`)."""
     from ..methods.qcurves import auto_choice, auto_choice_contours
 
     moving = [p for p in segment.pairs if p.moving]
     if not moving:
         return None
+    whole = not _alone(segment)  # the moving contours' area is the shape's only where none comes or goes
     if len(moving) == 1:
         pair = moving[0]
         if not pair.closed:
-            choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False, view=segment.view)
+            choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False, view=segment.view, area=whole)
             if choice.method in ("linear", "injective"):
                 return _held_choice(segment, hold, choice)
-        return _held_choice(segment, hold, auto_choice(pair.k0, pair.k1, segment.joints, view=segment.view))
+        return _held_choice(segment, hold, auto_choice(pair.k0, pair.k1, segment.joints, view=segment.view,
+                                                       area=whole))
     return _held_choice(segment, hold, auto_choice_contours(
         [p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
-        [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed], view=segment.view))
+        [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed], view=segment.view,
+        area=whole))
 
 
 def _held_choice(segment: Segment, hold: bool, choice: AutoChoice) -> AutoChoice:
@@ -957,10 +961,6 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
 
 EVEN = 3.0
 """A segment's area changes evenly where no step is over this many times the median (as pops are told)."""
-BALLOON = 0.25
-"""A segment's in-betweens balloon where the area their closed contours fill (holes taken away) leaves the
-straight blend of the keys' by more than this share of the larger key's: a hole that shrinks early as the
-outline round it narrows into a band fills the ring in (joins are weighed on it)."""
 SLIT_WAYS = tuple((float(np.cos(a)), float(np.sin(a))) for a in np.linspace(0.0, 2.0 * np.pi, 8, endpoint=False))
 """The directions a slit is tried leaving the contour it joins, every 45°, where growing late balloons
 (:data:`BALLOON`) and the shortest slits are not clean (:func:`_best_join`)."""

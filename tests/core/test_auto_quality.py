@@ -229,6 +229,25 @@ def test_lines_that_straight_paths_swell_into_a_blob_take_the_way_that_keeps_the
                for why in reasons), reasons
 
 
+def test_a_contour_without_a_partner_that_leaves_a_blob_as_it_grows_is_held_in_the_mesh() -> None:
+    """SPEC §5.16: feather's wifi-off into mdi's pencil-outline. The slash becomes the pencil; the pencil's hole has
+    no partner. Grown apart from it, the hole opens late and the element swells into a black mass first (shapely:
+    its area 1.10 of the larger key's off the straight blend of the keys'); auto holds the hole in the slash's
+    injective mesh instead, which keeps every element within a quarter of it, and says so."""
+    import tweenrender as tr
+    from tests.helpers import DATA
+
+    pairs = DATA / "pairs"
+    scene = tr.load_scene([pairs / "feather-wifi-off.svg", pairs / "mdi-pencil-outline.svg"], step=1.0)
+    swell = max(_element_area_deviation(scene, float(t)) for t in QUALITY_T)
+    assert swell <= 0.25, swell
+    shapes = tr.stats(scene)["shapes"]
+    held = [shape["auto"] for shape in shapes if "injective holding them" in shape["auto"]["why"]]
+    assert held and held[0]["method"] == "injective", [shape["auto"] for shape in shapes]
+    assert re.search(r"with the contours without a partner: \w+ tangled at 0 of 19 t, stray [0-9.]+, area [0-9.]+ off "
+                     r"the keys' blend", held[0]["why"]), held[0]["why"]
+
+
 def test_balloon_is_the_area_off_the_keys_blend_holes_taken_away() -> None:
     """A ring, outline 4 wide and hole 2 wide in both keys (area 12), whose hole shrinks to side s(t) between:
     it fills 16 − s², off the blend by (4 − s²) / 12 — counted whatever way either contour winds."""
@@ -244,3 +263,15 @@ def test_balloon_is_the_area_off_the_keys_blend_holes_taken_away() -> None:
     apart = _square(5, 5, 2)
     assert balloon([np.repeat(outer[None], len(QUALITY_T), axis=0), np.repeat(hole[None], len(QUALITY_T), axis=0)],
                    [outer, hole], [outer, apart], [True, True]) == 0.0
+
+
+def test_balloon_of_a_hole_growing_from_a_point_reads_it_as_a_hole_in_the_key_where_it_is_drawn() -> None:
+    """A ring's hole grows from the outline's centre (a point in the first key) to side 2, its side 2t² (area 4t⁴,
+    late): the ring fills 16 − 4t⁴ against the blend 16 − 4t, off it by (t − t⁴) / 4 of the larger key's 16."""
+    from tweenrender.core.methods.qcurves import balloon
+
+    outer, hole = _square(-2, -2, 4), _square(-1, -1, 2)
+    point = np.zeros_like(hole)
+    frames = [np.repeat(outer[None], len(QUALITY_T), axis=0), (QUALITY_T**2)[:, None, None] * hole]
+    expected = float(((QUALITY_T - QUALITY_T**4) / 4.0).max())
+    assert balloon(frames, [outer, point], [outer, hole], [True, True], grown=True) == pytest.approx(expected)

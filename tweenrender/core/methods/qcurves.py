@@ -331,16 +331,21 @@ def candidate_quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequen
     return _tangled(frames, k0s, k1s, closed), _stray(frames, k0s, k1s, closed, view)
 
 
-def balloon(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> float:
+def balloon(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
+            grown: bool = False) -> float:
     """How far the area the closed contours of ``frames`` (``(T, L_i, 2)`` at :data:`QUALITY_T`) fill leaves the
     straight blend of the keys' (``k0s``, ``k1s``, ``(L_i, 2)``), at most, over the larger key's: each contour
     counted whatever way it winds, holes (by their nesting in the keys) taken away. 0 where the keys nest
-    differently (no one area to follow) or fill nothing."""
+    differently (no one area to follow) or fill nothing. With ``grown``, a contour that is a point in one key
+    (growing from it or shrinking to it) is a hole or not by its nesting in the other."""
     shut = [k for k, c in enumerate(closed) if c and len(k0s[k]) >= 3]
-    kinds = roles([k0s[k] for k in shut], [True] * len(shut))
-    if not shut or kinds != roles([k1s[k] for k in shut], [True] * len(shut)):
+    kinds = [roles([key[k] for k in shut], [True] * len(shut)) for key in (k0s, k1s)]
+    if grown:  # each by the key where it is more than a point
+        kinds[0] = [b if area(k0s[k]) == 0.0 else a for k, a, b in zip(shut, *kinds)]
+        kinds[1] = [a if area(k1s[k]) == 0.0 else b for k, a, b in zip(shut, *kinds)]
+    if not shut or kinds[0] != kinds[1]:
         return 0.0
-    signs = np.array([-1.0 if kind == "hole" else 1.0 for kind in kinds])
+    signs = np.array([-1.0 if kind == "hole" else 1.0 for kind in kinds[0]])
     first = float(signs @ np.array([area(k0s[k]) for k in shut]))
     last = float(signs @ np.array([area(k1s[k]) for k in shut]))
     filled = sum((s * area(frames[k]) for s, k in zip(signs, shut)), np.zeros(len(QUALITY_T)))

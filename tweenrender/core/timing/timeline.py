@@ -308,7 +308,8 @@ def _clean_hold(segment: Segment) -> bool:
 
 
 def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
-    from ..methods.qcurves import QUALITY_T, STRAY_LIMIT, AutoChoice, candidate_paths, candidate_quality, stroke_stray
+    from ..methods.qcurves import (QUALITY_T, STRAY_LIMIT, AutoChoice, balloon, candidate_paths, candidate_quality,
+                                   stroke_stray)
 
     pairs = segment.pairs
     moving = [i for i, p in enumerate(pairs) if p.moving]
@@ -323,9 +324,11 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     as_grown = (own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
                 shut + [pairs[i].closed for i in alone])
     first = candidate_quality(*as_grown, view=segment.view)
-    held = _meshed_alone(segment) if first[0] else []  # the mesh only where they tangle as they grow
+    swell = balloon(*as_grown, grown=True)
+    # the mesh only where they tangle as they grow, or grow and shrink when the area they leave swells the shape
+    held = _meshed_alone(segment) if first[0] or swell > BALLOON else []
     grown_words = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
-                   f"stray {first[1]:.3f}")
+                   f"stray {first[1]:.3f}" + (f", area {swell:.3f} off the keys' blend" if swell > BALLOON else ""))
     if not held:  # where they tangle as drawn and no mesh holds them, say so
         return (replace(choice, why=f"{choice.why}; {grown_words}; no mesh holds them") if first[0] else choice), None
     from ..methods.injective import injective_contours
@@ -336,17 +339,20 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
 
     held_frames = injective_contours(every0, every1, closed, QUALITY_T, paced=False)  # as auto measures paths
     second = candidate_quality(held_frames, every0, every1, closed, view=segment.view)
+    held_swell = balloon(held_frames, every0, every1, closed, grown=True)
     rings = [k for k, c in enumerate(closed) if c]
     uneven = _uneven([held_frames[k] for k in rings], [every0[k] for k in rings], [every1[k] for k in rings])
     # open strokes by their length: a mesh may carry one far where no area shows it
     strokes = stroke_stray(*as_grown, view=segment.view), stroke_stray(held_frames, every0, every1, closed,
                                                                       view=segment.view)
     measures = (f"{grown_words}; injective holding them tangled at {second[0]}, stray {second[1]:.3f}, "
-                f"largest area step {uneven:.1f} × the median")
+                f"largest area step {uneven:.1f} × the median" + (f", area {held_swell:.3f} off the keys' blend"
+                                                                   if swell > BALLOON else ""))
     if strokes != (0.0, 0.0):
         measures += f"; strokes' stray {strokes[0]:.3f} and {strokes[1]:.3f} holding them"
-    if second[0] < first[0] and second[1] <= first[1] + STRAY_LIMIT and uneven <= EVEN \
-            and strokes[1] <= strokes[0] + STRAY_LIMIT:
+    # fewer tangles, or as few where growing apart swells the shape and holding them does not swell it as much
+    better = second[0] < first[0] or (second[0] == first[0] and swell > BALLOON and held_swell < swell - BALLOON)
+    if better and second[1] <= first[1] + STRAY_LIMIT and uneven <= EVEN and strokes[1] <= strokes[0] + STRAY_LIMIT:
         return AutoChoice("injective", f"{choice.why}; {measures}", ("injective",), holds=True), second
     return replace(choice, why=f"{choice.why}; {measures}"), second
 

@@ -398,7 +398,7 @@ def stray_reach(k0s: Sequence[Array], k1s: Sequence[Array], view: float = 0.0) -
 
 
 def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
-              view: float = 0.0, area: bool = True) -> AutoChoice:
+              view: float = 0.0, weigh_area: bool = True) -> AutoChoice:
     """``auto``'s choice by measured quality (maths §5.16), among ``first`` where it is ``nonlinear`` (the
     Q-curves' rigid turn), straight paths with spread copies, and injective paths: the first whose
     in-betweens never tangle, stray at most :data:`STRAY_LIMIT` more than the straight paths do (they
@@ -410,14 +410,14 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     over the contours that move, never more tangled than straight paths, nor straying more than
     :data:`STRAY_LIMIT` past them. ``first``'s reason stands where it passes; elsewhere the measures are the
     reason. Stray is measured within 12 % of the drawing's view, ``view`` its larger side
-    (:func:`stray_reach`). Without ``area`` (a shape whose contours without a partner come and go beside these,
+    (:func:`stray_reach`). Without ``weigh_area`` (a shape whose contours without a partner come and go beside these,
     so that their area is not the shape's) the area is not measured."""
     k0s = [np.asarray(k, dtype=np.float64) for k in k0s]
     k1s = [np.asarray(k, dtype=np.float64) for k in k1s]
     closed = [bool(c) and len(k) >= 3 for c, k in zip(closed, k0s)]
     if not k0s or not all(np.all(np.isfinite(k)) for k in [*k0s, *k1s]):
         return first
-    key = b"|".join(k.tobytes() for k in [*k0s, *k1s]) + repr((first, closed, float(view), area)).encode()
+    key = b"|".join(k.tobytes() for k in [*k0s, *k1s]) + repr((first, closed, float(view), weigh_area)).encode()
     found = _measured_cache.get(key)
     if found is not None:
         _measured_cache.move_to_end(key)
@@ -429,7 +429,7 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     def quality(method: str) -> tuple[int, float, float]:
         frames = candidate_paths(method, k0s, k1s, closed, QUALITY_T)
         return (*candidate_quality(frames, k0s, k1s, closed, view),
-                balloon(frames, k0s, k1s, closed) if area and method != "nonlinear" else 0.0)
+                balloon(frames, k0s, k1s, closed) if weigh_area and method != "nonlinear" else 0.0)
 
     # the first candidate passes on no tangle (and, straight, no balloon) alone (straight paths' stray is the
     # limit itself, a rigid turn's arc no stray): where it passes, no stray is measured
@@ -437,7 +437,7 @@ def _measured(first: AutoChoice, k0s: Sequence[Array], k1s: Sequence[Array], clo
     if first.method in ("linear", "nonlinear"):
         frames = candidate_paths(first.method, k0s, k1s, closed, QUALITY_T)
         crossed = _tangled(frames, k0s, k1s, closed)
-        swell = balloon(frames, k0s, k1s, closed) if area and first.method == "linear" else 0.0
+        swell = balloon(frames, k0s, k1s, closed) if weigh_area and first.method == "linear" else 0.0
         if crossed == 0 and swell <= BALLOON:
             _remember(key, first)
             return first
@@ -478,22 +478,22 @@ def _measures(scores: Sequence[tuple[int, float, float, int, AutoChoice]]) -> st
 
 
 def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool = True, view: float = 0.0,
-                area: bool = True) -> AutoChoice:
+                weigh_area: bool = True) -> AutoChoice:
     """Choose by measured quality (maths §5.16, :func:`_measured`): nonlinear paths where the Q-curves show
     a rigid rotation, straight paths, injective paths — the first that neither tangles nor strays.
 
     With ``joints`` the choice is made per local body (each with its own size
     for the tolerance); the method is then ``"jointed"`` if any body turns, and
     ``"linear"`` (or ``"injective"``) if none does (averaged linear paths are the linear paths).
-    ``closed=False`` reads the keys as an open stroke when it looks for crossings; ``area=False`` leaves the
-    area out of the measures (:func:`_measured`).
+    ``closed=False`` reads the keys as an open stroke when it looks for crossings; ``weigh_area=False`` leaves
+    the area out of the measures (:func:`_measured`).
     Raises :class:`joints.JointError` for bad joints.
     """
     k0, k1 = _keys(k0, k1)
     if len(joints) == 0:
         motion = classify(k0, k1)
         return _measured(AutoChoice(_method(motion), motion.why, (_method(motion),)), [k0], [k1], [closed], view,
-                         area)
+                         weigh_area)
     motions = [classify(k0[b], k1[b]) for b in _joints.bodies(k0.shape[0], joints)]
     methods = tuple(_method(m) for m in motions)
     method = "jointed" if "nonlinear" in methods else "linear"
@@ -503,11 +503,11 @@ def auto_choice(k0: ArrayLike, k1: ArrayLike, joints: Joints = (), closed: bool 
 
 def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
                          strokes0: Sequence[ArrayLike] = (), strokes1: Sequence[ArrayLike] = (), view: float = 0.0,
-                         area: bool = True) -> AutoChoice:
+                         weigh_area: bool = True) -> AutoChoice:
     """``auto``'s choice for a shape of several closed contours, each ``(N_i, 2)`` in both keys (and
     the open strokes ``strokes0``, ``strokes1`` that move with them), by measured quality: nonlinear
     first where every closed contour turns rigidly by the same angle (within 1°), then straight paths,
-    then injective (:func:`_measured`; ``area`` as there)."""
+    then injective (:func:`_measured`; ``weigh_area`` as there)."""
     motions = [classify(a, b) for a, b in zip(k0s, k1s)]
     every0 = [np.asarray(k, dtype=np.float64) for k in [*k0s, *strokes0]]
     every1 = [np.asarray(k, dtype=np.float64) for k in [*k1s, *strokes1]]
@@ -523,7 +523,7 @@ def auto_choice_contours(k0s: Sequence[ArrayLike], k1s: Sequence[ArrayLike],
     else:
         first = AutoChoice("linear", "contours change or move differently: " + " / ".join(_short(m) for m in motions),
                            ("linear",))
-    return _measured(first, every0, every1, closed, view, area)
+    return _measured(first, every0, every1, closed, view, weigh_area)
 
 
 def straight(k0: Array, k1: Array, t: ArrayLike) -> Array:

@@ -259,15 +259,15 @@ def segment_choice(segment: Segment, hold: bool = True) -> AutoChoice | None:
     if len(moving) == 1:
         pair = moving[0]
         if not pair.closed:
-            choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False, view=segment.view, area=whole)
+            choice = auto_choice(pair.k0, pair.k1, segment.joints, closed=False, view=segment.view, weigh_area=whole)
             if choice.method in ("linear", "injective"):
                 return _held_choice(segment, hold, choice)
         return _held_choice(segment, hold, auto_choice(pair.k0, pair.k1, segment.joints, view=segment.view,
-                                                       area=whole))
+                                                       weigh_area=whole))
     return _held_choice(segment, hold, auto_choice_contours(
         [p.k0 for p in moving if p.closed], [p.k1 for p in moving if p.closed],
         [p.k0 for p in moving if not p.closed], [p.k1 for p in moving if not p.closed], view=segment.view,
-        area=whole))
+        weigh_area=whole))
 
 
 def _held_choice(segment: Segment, hold: bool, choice: AutoChoice) -> AutoChoice:

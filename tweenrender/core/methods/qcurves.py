@@ -349,10 +349,16 @@ def balloon(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array],
     first = float(signs @ np.array([area(k0s[k]) for k in shut]))
     last = float(signs @ np.array([area(k1s[k]) for k in shut]))
     filled = sum((s * area(frames[k]) for s, k in zip(signs, shut)), np.zeros(len(QUALITY_T)))
+    return off_blend(filled, QUALITY_T, first, last)
+
+
+def off_blend(filled: Array, t: Array, first: float, last: float) -> float:
+    """How far the areas ``filled (T,)`` at ``t (T,)`` leave the straight blend of ``first`` and ``last``, at most,
+    over the larger of those (0 where both are 0): what :data:`BALLOON` bounds."""
     larger = max(abs(first), abs(last))
     if not larger > 0:
         return 0.0
-    return float(np.abs(filled - ((1.0 - QUALITY_T) * first + QUALITY_T * last)).max() / larger)
+    return float(np.abs(filled - ((1.0 - t) * first + t * last)).max() / larger)
 
 
 def _tangled(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool]) -> int:

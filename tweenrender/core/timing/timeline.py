@@ -46,7 +46,7 @@ from ..correspondence.hints import Link, forced_contour_pairs, segment_links, ve
 
 if TYPE_CHECKING:
     from ..methods.qcurves import AutoChoice
-from ..methods.qcurves import BALLOON
+from ..methods.qcurves import BALLOON, off_blend
 from ..methods.registry import interpolate, per_outline
 from ..dashes import start_share
 from ..memo import Remembered
@@ -1018,10 +1018,7 @@ def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, 
     # the area filled: each contour counted whatever way it winds, holes taken away
     filled = sum((sign * np.abs(a) for sign, a in zip(_hole_signs([pairs[i] for i in closed]), signed)),
                  np.zeros(len(JOIN_CHECKS)))
-    larger = max(abs(filled[0]), abs(filled[-1]))
-    blend = (1.0 - JOIN_CHECKS) * filled[0] + JOIN_CHECKS * filled[-1]
-    balloon = float(np.abs(filled - blend).max()) / larger if larger > 0 else 0.0
-    return len(tangled), uneven, balloon
+    return len(tangled), uneven, off_blend(filled, JOIN_CHECKS, float(filled[0]), float(filled[-1]))
 
 
 def _hole_signs(pairs: Sequence[Pair]) -> list[float]:

@@ -1,4 +1,5 @@
-"""Paint between keys (maths §5.8): colours in OKLab with alpha premultiplied, widths and opacity linearly.
+"""Paint between keys (maths §5.8): colours in OKLab with alpha premultiplied (a gradient's stops each on
+its own, straight), widths and opacity linearly.
 
 OKLab is Björn Ottosson's perceptual colour space (2020): straight lines in it
 look like even blends, so red → blue passes through purple, not a dark muddy
@@ -79,19 +80,18 @@ def blend_colors(c0: Color | None, c1: Color | None, t: ArrayLike) -> list[Color
 
 
 def blend_color_rows(c0: NDArray[np.int64], c1: NDArray[np.int64], t: float) -> list[Color]:
-    """Each pair of straight RGBA rows ``c0[i] → c1[i]`` (``(S, 4)``, 0 to 255) at one ``t``, as
-    :func:`blend_colors` blends one pair: ``(S,)`` colours, in one pass over the rows."""
+    """Each pair of a gradient's straight RGBA stops ``c0[i] → c1[i]`` (``(S, 4)``, 0 to 255) at one ``t``:
+    ``(S,)`` colours, the colour in OKLab and alpha linearly, each blended on its own (not premultiplied).
+    A gradient draws the ramp between two stops from their straight colours, so a transparent stop's colour
+    shows in its neighbour's ramp: blended premultiplied, a stop turning transparent kept its first colour
+    until the key and jumped there in the last frame."""
     c0, c1 = np.asarray(c0, dtype=np.int64), np.asarray(c1, dtype=np.int64)
     if t == 0.0 or t == 1.0:
         return [tuple(int(v) for v in row) for row in (c0 if t == 0.0 else c1)]  # type: ignore[misc]
     rgba0, rgba1 = c0 / 255.0, c1 / 255.0
-    lab0, lab1 = srgb_to_oklab(rgba0[:, :3]), srgb_to_oklab(rgba1[:, :3])
+    lab = (1.0 - t) * srgb_to_oklab(rgba0[:, :3]) + t * srgb_to_oklab(rgba1[:, :3])
     alpha = (1.0 - t) * rgba0[:, 3] + t * rgba1[:, 3]  # (S,)
-    premultiplied = (1.0 - t) * lab0 * rgba0[:, 3:] + t * lab1 * rgba1[:, 3:]
-    plain = (1.0 - t) * lab0 + t * lab1
-    with np.errstate(divide="ignore", invalid="ignore"):
-        straight = np.where(alpha[:, None] > 0, premultiplied / alpha[:, None], plain)
-    rows = np.column_stack([np.rint(oklab_to_srgb(straight) * 255.0), np.rint(alpha * 255.0)]).astype(np.int64)
+    rows = np.column_stack([np.rint(oklab_to_srgb(lab) * 255.0), np.rint(alpha * 255.0)]).astype(np.int64)
     rows = np.where(np.all(c0 == c1, axis=1)[:, None], c0, rows)  # equal colours stay exactly
     return [tuple(int(v) for v in row) for row in rows]  # type: ignore[misc]
 

@@ -29,7 +29,9 @@ method (``default`` is the scene's own, what ``render`` draws without ``--method
   neighbouring changes and over 0.002 of the view. **net pops** apply the same test to the change of the
   whole drawing's coverage (``|mean alpha(f) - mean alpha(f - 1)|``), the measure of earlier versions of
   this benchmark: there a shape shrinking where another grows cancels, so the median is small and steady
-  frames where the two do not overlap count as pops.
+  frames where the two do not overlap count as pops. **colour pops** apply the pop test to the change of the
+  picture as seen over white (the mean over the pixels and channels of ``|RGB(f) - RGB(f - 1)| / 255``): a
+  colour that jumps between two frames (a gradient stop turning transparent), which coverage cannot see.
 * **distortion**: per element and frame, with ``r`` = ``log(l_t / l_lerp)`` for each edge of its contours
   (``l_t`` its length at t, ``l_lerp`` the linear blend of its lengths in the two keys; edges whose blend
   is under 1e-4 of the view are left out), the length-weighted mean of ``|r - mean r|``: the element's
@@ -137,13 +139,19 @@ def _view(scene: Any, keys: Sequence[Sequence[Any]]) -> tuple[float, float]:
     return float(w), float(h)
 
 
-def pop_alphas(tr: Any, scene: Any, method: str | None, view: tuple[float, float]) -> np.ndarray:
-    """The alpha of every pixel in every frame of the clip at the scene's rate, in [0, 1]:
-    ``(F, height, width)`` (transparent background)."""
+def pop_frames(tr: Any, scene: Any, method: str | None, view: tuple[float, float]) -> np.ndarray:
+    """Every frame of the clip at the scene's rate on a transparent background, straight RGBA in [0, 1]:
+    ``(F, height, width, 4)``."""
     scale = POP_SIDE / max(view)
     size = (max(8, round(view[0] * scale)), max(8, round(view[1] * scale)))
-    return np.stack([img[..., 3].astype(np.float32) / 255.0
+    return np.stack([img.astype(np.float32) / 255.0
                      for img in tr.frames(scene, method=method, size=size, background="none")])
+
+
+def over_white(frames: np.ndarray) -> np.ndarray:
+    """Straight RGBA frames ``(F, H, W, 4)`` as seen over white: ``(F, H, W, 3)``."""
+    alpha = frames[..., 3:]
+    return alpha * frames[..., :3] + (1.0 - alpha)
 
 
 def jumps(change: np.ndarray) -> tuple[list[int], list[int]]:
@@ -210,11 +218,14 @@ def measure_method(tr: Any, scene: Any, method: str | None, key_areas: tuple[Bas
             stray = shapely.difference(area, near).area / a
         frames.append({"t": t, "closed": closed, "stroke": stroke, "kinds": kinds, "stray": stray,
                        "area_dev": abs(a - ((1 - t) * a0 + t * a1)) / amax, "distortion": worst})
-    alphas = pop_alphas(tr, scene, method, view)
+    pictures = pop_frames(tr, scene, method, view)
+    alphas = pictures[..., 3]
     coverage = alphas.mean(axis=(1, 2), dtype=np.float64)
     change = np.abs(np.diff(alphas, axis=0)).mean(axis=(1, 2), dtype=np.float64)
     pops, spikes = jumps(change)
     net_pops, _ = jumps(np.abs(np.diff(coverage)))
+    seen_change = np.abs(np.diff(over_white(pictures), axis=0)).mean(axis=(1, 2, 3), dtype=np.float64)
+    colour_pops, _ = jumps(seen_change)
     return {
         "seconds": seconds,
         "measure_seconds": time.perf_counter() - started - seconds,
@@ -226,6 +237,8 @@ def measure_method(tr: Any, scene: Any, method: str | None, key_areas: tuple[Bas
         "pop_changes": [float(change[p - 1]) for p in pops],
         "spikes": spikes,
         "net_pops": net_pops,
+        "colour_pops": colour_pops,
+        "colour_pop_changes": [float(seen_change[p - 1]) for p in colour_pops],
         "coverage": [round(float(c), 5) for c in coverage],
         "unaligned_element_frames": unaligned,
         "frames": frames,
@@ -389,6 +402,7 @@ def summarise(results: list[dict[str, Any]], methods: list[str]) -> list[dict[st
             "pop_pairs": sum(bool(m["pops"]) for m in done),
             "spike_pairs": sum(bool(m["spikes"]) for m in done),
             "net_pop_pairs": sum(bool(m.get("net_pops")) for m in done),
+            "colour_pop_pairs": sum(bool(m.get("colour_pops")) for m in done),
             "distortion_p90": _pct([d for m in done for d in m["distortions"]], 90),
             "seconds": sum(m["seconds"] for m in done),
             "unaligned": sum(m["unaligned_element_frames"] for m in done),
@@ -402,14 +416,16 @@ def print_report(results: list[dict[str, Any]], methods: list[str], scene_method
     print(f"\n{len(results)} pairs, {len(loaded)} loaded, {len(results) - len(loaded)} refused; "
           f"{len(TIMES)} in-betweens each (t = 0.05 ... 0.95); default = the scene's own method ({scene_method})")
     head = (f"{'method':<18}{'tangled pairs/frames':>21}{'stroke x pairs/frames':>22}{'stray p95':>11}{'stray max':>11}"
-            f"{'area dev p90':>13}{'pop pairs':>10}{'spike pairs':>12}{'net pops':>9}{'distort p90':>12}{'seconds':>9}")
+            f"{'area dev p90':>13}{'pop pairs':>10}{'spike pairs':>12}{'net pops':>9}{'colour pops':>12}{'distort p90':>12}"
+            f"{'seconds':>9}")
     print(head)
     print("-" * len(head))
     for row in rows:
         name = f"default ({scene_method})" if row["method"] == "default" else row["method"]
         print(f"{name:<18}{row['tangled_pairs']:>11}/{row['tangled_frames']:<9}{row['stroke_pairs']:>12}/"
               f"{row['stroke_frames']:<9}{row['stray_p95']:>11.4f}{row['stray_max']:>11.4f}{row['area_dev_p90']:>13.4f}"
-              f"{row['pop_pairs']:>10}{row['spike_pairs']:>12}{row['net_pop_pairs']:>9}{row['distortion_p90']:>12.4f}"
+              f"{row['pop_pairs']:>10}{row['spike_pairs']:>12}{row['net_pop_pairs']:>9}{row['colour_pop_pairs']:>12}"
+              f"{row['distortion_p90']:>12.4f}"
               f"{row['seconds']:>9.1f}")
     for row in rows:
         notes = []
@@ -437,6 +453,10 @@ def print_report(results: list[dict[str, Any]], methods: list[str], scene_method
         if popped:
             print(f"[{name}] spikes (frames): " + ", ".join(
                 f"{short(r['a'])}->{short(r['b'])} " + " ".join(map(str, m["spikes"])) for r, m in popped))
+        coloured = [(r, m) for r, m in done if m.get("colour_pops")]
+        if coloured:
+            print(f"[{name}] colour pops (frames): " + ", ".join(
+                f"{short(r['a'])}->{short(r['b'])} " + " ".join(map(str, m["colour_pops"])) for r, m in coloured))
         for r, error in errors:
             print(f"[{name}] failed {short(r['a'])}->{short(r['b'])}: {error}")
     return rows

@@ -195,3 +195,22 @@ def test_injective_in_betweens_reach_their_keys_without_a_jump(a: str, b: str) -
     regions = [_region(tr.contours(scene, f / 24, method="injective")) for f in range(25)]
     steps = np.array([p.symmetric_difference(q).area for p, q in zip(regions, regions[1:])])
     assert steps.max() <= 3.0 * np.median(steps), (int(steps.argmax()) + 1, steps.max() / np.median(steps))
+
+
+def test_the_descents_of_one_mesh_order_its_normal_matrix_once(monkeypatch) -> None:
+    """Every grid point's descent fits the same mesh, so its normal matrices share one sparsity: the LDLᵀ
+    factorisation's ordering and elimination tree are worked out once for all of them (counted), each round
+    of every descent refactoring in place (it took one ordering a descent)."""
+    qdldl = pytest.importorskip("qdldl", reason="the counted factorisation is qdldl's")
+    made: list[int] = []
+    real = qdldl.Solver
+
+    def counted(*args, **kwargs):  # noqa: ANN002, ANN003, ANN202
+        made.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(qdldl, "Solver", counted)
+    solve, _ = _solve_for("mdi/weather-sunny", "twemoji/1f3a8")
+    descended = [s for s in (0.3, 0.5, 0.7) if not np.all(solve(s) == solve.convex(s))]
+    assert descended and solve._sides, "the pair no longer takes the descents"
+    assert len(made) == 1, len(made)

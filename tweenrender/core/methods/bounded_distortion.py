@@ -46,7 +46,7 @@ from numpy.typing import NDArray
 from ..contours import inside
 from .compatible import CompatibleMesh
 from .mesh import edge_matrix
-from .mesh_distortion import gradient_operator, least_distortion, orientations, sparse_identity
+from .mesh_distortion import NormalSparsity, gradient_operator, least_distortion, orientations, sparse_identity
 from .tutte import ConvexEmbedding
 
 __all__ = ["ShapeKeepingSolve", "material_triangles"]
@@ -100,6 +100,7 @@ class ShapeKeepingSolve:
         self._mean_values: dict[tuple[int, int], Array] = {}
         self._sides: dict[tuple[int, int], Array] = {}
         self._fits: dict[int, Array | None] = {}
+        self._sparsity: NormalSparsity | None = None  # the descents' normal matrix layout, one for all grid points
         # rounds of the descent per grid point, within the work bound (0: the mesh takes the convex solve)
         self.rounds = min(_LINK, int(_WORK // (2 * (_GRID - 1) * max(len(tri), 1))))
 
@@ -187,7 +188,9 @@ class ShapeKeepingSolve:
         if found is None:
             found = self._sides.get((k, step))
         if found is None:
+            if self._sparsity is None:
+                self._sparsity = NormalSparsity(self.tri, self.free, len(self.mesh.p0))
             found = least_distortion(self._side(k + step, step), self.tri, self._rest(self.targets(k / _GRID)),
-                                     self.base, self.free, self.rounds)
+                                     self.base, self.free, self.rounds, self._sparsity)
             self._sides[(k, step)] = found
         return found

@@ -20,7 +20,7 @@ from numpy.typing import NDArray
 
 from .mesh import edge_matrix
 
-__all__ = ["NormalPattern", "distortion", "gradient_operator", "least_distortion", "orientations", "sparse_identity",
+__all__ = ["NormalPattern", "NormalSparsity", "distortion", "gradient_operator", "least_distortion", "orientations", "sparse_identity",
            "symmetric_dirichlet"]
 
 Array = NDArray[np.float64]
@@ -56,12 +56,13 @@ def symmetric_dirichlet(jacobians: Array) -> Array:
 
 
 def least_distortion(x: Array, tri: Triangles, rest: Array, weights: Array, free: NDArray[np.intp],
-                     rounds: int = _ROUNDS) -> Array:
+                     rounds: int = _ROUNDS, sparsity: NormalSparsity | None = None) -> Array:
     """``x (V, 2)`` with its rows ``free`` moved to lower ``Σ_f w_f·SD(E_f(x)·rest_f)``, the symmetric
     Dirichlet energy of each triangle ``tri (F, 3)`` against its rest shape (``rest (F, 2, 2)``: the inverse
     of its rest edge matrix; ``weights (F,)``, zero for a triangle left out), by at most ``rounds`` SLIM
     rounds. Every weighted triangle counter-clockwise in ``x`` stays so; an ``x`` with one that is not is
-    returned as it is. Returns a new ``(V, 2)``."""
+    returned as it is. Returns a new ``(V, 2)``. ``sparsity``: the mesh's normal matrix layout, shared by
+    descents on one mesh (built here without it)."""
     x = np.array(x, dtype=np.float64)
     used = weights > 0.0
     if not len(free) or not np.any(used) or not np.all(orientations(x, tri[used]) > 0.0):
@@ -71,7 +72,7 @@ def least_distortion(x: Array, tri: Triangles, rest: Array, weights: Array, free
     held_rows = np.setdiff1d(np.arange(len(x)), free)
     g_held = operator[:, held_rows]
     parts = (operator[:, free].tocsr(), [g_held @ x[held_rows, r] for r in range(2)],
-             NormalPattern(tri, rest, free, len(x)))
+             NormalPattern(tri, rest, free, len(x), sparsity))
     energy = _energy(x, tri, rest, weights, used)
     for _ in range(rounds):
         goal = _slim_goal(x, tri, rest, weights, used, parts, free)
@@ -139,17 +140,13 @@ def _slim_goal(x: Array, tri: Triangles, rest: Array, weights: Array, used: NDAr
     return out
 
 
-class NormalPattern:
-    """The normal matrix of SLIM's weighted fit, ``Gᵀ C G`` over the free vertices' two coordinates
-    (``(2P, 2P)``, coordinate-major), assembled from each triangle's share: triangle f adds
-    ``C_f[r, q] · L_f[i, j]`` at row ``r·P + free index of corner i``, column ``q·P + … of corner j``, where
-    ``L_f = g_fᵀ g_f`` (``(3, 3)``, ``g_f`` its corners' gradients) and ``C_f`` its ``(2, 2)`` weight. The
-    sparsity and each share's place in it are worked out once a descent; a round only sums the shares
-    (one ``bincount``), with a vanishing ``1e-12 ×`` mean diagonal added to the diagonal."""
+class NormalSparsity:
+    """Where each triangle's share goes in the normal matrix of SLIM's weighted fit (:class:`NormalPattern`),
+    and its LDLᵀ factorisation: they depend on the mesh alone (``tri (F, 3)``, the ``free (P,)`` vertices of
+    ``vertices``), not on the rest shapes, so the descents toward each grid point's targets of one mesh share
+    one (its ordering and elimination tree worked out once, each round refactoring in place)."""
 
-    def __init__(self, tri: Triangles, rest: Array, free: NDArray[np.intp], vertices: int) -> None:
-        grads = np.stack([-(rest[:, 0, :] + rest[:, 1, :]), rest[:, 0, :], rest[:, 1, :]], axis=-1)  # (F, 2, 3)
-        self.local = np.einsum("fki,fkj->fij", grads, grads)  # (F, 3, 3)
+    def __init__(self, tri: Triangles, free: NDArray[np.intp], vertices: int) -> None:
         index = np.full(vertices, -1, dtype=np.int64)
         index[free] = np.arange(len(free))
         corner = index[tri]  # (F, 3)
@@ -171,27 +168,47 @@ class NormalPattern:
         self.upper = np.flatnonzero(self.indices <= column)  # the upper triangle's entries (row ≤ column)
         self.upper_indptr = np.concatenate([[0], np.cumsum(np.bincount(column[self.upper], minlength=size))
                                             ]).astype(np.int32)
-        self._factor: object | None = None  # the LDLᵀ factorisation of the last matrix, refactored in place
+        self.factor: object | None = None  # the LDLᵀ factorisation of the last matrix, refactored in place
+
+
+class NormalPattern:
+    """The normal matrix of SLIM's weighted fit, ``Gᵀ C G`` over the free vertices' two coordinates
+    (``(2P, 2P)``, coordinate-major), assembled from each triangle's share: triangle f adds
+    ``C_f[r, q] · L_f[i, j]`` at row ``r·P + free index of corner i``, column ``q·P + … of corner j``, where
+    ``L_f = g_fᵀ g_f`` (``(3, 3)``, ``g_f`` its corners' gradients) and ``C_f`` its ``(2, 2)`` weight. The
+    sparsity and each share's place in it (:class:`NormalSparsity`) are worked out once a mesh (``sparsity``,
+    or here); a round only sums the shares (one ``bincount``), with a vanishing ``1e-12 ×`` mean diagonal added
+    to the diagonal."""
+
+    def __init__(self, tri: Triangles, rest: Array, free: NDArray[np.intp], vertices: int,
+                 sparsity: NormalSparsity | None = None) -> None:
+        grads = np.stack([-(rest[:, 0, :] + rest[:, 1, :]), rest[:, 0, :], rest[:, 1, :]], axis=-1)  # (F, 2, 3)
+        self.local = np.einsum("fki,fkj->fij", grads, grads)  # (F, 3, 3)
+        self.sparsity = sparsity if sparsity is not None else NormalSparsity(tri, free, vertices)
+        self.size = self.sparsity.size
 
     def _data(self, weight: Array) -> Array:
+        at = self.sparsity
         shares = weight[:, :, :, None, None] * self.local[:, None, None, :, :]  # (F, 2, 2, 3, 3)
-        data = np.bincount(self.slot, weights=shares[self.kept], minlength=len(self.indices))
-        data[self.diagonal] += 1e-12 * (float(data[self.diagonal].mean()) or 1.0)
+        data = np.bincount(at.slot, weights=shares[at.kept], minlength=len(at.indices))
+        data[at.diagonal] += 1e-12 * (float(data[at.diagonal].mean()) or 1.0)
         return data
 
     def matrix(self, weight: Array):  # noqa: ANN201 - a scipy sparse matrix
         """The normal matrix for each triangle's weight ``weight (F, 2, 2)``, in compressed columns."""
         from scipy.sparse import csc_matrix
 
-        return csc_matrix((self._data(weight), self.indices, self.indptr), shape=(self.size, self.size))
+        at = self.sparsity
+        return csc_matrix((self._data(weight), at.indices, at.indptr), shape=(self.size, self.size))
 
     def solve(self, weight: Array, rhs: Array) -> Array | None:
         """The normal matrix for ``weight (F, 2, 2)`` solved for ``rhs (2P,)``: ``(2P,)``, None where it cannot be
         factored. Symmetric and positive definite, it takes an LDLᵀ factorisation (QDLDL), whose ordering and
-        elimination tree are worked out once a descent and each round refactors in place; without the
+        elimination tree are worked out once a mesh and each round refactors in place; without the
         ``qdldl`` package, a sparse LU in symmetric mode (about three times the time)."""
         from scipy.sparse import csc_matrix
 
+        at = self.sparsity
         data = self._data(weight)
         try:
             import qdldl
@@ -199,21 +216,20 @@ class NormalPattern:
             from scipy.sparse.linalg import splu
 
             try:
-                lu = splu(csc_matrix((data, self.indices, self.indptr), shape=(self.size, self.size)),
+                lu = splu(csc_matrix((data, at.indices, at.indptr), shape=(self.size, self.size)),
                           permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
                 return lu.solve(rhs)
             except RuntimeError:
                 return None
-        upper = csc_matrix((data[self.upper], self.indices[self.upper], self.upper_indptr),
-                           shape=(self.size, self.size))
+        upper = csc_matrix((data[at.upper], at.indices[at.upper], at.upper_indptr), shape=(self.size, self.size))
         try:
-            if self._factor is None:
-                self._factor = qdldl.Solver(upper, upper=True)
+            if at.factor is None:
+                at.factor = qdldl.Solver(upper, upper=True)
             else:
-                self._factor.update(upper, upper=True)  # type: ignore[attr-defined]
-            return self._factor.solve(rhs)  # type: ignore[attr-defined]
+                at.factor.update(upper, upper=True)  # type: ignore[attr-defined]
+            return at.factor.solve(rhs)  # type: ignore[attr-defined]
         except (RuntimeError, ValueError):
-            self._factor = None  # a failed factorisation leaves nothing to refactor
+            at.factor = None  # a failed factorisation leaves nothing to refactor
             return None
 
 

@@ -63,6 +63,24 @@ class ConvexEmbedding:
         keep = ~fixed[self.rows]
         self.inner = keep & ~fixed[self.cols]  # between two free vertices: in the matrix
         self.outer = keep & fixed[self.cols]  # from a free vertex to the frame: on the right-hand side
+        self._layout: tuple[NDArray[np.intp], NDArray[np.int32], NDArray[np.int32]] | None = None
+
+    def _matrix(self, w: Array):  # noqa: ANN202 - a scipy sparse matrix
+        """``I − W`` over the free vertices for weights ``w (E,)``, in compressed columns: its layout (which entry
+        goes where) is worked out once, each call only places the weights."""
+        from scipy.sparse import csc_matrix
+
+        size = len(self.free)
+        if self._layout is None:
+            r_in, c_in = self.slot[self.rows[self.inner]], self.slot[self.cols[self.inner]]
+            rows = np.concatenate([np.arange(size), r_in])
+            cols = np.concatenate([np.arange(size), c_in])
+            numbered = csc_matrix((np.arange(1.0, len(rows) + 1.0), (rows, cols)), shape=(size, size))
+            numbered.sort_indices()
+            self._layout = numbered.data.astype(np.intp) - 1, numbered.indices, numbered.indptr
+        order, indices, indptr = self._layout
+        values = np.concatenate([np.ones(size), -w[self.inner]])[order]
+        return csc_matrix((values, indices, indptr), shape=(size, size))
 
     def weights(self, points: Array) -> Array:
         """The mean-value weights ``(E,)`` of the mesh drawn at ``points (V, 2)``, one per directed edge in the
@@ -75,12 +93,10 @@ class ConvexEmbedding:
     def __call__(self, w: Array) -> Array:
         """The vertices ``(V, 2)`` where each one off the frame is the combination of its neighbours by ``w (E,)``,
         the frame held (one sparse LU)."""
-        from scipy.sparse import csc_matrix, identity
         from scipy.sparse.linalg import splu
 
         size = len(self.free)
-        r_in, c_in = self.slot[self.rows[self.inner]], self.slot[self.cols[self.inner]]
-        matrix = identity(size, format="csc") - csc_matrix((w[self.inner], (r_in, c_in)), shape=(size, size))
+        matrix = self._matrix(w)
         rhs = np.zeros((size, 2))
         np.add.at(rhs, self.slot[self.rows[self.outer]], w[self.outer][:, None] * self.mesh.p0[self.cols[self.outer]])
         out = np.array(self.mesh.p0)

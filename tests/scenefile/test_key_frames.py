@@ -225,3 +225,32 @@ def test_the_overlap_of_elements_is_counted_only_where_their_order_shows(tmp_pat
     scene = tr.load_scene([_two_squares(tmp_path, "a", "b", 4, paints), _two_squares(tmp_path, "b", "a", 14, paints)])
     (switch,) = Frames(RenderJob(scene)).stacking
     assert (len(calls) == 31, switch.t) == ((True, 21 / 32) if counted else (False, 16 / 32))
+
+
+@pytest.mark.parametrize("a, b", [("octicons/smiley-24.svg", "tabler/letter-a.svg"),
+                                  ("fluent-emoji/potato.svg", "fluent-emoji/olive.svg"),
+                                  ("twemoji/1f4c4.svg", "twemoji/1f69a.svg"), ("twemoji/1f4c4.svg", "twemoji/1f600.svg")])
+def test_at_a_key_the_order_is_the_plans_without_working_it_out(a: str, b: str, monkeypatch) -> None:
+    """Every switch falls strictly between two key times, so at a key the paint order is the one the whole
+    plan gives there (checked against the plan itself, on pairs whose keys are stacked otherwise than the
+    scene and one with no switch at all), and a still of a key works no plan out (it took one: every
+    swapped pair's overlap at 31 t)."""
+    import tweenrender.core.stacking as stacking
+    from tweenrender.pipeline.frames import Frames
+    from tweenrender.plan.job import RenderJob
+
+    scene = tr.load_scene([ICONS / a, ICONS / b])
+    planned = Frames(RenderJob(scene))
+    for time in (0.0, scene.duration):
+        assert stacking.order_at_key(scene.shapes, time) == stacking.order_at(planned.stacking, scene.shapes, time)
+    assert stacking.order_at_key(scene.shapes, 0.5 * scene.duration) is None
+    import tweenrender.plan.job as job
+
+    plans = []
+    working = job.stacking_plan
+    monkeypatch.setattr(job, "stacking_plan", lambda *args: plans.append(1) or working(*args))
+    for time in (0.0, scene.duration):
+        tr.frame(tr.load_scene([ICONS / a, ICONS / b]), time, size=(64, 64))
+    assert plans == []
+    tr.frame(tr.load_scene([ICONS / a, ICONS / b]), 0.5 * scene.duration, size=(64, 64))
+    assert plans == [1] or not stacking.layered(scene.shapes)

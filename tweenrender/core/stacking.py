@@ -23,7 +23,7 @@ from ..model import Color, Shape
 from .timing.timeline import ShapeAt
 
 __all__ = ["SWEEP", "GRID", "Switch", "layered", "key_order", "swapped_pairs", "plain_ink", "order_shows", "coverage",
-           "overlap_area", "choose_switch", "stacking_plan", "order_at"]
+           "overlap_area", "choose_switch", "stacking_plan", "order_at", "order_at_key"]
 
 Array = NDArray[np.float64]
 SWEEP = np.arange(1, 32) / 32.0
@@ -214,6 +214,19 @@ def _rule(shape: Shape, at: ShapeAt) -> str:
 def _width(shape: Shape, at: ShapeAt) -> float:
     """The stroke width in scene units (widths in pixels, of TOML shapes, are not counted)."""
     return at.paint.stroke_width if shape.stroke_scales and at.paint.stroke is not None else 0.0
+
+
+def order_at_key(shapes: Sequence[Shape], time: float) -> tuple[int, ...] | None:
+    """The paint order at ``time`` seconds where it is a key time of the drawings, without the plan: what
+    :func:`order_at` gives with it, since every switch falls strictly between two key times (the keys'
+    own order there, or the scene's where no two keys' orders differ and so there is no switch); None at
+    any other time."""
+    times = sorted({key.time for shape in shapes for key in shape.keys if key.layer is not None})
+    if time not in times:
+        return None
+    if len({key_order(shapes, t) for t in times}) == 1:
+        return tuple(range(len(shapes)))
+    return key_order(shapes, time)
 
 
 def order_at(plan: Sequence[Switch], shapes: Sequence[Shape], time: float) -> tuple[int, ...]:

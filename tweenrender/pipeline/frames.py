@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
-from ..core.stacking import Switch, layered, order_at
+from ..core.stacking import Switch, layered, order_at, order_at_key
 from ..core.timing.timeline import ShapeAt, Track, tracks_of
 from ..plan.job import RenderJob, scene_view, stacking_of
 
@@ -53,8 +53,10 @@ class Frames:
         return self._stacking
 
     def order_at(self, time: float) -> tuple[int, ...]:
-        """The shapes' paint order at ``time`` seconds (indices into the scene's shapes)."""
-        return order_at(self.stacking, self.job.scene.shapes, time)
+        """The shapes' paint order at ``time`` seconds (indices into the scene's shapes); at a key time, the
+        keys' own, with no plan worked out (a still of a key draws no in-between)."""
+        at_key = order_at_key(self.job.scene.shapes, time) if self._stacking is None else None
+        return at_key if at_key is not None else order_at(self.stacking, self.job.scene.shapes, time)
 
     def shapes_at(self, method: str | None, time: float) -> list[ShapeAt]:
         """Every shape as it is at ``time`` seconds under ``method`` (``None``: the shape's own)."""

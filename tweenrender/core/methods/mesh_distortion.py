@@ -20,8 +20,8 @@ from numpy.typing import NDArray
 
 from .mesh import edge_matrix
 
-__all__ = ["NormalPattern", "NormalSparsity", "distortion", "gradient_operator", "least_distortion", "orientations", "sparse_identity",
-           "symmetric_dirichlet"]
+__all__ = ["NormalPattern", "NormalSparsity", "distortion", "gradient_operator", "least_distortion", "orientations",
+           "sparse_identity", "symmetric_dirichlet"]
 
 Array = NDArray[np.float64]
 Triangles = NDArray[np.intp]

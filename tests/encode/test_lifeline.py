@@ -98,3 +98,30 @@ def test_a_worker_whose_parent_ended_before_it_was_set_up_ends_at_once() -> None
     if left:
         os.kill(child, signal.SIGKILL)
     assert not left
+
+
+def test_a_stop_that_lands_in_a_finaliser_still_ends_the_part_quietly() -> None:
+    """A chunk worker's SIGTERM raises ``Stopped`` wherever the worker is, and a finaliser (an object's
+    ``__del__``, run when a frame's last reference goes) cannot pass an exception on: Python printed
+    "Exception ignored in …" on the render's stderr and the worker drew on. Here the signal arrives inside
+    one: the worker must still stop in its own code, at its next frame, clean up and say nothing."""
+    code = (
+        "import os, signal, sys\n"
+        "from tweenrender.encode.lifeline import Stopped, part_worker_setup, stop_if_asked, stoppable\n"
+        "part_worker_setup(os.getppid())\n"
+        "class Frame:\n"
+        "    def __del__(self):\n"
+        "        os.kill(os.getpid(), signal.SIGTERM)\n"
+        "        for _ in range(1000):  # the handler runs in here\n"
+        "            pass\n"
+        "try:\n"
+        "    with stoppable():\n"
+        "        Frame()\n"
+        "        for _ in range(100000):\n"
+        "            pass\n"
+        "        stop_if_asked()  # the next frame\n"
+        "    os._exit(3)  # drew on\n"
+        "except Stopped as stop:\n"
+        "    os._exit(stop.code)  # its part cleaned up\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert (done.stderr, done.returncode) == ("", 143)

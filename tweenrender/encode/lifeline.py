@@ -19,7 +19,7 @@ import threading
 from typing import Any, Callable, Iterator
 
 __all__ = ["die_with_parent", "death_signal_setup", "watch_parent", "worker_setup", "part_worker_setup", "Stopped", "stoppable",
-           "start_program", "run_program"]
+           "stop_if_asked", "start_program", "run_program"]
 
 _PR_SET_PDEATHSIG = 1
 _POLL_SECONDS = 0.25
@@ -168,19 +168,29 @@ class Stopped(SystemExit):
 
 
 _stoppable = False
+_pending: int | None = None  # the exit code of a stop raised where it could not pass on (in a finaliser)
 
 
 @contextlib.contextmanager
 def stoppable() -> Iterator[None]:
     """Where SIGTERM raises :class:`Stopped` in a chunk worker (rendering a part, whose files and encoder
     are then cleaned up); anywhere else the worker ends at once — it may be blocked sending a result
-    to a parent that is gone, where an exception would only be sent on after it and block again."""
+    to a parent that is gone, where an exception would only be sent on after it and block again. A stop
+    that fell in a finaliser is raised at the next frame (:func:`stop_if_asked`), or here at the end."""
     global _stoppable
     _stoppable = True
     try:
         yield
+        stop_if_asked()
     finally:
         _stoppable = False
+
+
+def stop_if_asked() -> None:
+    """Raise the :class:`Stopped` that a SIGTERM asked for where it could not be raised (in an object's
+    finaliser, which cannot pass an exception on): a chunk worker calls this between frames."""
+    if _pending is not None and _stoppable:
+        raise Stopped(_pending)
 
 
 def part_worker_setup(parent: int) -> None:
@@ -204,7 +214,24 @@ def part_worker_setup(parent: int) -> None:
         raise Stopped(128 + number)
 
     signal.signal(signal.SIGTERM, stop)
+    sys.unraisablehook = _stop_again(sys.unraisablehook)
     _let_go_of_stdout()
+
+
+def _stop_again(hook: Callable[[Any], object]) -> Callable[[Any], None]:
+    """``sys.unraisablehook`` of a chunk worker: a :class:`Stopped` raised where it cannot pass on (in an
+    object's finaliser, which Python would report on stderr and carry on from) is kept, quietly, to be raised
+    in the worker's own code (:func:`stop_if_asked`); every other unraisable exception goes to ``hook``."""
+
+    def handle(unraisable: Any) -> None:
+        global _pending
+        if isinstance(unraisable.exc_value, Stopped):
+            code = unraisable.exc_value.code
+            _pending = code if isinstance(code, int) else 1
+            return
+        hook(unraisable)
+
+    return handle
 
 
 def _let_go_of_stdout() -> None:

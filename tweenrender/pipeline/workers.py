@@ -25,6 +25,7 @@ from numpy.typing import NDArray
 from ..core.correspondence.correspond import SearchTooLarge
 from ..core.timing.timeline import tracks_of
 from ..encode.formats import TABLE
+from ..encode.lifeline import stop_if_asked
 from ..errors import RenderError
 from ..plan.job import RenderJob
 from .frames import Frames
@@ -42,7 +43,9 @@ Encode = Callable[[NDArray[np.uint8]], Any]
 
 def draw_frame(frames: Frames, index: int) -> NDArray[np.uint8]:
     """Frame ``index`` of ``frames``, with drawing failures reported as :class:`RenderError` (a search refused
-    for its memory is the input's fault and stays as it is)."""
+    for its memory is the input's fault and stays as it is); in a chunk worker asked to stop where it could
+    not be (:func:`~..encode.lifeline.stop_if_asked`), the stop."""
+    stop_if_asked()
     try:
         return frames(index)
     except SearchTooLarge:

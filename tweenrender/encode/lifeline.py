@@ -214,11 +214,11 @@ def part_worker_setup(parent: int) -> None:
         raise Stopped(128 + number)
 
     signal.signal(signal.SIGTERM, stop)
-    sys.unraisablehook = _stop_again(sys.unraisablehook)
+    sys.unraisablehook = _kept_stops(sys.unraisablehook)
     _let_go_of_stdout()
 
 
-def _stop_again(hook: Callable[[Any], object]) -> Callable[[Any], None]:
+def _kept_stops(hook: Callable[[Any], object]) -> Callable[[Any], None]:
     """``sys.unraisablehook`` of a chunk worker: a :class:`Stopped` raised where it cannot pass on (in an
     object's finaliser, which Python would report on stderr and carry on from) is kept, quietly, to be raised
     in the worker's own code (:func:`stop_if_asked`); every other unraisable exception goes to ``hook``."""

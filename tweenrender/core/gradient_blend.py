@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..model import Color, Gradient, Paint, Pattern
-from .paint import blend_color_rows
+from .paint import blend_stop_colours
 
 __all__ = ["Box", "box_of", "blend_gradient", "blend_stroke_gradient", "carry_pattern", "color_at", "colors_at"]
 
@@ -99,7 +99,7 @@ def blend_gradient(p0: Paint, p1: Paint, box0: Box, box1: Box, box: Box, t: floa
     placed = frames[2] @ relative
     offsets = sorted({o for o, _ in g0.stops} | {o for o, _ in g1.stops})
     at = np.array(offsets)
-    stops = tuple(zip(offsets, blend_color_rows(colors_at(g0, at), colors_at(g1, at), t)))
+    stops = tuple(zip(offsets, blend_stop_colours(colors_at(g0, at), colors_at(g1, at), t)))
     return Gradient(near.kind, geometry,
                     (float(placed[0, 0]), float(placed[1, 0]), float(placed[0, 1]), float(placed[1, 1]),
                      float(placed[0, 2]), float(placed[1, 2])), stops, near.spread)  # type: ignore[arg-type]

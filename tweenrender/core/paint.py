@@ -15,7 +15,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..model import Color, Paint
 from .dashes import blend_dashes
 
-__all__ = ["srgb_to_oklab", "oklab_to_srgb", "blend_colors", "blend_color_rows", "blend_paints"]
+__all__ = ["srgb_to_oklab", "oklab_to_srgb", "blend_colors", "blend_stop_colours", "blend_paints"]
 
 Array = NDArray[np.float64]
 
@@ -79,7 +79,7 @@ def blend_colors(c0: Color | None, c1: Color | None, t: ArrayLike) -> list[Color
     return [c0 if x == 0.0 else c1 if x == 1.0 else o for x, o in zip(t.tolist(), out)]  # the keys, exactly
 
 
-def blend_color_rows(c0: NDArray[np.int64], c1: NDArray[np.int64], t: float) -> list[Color]:
+def blend_stop_colours(c0: NDArray[np.int64], c1: NDArray[np.int64], t: float) -> list[Color]:
     """Each pair of a gradient's straight RGBA stops ``c0[i] → c1[i]`` (``(S, 4)``, 0 to 255) at one ``t``:
     ``(S,)`` colours, the colour in OKLab and alpha linearly, each blended on its own (not premultiplied).
     A gradient draws the ramp between two stops from their straight colours, so a transparent stop's colour

@@ -22,7 +22,7 @@ from __future__ import annotations
 import hashlib
 import math
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING, Callable, Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
@@ -44,9 +44,8 @@ from ..gradient_blend import blend_gradient, blend_stroke_gradient, box_of, carr
 from ..correspondence.hint_search import correspond_hinted, correspond_hinted_open
 from ..correspondence.hints import Link, forced_contour_pairs, segment_links, vertex_links
 
-if TYPE_CHECKING:
-    from ..methods.qcurves import AutoChoice
-from ..methods.qcurves import BALLOON, off_blend
+from ..methods.qcurves import (BALLOON, QUALITY_T, STRAY_LIMIT, AutoChoice, auto_choice, auto_choice_contours, balloon,
+                               candidate_paths, candidate_quality, drawn_choice, off_blend, straight, stroke_stray)
 from ..methods.registry import interpolate, per_outline
 from ..dashes import start_share
 from ..memo import Remembered
@@ -250,8 +249,6 @@ def segment_choice(segment: Segment, hold: bool = True) -> AutoChoice | None:
     crossings read as a stroke's), else what auto does with it as an outline; several contours are
     chosen over together (maths §5.16), their area measured where no contour comes or goes beside them; with
     ``hold``, measured again with the contours without a partner (:func:`_with_alone`)."""
-    from ..methods.qcurves import auto_choice, auto_choice_contours
-
     moving = [p for p in segment.pairs if p.moving]
     if not moving:
         return None
@@ -298,8 +295,6 @@ _alone_choices: Remembered[tuple[AutoChoice, tuple[int, float] | None]] = Rememb
 def _clean_hold(segment: Segment) -> bool:
     """Whether ``auto`` holds the segment's contours without a partner in an injective mesh whose in-betweens
     tangle at no t and stray at most :data:`.qcurves.STRAY_LIMIT` (measured by :func:`_with_alone`)."""
-    from ..methods.qcurves import STRAY_LIMIT
-
     base = segment_choice(segment, hold=False)
     if base is None:
         return False
@@ -308,9 +303,6 @@ def _clean_hold(segment: Segment) -> bool:
 
 
 def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
-    from ..methods.qcurves import (QUALITY_T, STRAY_LIMIT, AutoChoice, balloon, candidate_paths, candidate_quality,
-                                   stroke_stray)
-
     pairs = segment.pairs
     moving = [i for i, p in enumerate(pairs) if p.moving]
     k0s, k1s = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving]
@@ -545,8 +537,6 @@ def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True) ->
             frames[i] = part
     elif method == "auto" and chosen == "linear" and not single:
         # auto's straight paths: each closed contour's copies spread along its edges first
-        from ..methods.qcurves import straight
-
         for i in moving:
             pair = pairs[i]
             path = straight(pair.k0, pair.k1, t) if pair.closed else interpolate(pair.k0, pair.k1, t, "linear")
@@ -554,8 +544,6 @@ def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True) ->
             frames[i] = path
     elif chosen == "auto" and single and not segment.joints:
         # one outline: auto's choice for it, measured within the drawing's view (not its own size)
-        from ..methods.qcurves import drawn_choice
-
         choice = segment_choice(segment, hold)
         assert choice is not None
         path = drawn_choice(choice, k0, k1, t)

@@ -349,7 +349,7 @@ def _painted_shot(browser, session) -> np.ndarray:  # type: ignore[no-untyped-de
     browser.send("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
                                                     "requestAnimationFrame(r)))",
                                       "awaitPromise": True}, session=session)
-    shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)
+    shot = browser.send("Page.captureScreenshot", {"format": "png", "optimizeForSpeed": True}, session=session)
     with tempfile.NamedTemporaryFile(suffix=".png") as handle:
         handle.write(base64.b64decode(shot["data"]))
         handle.flush()

@@ -224,7 +224,7 @@ def test_lines_that_straight_paths_swell_into_a_blob_take_the_way_that_keeps_the
     scene = tr.load_scene([pairs / "octicons-tab-external-24.svg", pairs / "feather-eye-off.svg"], step=1.0)
     swell = max(_element_area_deviation(scene, float(t)) for t in QUALITY_T)
     assert swell <= 0.25, swell
-    reasons = [shape["auto"]["why"] for shape in tr.stats(scene)["shapes"]]
+    reasons = [shape["auto"]["why"] for shape in tr.stats(scene, methods=["auto"])["shapes"]]
     assert any(re.search(r"linear: tangled at 0 of 19 t, stray [0-9.]+, area [0-9.]+ off the keys' blend", why)
                for why in reasons), reasons
 
@@ -241,7 +241,7 @@ def test_a_contour_without_a_partner_that_leaves_a_blob_as_it_grows_is_held_in_t
     scene = tr.load_scene([pairs / "feather-wifi-off.svg", pairs / "mdi-pencil-outline.svg"], step=1.0)
     swell = max(_element_area_deviation(scene, float(t)) for t in QUALITY_T)
     assert swell <= 0.25, swell
-    shapes = tr.stats(scene)["shapes"]
+    shapes = tr.stats(scene, methods=["auto"])["shapes"]
     held = [shape["auto"] for shape in shapes if "injective holding them" in shape["auto"]["why"]]
     assert held and held[0]["method"] == "injective", [shape["auto"] for shape in shapes]
     assert re.search(r"with the contours without a partner: \w+ tangled at 0 of 19 t, stray [0-9.]+, area [0-9.]+ off "

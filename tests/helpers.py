@@ -34,12 +34,13 @@ def run_module(*args: str, cwd: Path | None = None) -> subprocess.CompletedProce
                           text=True, cwd=cwd, timeout=600)
 
 
-def run_main(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
+def run_main(*args: str, cwd: Path | None = None, warnings_as_errors: bool = False) -> subprocess.CompletedProcess[str]:
     """``tweenrender ARGS`` run in this process, seen as :func:`run_module` sees a process: the exit code, and
     stdout and stderr read as text from file descriptors 1 and 2 (so what a library or a child writes there is
     seen too), Python's streams encoding as a pipe's (UTF-8, strict on stdout), the warnings a fresh
-    interpreter would show written to stderr. For tests of what a command does and says; signals, exits,
-    start-up and the interpreter's own warnings are tested on real processes (:func:`run_module`)."""
+    interpreter would show written to stderr (``warnings_as_errors``: raised instead, as ``python -W error``
+    does). For tests of what a command does and says; signals, exits, start-up and the interpreter's own
+    warnings are tested on real processes (:func:`run_module`)."""
     import io
     import tempfile
     import warnings
@@ -55,6 +56,8 @@ def run_main(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess
         for quiet in (DeprecationWarning, PendingDeprecationWarning, ImportWarning, ResourceWarning):
             warnings.simplefilter("ignore", quiet)
         warnings.filterwarnings("default", category=DeprecationWarning, module="__main__")
+        if warnings_as_errors:
+            warnings.simplefilter("error")
         os.dup2(out.fileno(), 1)
         os.dup2(err.fileno(), 2)
         sys.stdout = io.TextIOWrapper(open(os.dup(1), "wb"), encoding="utf-8", errors="strict", line_buffering=False)
@@ -83,6 +86,48 @@ def run_main(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess
         err.seek(0)
         return subprocess.CompletedProcess(["tweenrender", *map(str, args)], code, out.read().decode(),
                                            err.read().decode())
+
+
+def run_forked(*args: str, cwd: Path | None = None, deadline: float = 120.0,
+               warnings_as_errors: bool = False) -> subprocess.CompletedProcess[str]:
+    """:func:`run_main` in a forked child that is killed at ``deadline`` seconds (raising
+    ``subprocess.TimeoutExpired``): for inputs that must not hang the command, each a process of its own but
+    without the start of a fresh interpreter (Python, numpy and skia are already loaded here). A child that
+    dies of an exception reports it as exit code 1 with its traceback on stderr."""
+    import json
+    import selectors
+    import time
+    import traceback
+
+    read, write = os.pipe()
+    child = os.fork()
+    if child == 0:  # pragma: no cover - runs in the child
+        os.close(read)
+        try:
+            done = run_main(*args, cwd=cwd, warnings_as_errors=warnings_as_errors)
+            outcome = [done.returncode, done.stdout, done.stderr]
+        except BaseException:  # noqa: BLE001 - reported to the parent as a crash would be
+            outcome = [1, "", traceback.format_exc()]
+        with os.fdopen(write, "wb") as pipe:
+            pipe.write(json.dumps(outcome).encode())
+        os._exit(0)
+    os.close(write)
+    data, end = bytearray(), time.monotonic() + deadline
+    with os.fdopen(read, "rb", buffering=0) as pipe, selectors.DefaultSelector() as waiting:
+        waiting.register(pipe, selectors.EVENT_READ)
+        while True:
+            left = end - time.monotonic()
+            if left <= 0 or not waiting.select(left):
+                os.kill(child, signal.SIGKILL)
+                os.waitpid(child, 0)
+                raise subprocess.TimeoutExpired(["tweenrender", *map(str, args)], deadline)
+            chunk = pipe.read(1 << 16)
+            if not chunk:
+                break
+            data += chunk
+    os.waitpid(child, 0)
+    code, out, err = json.loads(bytes(data))
+    return subprocess.CompletedProcess(["tweenrender", *map(str, args)], code, out, err)
 
 
 def decode(path: Path) -> tuple[dict, list[np.ndarray]]:

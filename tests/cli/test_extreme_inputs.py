@@ -1,7 +1,8 @@
 """Inputs at the edges of what numbers hold: refused in one line (exit 2), or drawn without a warning.
 
-Through a separate process, so that stderr is exactly what a user sees: a refusal is one line naming the
-file and the place, a legal input renders with nothing on stderr (no Python warning, no traceback).
+Each in a child process (forked from the test's, stdout and stderr read from its file descriptors, Python's
+warnings shown as a fresh interpreter shows them), so that stderr is what a user sees: a refusal is one line
+naming the file and the place, a legal input renders with nothing on stderr (no Python warning, no traceback).
 """
 
 from __future__ import annotations
@@ -12,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests.helpers import run_module, write_scene
+from tests.helpers import run_forked, write_scene
 
 TRIANGLE = [[0, 0], [1, 0], [0, 1]]
 
@@ -27,7 +28,7 @@ def _refused(tmp_path: Path, scene: Path, *words: str) -> str:
     """Run ``check`` and ``render`` on ``scene``: both exit 2 with one line naming it, and write nothing."""
     before = sorted(p.name for p in tmp_path.iterdir())
     for command in (("check", scene), ("render", scene, "-o", tmp_path / "out.mp4", "-q")):
-        result = run_module(*command)
+        result = run_forked(*command)
         err = result.stderr
         assert result.returncode == 2, err
         assert err.startswith(f"tweenrender: error: {scene}: ") and err.count("\n") == 1, err
@@ -39,7 +40,7 @@ def _refused(tmp_path: Path, scene: Path, *words: str) -> str:
 
 def _renders_quietly(tmp_path: Path, *inputs: Path, method: str | None = None) -> None:
     flags = ("--method", method) if method else ()
-    result = run_module("render", *inputs, *flags, "-o", tmp_path / "frames", "-q")
+    result = run_forked("render", *inputs, *flags, "-o", tmp_path / "frames", "-q")
     assert result.returncode == 0 and result.stderr == "", result.stderr
     assert sorted((tmp_path / "frames").glob("frame_*.png"))
 
@@ -75,7 +76,7 @@ def test_a_tiny_triangle_shrinking_to_a_point_renders_quietly(tmp_path: Path, si
     point = [size / 3, size / 3]
     scene = write_scene(tmp_path, _two_keys([[0, 0], [size, 0], [0, size]], [point] * 3))
     _renders_quietly(tmp_path, scene, method=method)
-    stats = run_module("stats", scene, "--json")
+    stats = run_forked("stats", scene, "--json")
     assert stats.returncode == 0 and stats.stderr == "", stats.stderr
 
 
@@ -88,7 +89,7 @@ def test_a_subnormal_viewbox_scaled_to_a_size_is_refused(tmp_path: Path) -> None
     a = write_scene(tmp_path, _svg("0 0 1e-320 1e-320", 'width="100" height="100"', "1e-320"), "a.svg")
     b = write_scene(tmp_path, _svg("0 0 1e-320 1e-320", 'width="100" height="100"', "5e-321"), "b.svg")
     for command in (("check", a, b), ("render", a, b, "-o", tmp_path / "out.mp4", "-q")):
-        result = run_module(*command)
+        result = run_forked(*command)
         assert result.returncode == 2, result.stderr
         assert result.stderr.startswith(f"tweenrender: error: {a}: ") and result.stderr.count("\n") == 1
         assert "viewBox" in result.stderr and "Warning" not in result.stderr
@@ -121,7 +122,7 @@ def test_a_gradient_of_100000_stops_is_refused_naming_the_limit(tmp_path: Path) 
     a = write_scene(tmp_path, _gradient_svg(100_000, 50), "a.svg")
     b = write_scene(tmp_path, _gradient_svg(3, 80), "b.svg")
     for command in (("check", a, b), ("render", a, b, "-o", tmp_path / "out.mp4", "-q")):
-        result = run_module(*command)
+        result = run_forked(*command)
         assert result.returncode == 2, result.stderr
         assert result.stderr.startswith(f"tweenrender: error: {a}: ") and result.stderr.count("\n") == 1
         assert "'many'" in result.stderr and "at most 1000 stops" in result.stderr and "100000" in result.stderr
@@ -151,12 +152,12 @@ def test_a_lottie_gradient_of_100000_stops_is_refused_naming_the_limit(tmp_path:
 def test_a_sheet_larger_than_its_area_limit_is_refused_before_drawing(tmp_path: Path) -> None:
     scene = write_scene(tmp_path, _two_keys(TRIANGLE, [[0, 0], [2, 0], [0, 1]]))
     target = tmp_path / "sheet.png"
-    result = run_module("sheet", scene, "--size", "16384x16384", "--count", "200", "-o", target)
+    result = run_forked("sheet", scene, "--size", "16384x16384", "--count", "200", "-o", target)
     assert result.returncode == 2 and result.stderr.count("\n") == 1, result.stderr
     assert result.stderr.startswith("tweenrender: error: --size: ") and "16777216 pixels" in result.stderr
     assert "268435456" in result.stderr and not target.exists()
     # the limit is an area: a long thin sheet within it is drawn
-    result = run_module("sheet", scene, "--size", "16384x600", "--count", "3", "-o", target)
+    result = run_forked("sheet", scene, "--size", "16384x600", "--count", "3", "-o", target)
     assert result.returncode == 0, result.stderr
     import imageio.v3 as iio
 
@@ -179,7 +180,7 @@ def test_the_q_curves_of_a_tiny_triangle_shrinking_to_a_point_draw_quietly(tmp_p
     scene = write_scene(tmp_path, _two_keys([[0, 0], [size, 0], [0, size]], [point] * 3))
     for command in (("qcurves", "-o", tmp_path / "q.png"), ("correspond", "-o", tmp_path / "c.png"),
                     ("sheet", "-o", tmp_path / "s.png")):
-        done = run_module(command[0], scene, *command[1:])
+        done = run_forked(command[0], scene, *command[1:])
         assert done.returncode == 0 and done.stderr == "", (command[0], done.stderr)
 
 
@@ -194,7 +195,7 @@ def test_a_key_of_more_contours_than_the_limit_is_refused_naming_it(tmp_path: Pa
     a = write_scene(tmp_path, _squares_svg(5_001), "a.svg")
     b = write_scene(tmp_path, _squares_svg(3), "b.svg")
     for command in (("check", a, b), ("render", a, b, "-o", tmp_path / "out.mp4", "-q")):
-        result = run_module(*command)
+        result = run_forked(*command)
         assert result.returncode == 2, result.stderr
         assert result.stderr.startswith(f"tweenrender: error: {a}: ") and result.stderr.count("\n") == 1, result.stderr
         assert "at most 5000 contours" in result.stderr and "5001" in result.stderr, result.stderr

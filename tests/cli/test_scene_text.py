@@ -1,20 +1,19 @@
 """Text from a scene (names, titles, file names) never breaks a command or reaches the terminal raw.
 
-Run as real processes and read as bytes: a lone surrogate cannot be encoded, and a
-newline, carriage return or escape sequence in a name must arrive escaped.
+Each run in a child process (forked from the test's, its streams writing to pipes as a terminal's
+output redirected would: UTF-8, strict on stdout) and read back as strict UTF-8: a lone surrogate
+cannot be encoded, and a newline, carriage return or escape sequence in a name must arrive escaped.
 """
 
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 import unicodedata
 from pathlib import Path
 
 import pytest
 
-from tests.helpers import SQUARE, write_scene
+from tests.helpers import SQUARE, run_forked, write_scene
 
 NASTY = "a\ud800b\x1b[2J\rX\nY\x9b31m\u2028Z"
 """A lone surrogate, a clear-screen escape, a carriage return, a newline, a C1 CSI, a line separator."""
@@ -32,10 +31,9 @@ def _scene(folder: Path, title: str = "T\ud800\x1b]0;owned\x07\nline two", name:
 
 
 def _run(*args: object, cwd: Path) -> tuple[int, str, str]:
-    done = subprocess.run([sys.executable, "-m", "tweenrender", *map(str, args)], capture_output=True, cwd=cwd,
-                          timeout=300)
-    # strict UTF-8: a surrogate written with surrogateescape or the like would fail here
-    return done.returncode, done.stdout.decode("utf-8"), done.stderr.decode("utf-8")
+    # read back as strict UTF-8: a surrogate written with surrogateescape or the like would fail there
+    done = run_forked(*map(str, args), cwd=cwd, deadline=300)
+    return done.returncode, done.stdout, done.stderr
 
 
 def _clean(text: str) -> bool:

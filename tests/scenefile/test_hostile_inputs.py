@@ -2,30 +2,29 @@
 or refused in one line and selector matching is counted, counts of keys and shapes are refused before
 work starts, every number of a transform is checked.
 
-Each case runs the real command line in a child process with a deadline far above what a correct run
-needs; the assertions are on what it printed, never on how long it took.
+Each case runs the command line in a child process (forked from the test's, Python's warnings raised as
+errors) with a deadline far above what a correct run needs; the assertions are on what it printed, never on
+how long it took.
 """
 
 from __future__ import annotations
 
 import os
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-from tests.helpers import SQUARE, write_scene
+from tests.helpers import SQUARE, run_forked, write_scene
 
 SVG = ('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">'
        '<path id="a" d="M1 1 L9 1 L9 9 Z"{extra}/></svg>')
 
 
 def _run(*args: object, cwd: Path) -> subprocess.CompletedProcess[str]:
-    """The command in a child; a hang fails the test (the deadline is minutes above a correct run)."""
+    """The command in a forked child; a hang fails the test (the deadline is minutes above a correct run)."""
     try:
-        return subprocess.run([sys.executable, "-W", "error", "-m", "tweenrender", *map(str, args)],
-                              capture_output=True, text=True, cwd=cwd, timeout=120)
+        return run_forked(*map(str, args), cwd=cwd, deadline=120, warnings_as_errors=True)
     except subprocess.TimeoutExpired:
         pytest.fail("the command did not return: it hung on its input")
 

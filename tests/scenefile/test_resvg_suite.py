@@ -32,6 +32,8 @@ def _suite_fonts(monkeypatch: pytest.MonkeyPatch) -> None:
 
 def _over_white(rgba: np.ndarray) -> np.ndarray:
     """Straight RGBA uint8 ``(H, W, 4)`` over white: RGB floats ``(H, W, 3)`` in [0, 255]."""
+    if np.all(rgba[..., 3] == 255):
+        return rgba[..., :3].astype(float)  # opaque: the colours themselves
     alpha = rgba[..., 3:4].astype(float) / 255.0
     return rgba[..., :3].astype(float) * alpha + 255.0 * (1.0 - alpha)
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import functools
 import importlib
 import pkgutil
 import subprocess
@@ -41,8 +42,10 @@ def modules() -> list[str]:
     return [m.name for m in pkgutil.walk_packages(tweenrender.__path__, "tweenrender.")]
 
 
-def imports_of(path: Path, name: str) -> set[str]:
-    """Every module ``path`` (the module ``name``) imports, at any depth of its code, resolved."""
+@functools.lru_cache(maxsize=None)
+def imports_of(path: Path, name: str) -> frozenset[str]:
+    """Every module ``path`` (the module ``name``) imports, at any depth of its code, resolved (each file parsed
+    once a run: the tests below walk the whole package, some once per library)."""
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
     found: set[str] = set()
     for node in ast.walk(ast.parse(path.read_text())):
@@ -56,7 +59,7 @@ def imports_of(path: Path, name: str) -> set[str]:
                 base = ".".join(parts + ([base] if base else []))
             found.add(base)
             found.update(f"{base}.{alias.name}" for alias in node.names)
-    return found
+    return frozenset(found)
 
 
 def graph() -> dict[str, set[str]]:

@@ -114,24 +114,16 @@ class _Paths:
     def _pace(self) -> Array:
         """The share of the segment's time at which the solve's path reaches each of ``_PACE (P,)``: ``(P,)``
         from 0 to 1, each stretch between two samples taking the share of the contours' swept area
-        (:meth:`_swept`, each frame sized to its area and placed where it is drawn, :meth:`_placed`) it holds, so
-        each frame changes the picture alike (``_EVEN`` of it by ``s`` itself). Keys that are one shape turned
-        (φ ≠ 0) keep their turn and their move even in time, as a rigid motion does, and pace the shape alone."""
+        (:meth:`_swept`, each frame sized to its area) it holds, so each frame changes the picture alike
+        (``_EVEN`` of it by ``s`` itself)."""
         if self._progress is None:
             frames = [self._sized(self._frame(s), s) for s in _PACE.tolist()]
-            if self.phi == 0.0:
-                frames = [self._placed(x, s) for x, s in zip(frames, _PACE.tolist())]
             steps = np.array([self._swept(a, b) for a, b in zip(frames, frames[1:])])
             total = float(steps.sum())
             even = np.diff(_PACE)
             spans = (1.0 - _EVEN) * steps / total + _EVEN * even if total > 0.0 and np.isfinite(total) else even
             self._progress = np.concatenate([[0.0], np.cumsum(spans)]) / float(spans.sum())
         return self._progress
-
-    def _placed(self, x: Array, s: float) -> Array:
-        """The centred frame ``x (N, 2)`` turned by ``s·φ`` about its vertex mean, put on the straight path of the
-        keys' vertex means at ``s``: the path's state at ``s`` as drawn (at unit size)."""
-        return (1.0 - s) * self.c0 + s * self.c1 + rotate(x, s * self.phi)
 
     def _swept(self, a: Array, b: Array) -> float:
         """The area the contours' edges sweep from ``a (N, 2)`` to ``b (N, 2)``, each edge the parallelogram of
@@ -170,11 +162,11 @@ class _Paths:
 
     def __call__(self, t: Array, paced: bool = True) -> Array:
         out = np.empty((len(t), self.n, 2))
-        for f, (raw, s) in enumerate(zip(np.asarray(t, dtype=np.float64).tolist(), np.clip(t, 0.0, 1.0).tolist())):
+        for f, s in enumerate(np.clip(t, 0.0, 1.0).tolist()):
             at = self._paced(s) if paced else s
-            # past a key (an easing that overshoots) the key's shape moves on along its straight path
-            out[f] = self._placed(self._sized(self._frame(at), at), raw if self.phi != 0.0 or raw != s else at)
-        return self.scale * out
+            out[f] = self._sized(self._frame(at), at)
+        center = (1.0 - t)[:, None] * self.c0 + t[:, None] * self.c1
+        return self.scale * (center[:, None, :] + rotate(out, (t * self.phi)[:, None]))
 
 
 def _rigid_turn(a: Array, b: Array) -> float:

@@ -93,7 +93,8 @@ def run_forked(*args: str, cwd: Path | None = None, deadline: float = 120.0,
     """:func:`run_main` in a forked child that is killed at ``deadline`` seconds (raising
     ``subprocess.TimeoutExpired``): for inputs that must not hang the command, each a process of its own but
     without the start of a fresh interpreter (Python, numpy and skia are already loaded here). A child that
-    dies of an exception reports it as exit code 1 with its traceback on stderr."""
+    dies of an exception reports it as exit code 1 with its traceback on stderr; one killed by a signal, as
+    the signal's negative number."""
     import json
     import selectors
     import time
@@ -125,7 +126,11 @@ def run_forked(*args: str, cwd: Path | None = None, deadline: float = 120.0,
             if not chunk:
                 break
             data += chunk
-    os.waitpid(child, 0)
+    _, status = os.waitpid(child, 0)
+    if not data:  # it died before it could report: its own end, as a process's would read
+        code = -os.WTERMSIG(status) if os.WIFSIGNALED(status) else os.WEXITSTATUS(status)
+        return subprocess.CompletedProcess(["tweenrender", *map(str, args)], code, "",
+                                           f"the forked child ended without a report (status {code})")
     code, out, err = json.loads(bytes(data))
     return subprocess.CompletedProcess(["tweenrender", *map(str, args)], code, out, err)
 

@@ -67,8 +67,10 @@ def measures(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> 
     count = np.count_nonzero(union)
     if count == 0:
         return 1.0, 0.0
-    difference = np.abs(a[union][:, :3].astype(np.int16) - b[union][:, :3].astype(np.int16))
-    return np.count_nonzero(ink_a & ink_b) / count, float(difference.mean() / 255.0)
+    # channel by channel, summed as integers: the same mean as over the (count, 3) differences at once
+    total = sum(int(np.abs(a[..., c][union].astype(np.int16) - b[..., c][union].astype(np.int16)).sum())
+                for c in range(3))
+    return np.count_nonzero(ink_a & ink_b) / count, float(total / (3 * count) / 255.0)
 
 
 def coverage_iou(a: np.ndarray, b: np.ndarray, background: tuple[int, int, int]) -> float:

@@ -95,7 +95,20 @@ def run_forked(*args: str, cwd: Path | None = None, deadline: float = 120.0,
     without the start of a fresh interpreter (Python, numpy and skia are already loaded here). A child that
     dies of an exception reports it as exit code 1 with its traceback on stderr; one killed by a signal, as
     the signal's negative number."""
-    import json
+    command = ["tweenrender", *map(str, args)]
+    kind, value = in_child(lambda: run_main(*args, cwd=cwd, warnings_as_errors=warnings_as_errors), command, deadline)
+    if kind == "done":
+        return value
+    if kind == "raised":
+        return subprocess.CompletedProcess(command, 1, "", value[1])
+    return subprocess.CompletedProcess(command, value, "", f"the forked child ended without a report (status {value})")
+
+
+def in_child(work: Callable[[], Any], command: list[str], deadline: float | None = None) -> tuple[str, Any]:
+    """``work()`` run in a child forked from this process, its picklable outcome sent back through a pipe:
+    ``("done", result)``, ``("raised", (one line, traceback))``, or ``("died", status)`` where the child ended
+    before it reported (a signal as its negative number). Past ``deadline`` seconds the child is killed and
+    ``subprocess.TimeoutExpired`` (naming ``command``) raised."""
     import selectors
     import time
     import traceback
@@ -105,34 +118,31 @@ def run_forked(*args: str, cwd: Path | None = None, deadline: float = 120.0,
     if child == 0:  # pragma: no cover - runs in the child
         os.close(read)
         try:
-            done = run_main(*args, cwd=cwd, warnings_as_errors=warnings_as_errors)
-            outcome = [done.returncode, done.stdout, done.stderr]
-        except BaseException:  # noqa: BLE001 - reported to the parent as a crash would be
-            outcome = [1, "", traceback.format_exc()]
+            outcome: tuple[str, Any] = ("done", work())
+        except BaseException as error:  # noqa: BLE001 - reported to the parent as a crash would be
+            outcome = ("raised", (f"{type(error).__name__}: {error}", traceback.format_exc()))
         with os.fdopen(write, "wb") as pipe:
-            pipe.write(json.dumps(outcome).encode())
+            pickle.dump(outcome, pipe)
         os._exit(0)
     os.close(write)
-    data, end = bytearray(), time.monotonic() + deadline
+    data = bytearray()
+    end = None if deadline is None else time.monotonic() + deadline
     with os.fdopen(read, "rb", buffering=0) as pipe, selectors.DefaultSelector() as waiting:
         waiting.register(pipe, selectors.EVENT_READ)
         while True:
-            left = end - time.monotonic()
-            if left <= 0 or not waiting.select(left):
+            left = None if end is None else end - time.monotonic()
+            if left is not None and (left <= 0 or not waiting.select(left)):
                 os.kill(child, signal.SIGKILL)
                 os.waitpid(child, 0)
-                raise subprocess.TimeoutExpired(["tweenrender", *map(str, args)], deadline)
+                raise subprocess.TimeoutExpired(command, deadline)
             chunk = pipe.read(1 << 16)
             if not chunk:
                 break
             data += chunk
     _, status = os.waitpid(child, 0)
-    if not data:  # it died before it could report: its own end, as a process's would read
-        code = -os.WTERMSIG(status) if os.WIFSIGNALED(status) else os.WEXITSTATUS(status)
-        return subprocess.CompletedProcess(["tweenrender", *map(str, args)], code, "",
-                                           f"the forked child ended without a report (status {code})")
-    code, out, err = json.loads(bytes(data))
-    return subprocess.CompletedProcess(["tweenrender", *map(str, args)], code, out, err)
+    if not data:
+        return "died", -os.WTERMSIG(status) if os.WIFSIGNALED(status) else os.WEXITSTATUS(status)
+    return pickle.loads(bytes(data))
 
 
 def decode(path: Path) -> tuple[dict, list[np.ndarray]]:
@@ -256,37 +266,25 @@ def unprivileged(function: Callable[..., Any], *args: Any) -> Any:
 
     import tweenrender
 
-    read, write = os.pipe()
-    child = os.fork()
-    if child == 0:  # pragma: no cover - runs in the child
-        os.close(read)
-        try:
-            for module in pkgutil.walk_packages(tweenrender.__path__, "tweenrender."):
-                if not module.name.endswith("__main__"):
-                    importlib.import_module(module.name)
-            if os.geteuid() == 0:
-                import pwd
+    def work() -> Any:
+        for module in pkgutil.walk_packages(tweenrender.__path__, "tweenrender."):
+            if not module.name.endswith("__main__"):
+                importlib.import_module(module.name)
+        if os.geteuid() == 0:
+            import pwd
 
-                try:
-                    user = pwd.getpwnam("nobody")
-                    uid, gid = user.pw_uid, user.pw_gid
-                except KeyError:
-                    uid = gid = 65534
-                os.setgroups([])
-                os.setgid(gid)
-                os.setuid(uid)
-            outcome: tuple[bool, Any] = (True, function(*args))
-        except BaseException as error:  # noqa: BLE001 - reported to the parent
-            outcome = (False, f"{type(error).__name__}: {error}")
-        with os.fdopen(write, "wb") as pipe:
-            pickle.dump(outcome, pipe)
-        os._exit(0)
-    os.close(write)
-    with os.fdopen(read, "rb") as pipe:
-        data = pipe.read()
-    os.waitpid(child, 0)
-    done, value = pickle.loads(data)
-    assert done, f"the unprivileged child failed: {value}"
+            try:
+                user = pwd.getpwnam("nobody")
+                uid, gid = user.pw_uid, user.pw_gid
+            except KeyError:
+                uid = gid = 65534
+            os.setgroups([])
+            os.setgid(gid)
+            os.setuid(uid)
+        return function(*args)
+
+    kind, value = in_child(work, [getattr(function, "__name__", "function")])
+    assert kind == "done", f"the unprivileged child failed: {value[0] if kind == 'raised' else value}"
     return value
 
 

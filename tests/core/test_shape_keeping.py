@@ -214,3 +214,39 @@ def test_the_descents_of_one_mesh_order_its_normal_matrix_once(monkeypatch) -> N
     descended = [s for s in (0.3, 0.5, 0.7) if not np.all(solve(s) == solve.convex(s))]
     assert descended and solve._sides, "the pair no longer takes the descents"
     assert len(made) == 1, len(made)
+
+
+# injective in-betweens that blend the grid points' kept vertices: alpha-a → alpha-b takes the descents at
+# most t, check-circle → star the direct fits
+CORNERED = [("mdi/alpha-a", "mdi/alpha-b"), ("octicons/check-circle-24", "heroicons/check-circle")]
+
+
+def _turns(scene: tr.Scene, frames: int) -> tuple[np.ndarray, np.ndarray]:
+    """The angle (radians) each vertex's path turns through between two frame steps, ``frames`` steps over the
+    segment, 90th percentile over the vertices of each frame, with the frames' t: two ``(frames - 3,)``.
+    Vertices barely moving (under 1/1000 of the drawing's size a step) are left out: their direction is
+    rounding."""
+    t = np.arange(1, frames) / frames
+    paths = np.stack([np.concatenate([c.points for c in tr.contours(scene, float(s), method="injective",
+                                                                   points=True)]) for s in t])  # (T, V, 2)
+    steps = np.diff(paths, axis=0)  # (T - 1, V, 2)
+    size = float(np.ptp(paths.reshape(-1, 2), axis=0).max())
+    a, b = steps[:-1], steps[1:]
+    moving = (np.linalg.norm(a, axis=-1) > 1e-3 * size / frames) & (np.linalg.norm(b, axis=-1) > 1e-3 * size / frames)
+    turn = np.abs(np.arctan2(a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0], np.sum(a * b, axis=-1)))
+    return np.array([np.percentile(row[keep], 90) if keep.any() else 0.0 for row, keep in zip(turn, moving)]), t[1:-1]
+
+
+@pytest.mark.parametrize("a, b", CORNERED, ids=[f"{a}->{b}" for a, b in CORNERED])
+def test_injective_vertex_paths_turn_no_corners(a: str, b: str) -> None:
+    """A vertex's path is smooth: sampled twice as finely, it turns about half as sharply between two steps
+    about each frame (a corner turns through its whole angle however finely it is sampled). Checked from the
+    second sixteenth of the segment to the fifteenth: next to a key the chain of grid points from the other
+    key comes in, a bend sharper than a sixteenth's samples resolve."""
+    scene = tr.load_scene([ICONS / f"{a}.svg", ICONS / f"{b}.svg"])
+    coarse, at = _turns(scene, 96)
+    fine, _ = _turns(scene, 192)
+    # the fine frames about each coarse one: coarse frame i is at t = (i + 2) / 96 = (2i + 4) / 192, fine frame 2i + 2
+    near = np.max(np.stack([fine[1::2][:len(coarse)], fine[2::2][:len(coarse)], fine[3::2][:len(coarse)]]), axis=0)
+    inner = (at > 1 / 16) & (at < 15 / 16)
+    assert near[inner].max() <= 0.7 * coarse[inner].max(), (coarse[inner].max(), near[inner].max())

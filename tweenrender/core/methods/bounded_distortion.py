@@ -20,16 +20,20 @@ after Alexa, Cohen-Or and Levin (2000) and Chen, Weber, Keren and Ben-Chen (2013
    mesh takes fewer rounds a grid point, and one too large for a round each (above some 20 000
    triangles) the convex-combination solve as it is;
 4. an in-between is drawn from the mean-value weights (:mod:`.tutte`) of the grid points about it, each
-   chain's blended by where ``s`` lies between them, the chain from key 0 weighing ``1 − u`` and the one
-   from key 1 ``u = 3s² − 2s³``: a convex combination of valid triangulations' weights, so valid (Floater
-   and Gotsman 1999), continuous in ``s``, and on the keys at the ends. Where a chain could not keep up
+   chain's blended by the quadratic B-spline shares of the grid points at ``s`` (:func:`_grid_basis`: at
+   most three nonzero, 3/4 for a grid point at its own ``s``), the chain from key 0 weighing ``1 − u`` and
+   the one from key 1 ``u = 3s² − 2s³``: a convex combination of valid triangulations' weights, so valid
+   (Floater and Gotsman 1999), on the keys at the ends, and once differentiable in ``s``. Blended by where
+   ``s`` lies between two grid points, as before, every vertex's path turned a corner at each grid point
+   (``tests/core/test_shape_keeping.py``). Where a chain could not keep up
    with its targets (triangles that must grow a thousandfold, a slit's collapsed ones), the two chains
    end far apart; picking the nearer chain at each grid point, as this step did before, then jumped from
    one to the other between two frames (often at the last frame step: a pop), where the weights now move
    from one to the other over the whole segment. ``u`` is flat at the keys, so a far chain's share grows
    slowly out of each key (blended by ``s`` itself, a share of 1/24 of a far chain moved the frame next
-   to a key by 3 × the clip's median step). Where the fits of both grid points about ``s`` keep every
-   triangle's orientation, the fit of ``s``'s own targets is drawn where it does too.
+   to a key by 3 × the clip's median step). Where the fit of every grid point's targets keeps every
+   triangle's orientation, the fit of ``s``'s own targets is drawn where it does too (drawing some
+   in-betweens from fits and the rest from blended grid points would jump where the two meet).
 
 It depends on ``s`` alone, so a render's blocks of frames and a report's measures agree.
 
@@ -56,7 +60,20 @@ Array = NDArray[np.float64]
 _AIR = 1e-2  # weight of a triangle between the contours, against one inside a filled region
 _GRID = 16  # grid points between the keys whose kept vertices the in-betweens between them blend
 _LINK = 15  # rounds of the descent toward a grid point's targets, at most
+_KNOTS = np.concatenate([[0.0] * 3, (np.arange(1, _GRID - 1) + 0.5) / _GRID, [1.0] * 3])
+"""The knots of the grid points' quadratic B-spline basis (:func:`_grid_basis`): ``_GRID + 1`` control points, the
+knots between grid points, so each grid point but the two next to the keys centres its own basis function."""
 _WORK = 600_000  # triangle-rounds of descent a mesh's grid points may take in all (fewer rounds on larger meshes)
+
+
+def _grid_basis(s: float) -> Array:
+    """Each grid point's share ``(_GRID + 1,)`` of the in-between at ``s`` in [0, 1]: the clamped quadratic
+    B-spline basis (:data:`_KNOTS`), non-negative and summing to 1 (so a convex combination), at most three
+    nonzero, continuously differentiable in ``s`` (no corner where a grid point's share peaks), and the keys
+    alone at the ends."""
+    from scipy.interpolate import BSpline
+
+    return np.asarray(BSpline.design_matrix(np.array([s]), _KNOTS, 2).toarray()[0])
 
 
 def material_triangles(mesh: CompatibleMesh, cuts: list[int], closed: list[bool]) -> NDArray[np.bool_]:
@@ -144,19 +161,25 @@ class ShapeKeepingSolve:
             return np.array(self.mesh.p0)
         if s >= 1.0:
             return np.array(self.mesh.p1)
-        k = min(int(s * _GRID), _GRID - 1)
-        share = s * _GRID - k
-        if self._fit(k) is not None and self._fit(k + 1) is not None:
+        if self._fits_hold():
             x = self._solve(self.targets(s), self.convex(s))
             if self._valid(x):
                 return x
         if not self.rounds:
             return self.convex(s)  # a mesh too large for the descent's work bound
+        basis = _grid_basis(s)
         weights = np.zeros(len(self.embedding.rows))
         u = s * s * (3.0 - 2.0 * s)  # the chain from key 1's share: flat at both keys
         for step, part in ((-1, 1.0 - u), (1, u)):
-            weights += part * ((1.0 - share) * self._weights(k, step) + share * self._weights(k + 1, step))
+            for k in np.flatnonzero(basis).tolist():
+                weights += part * float(basis[k]) * self._weights(k, step)
         return self.embedding(weights)
+
+    def _fits_hold(self) -> bool:
+        """Whether the fit of every grid point's targets turns no triangle over (then each in-between is its
+        own fit where that does too: drawing some from fits and the rest from blended grid points would
+        jump where the two meet)."""
+        return all(self._fit(k) is not None for k in range(1, _GRID))
 
     def _weights(self, k: int, step: int) -> Array:
         """The mean-value weights ``(E,)`` of grid point ``k`` as the chain ``step`` reaches it (:meth:`_side`)."""

@@ -24,7 +24,8 @@ After Gotsman & Surazhsky, "Guaranteed intersection-free polygon morphing"
    to the keys' interpolated area, ``(1-s)·A0 + s·A1`` (closed contours' signed areas summed):
    a similarity keeps them simple;
 6. the path of steps 4–5 is paced: the frame at ``t`` is the path at the ``s`` that has come the
-   share ``t`` of its way, measured by the area the contours sweep (:meth:`_Paths._pace`): the solve
+   share ``t`` of its way, measured by the area the contours sweep (:meth:`_Paths._pace`), ``s`` by ``t``
+   a monotone cubic through the samples (so the speed changes without a jolt at each): the solve
    alone moves fastest out of the keys, a pop in the first and last frame steps;
 7. the rigid motion is put back: the shape turns by ``t·φ`` about its vertex
    mean, which moves on a straight line.
@@ -99,6 +100,7 @@ class _Paths:
         self.keeping = ShapeKeepingSolve(mesh, material_triangles(mesh, self.cuts, self.closed))
         self._solved: dict[float, Array] = {}  # each t's frame before its turn, by t: the same for any other t
         self._progress: Array | None = None
+        self._timing: Callable[[float], Array] | None = None  # s by t, through :meth:`_pace`'s samples
 
     def _frame(self, s: float) -> Array:
         """The centred, unturned, unsized frame ``(N, 2)`` at ``s`` in [0, 1] (it depends on ``s`` alone, so it
@@ -143,7 +145,11 @@ class _Paths:
         """The ``s`` at which the solve's path has come the share ``t`` of its way (:meth:`_pace`)."""
         if t <= 0.0 or t >= 1.0:
             return t
-        return float(np.interp(t, self._pace(), _PACE))
+        if self._timing is None:  # monotone and once differentiable: the frames' speed changes without a jolt
+            from scipy.interpolate import PchipInterpolator
+
+            self._timing = PchipInterpolator(self._pace(), _PACE)
+        return float(min(max(float(self._timing(t)), 0.0), 1.0))
 
     def _area(self, points: Array) -> float:
         """The area the closed contours of ``points (N, 2)`` enclose, holes taken away (each contour's area

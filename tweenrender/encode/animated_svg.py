@@ -22,7 +22,7 @@ import numpy as np
 from .atomic import replacing
 from .smil import animate, clip_timing, hex_colour, number, path_data, straight_spans
 from .svg_paint import clip_path_elements, gradient_element
-from .vector_data import Array, VectorClip, VectorRun
+from .vector_data import PIXEL_DIGITS, SCALE_DIGITS, Array, ContourMove, VectorClip, VectorRun
 
 __all__ = ["svg_document", "write_animated_svg"]
 
@@ -71,7 +71,8 @@ def _group_id(run: VectorRun) -> str:
 
 
 def _run(run: VectorRun, ident: str, total: int, timing: str) -> list[str]:
-    """The run as a group; ``ident`` names its gradient (``ident-fill``) and clip paths (``ident-clip-0``, …)."""
+    """The run as a group; ``ident`` names its gradient (``ident-fill``) and clip paths (``ident-clip-0``, …).
+    Its contours are one path, or one path per piece (:func:`_pieces`) where that is shorter."""
     lines = [f"<g id={quoteattr(_group_id(run))}"
              + (' visibility="hidden"' if run.first > 0 else "") + _static_opacity(run) + ">"]
     if run.first > 0 or run.stop < total:
@@ -91,8 +92,10 @@ def _run(run: VectorRun, ident: str, total: int, timing: str) -> list[str]:
     fill = f"url(#{ident}-fill)" if gradient else None
     groups = run.stroke_groups() if run.stroke is not None else []
     if len(groups) <= 1:
-        lines += _path(run, list(range(len(run.paths))), True, groups[0][1] if groups else None, total, timing,
-                       fill)
+        widths = groups[0][1] if groups else None
+        whole = _path(run, list(range(len(run.paths))), True, widths, total, timing, fill)
+        apart = _pieces(run, widths, total, timing, fill)
+        lines += whole if apart is None or _length(apart) >= _length(whole) else apart
     else:  # contours growing from a point stroke with their share of the width: the fill, then each stroke
         lines += _path(run, list(range(len(run.paths))), True, None, total, timing, fill)
         for members, widths in groups:
@@ -105,11 +108,58 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
           timing: str, gradient: str | None = None) -> list[str]:
     """One ``<path>`` of the contours ``members``: filled (or not; by the paint server ``gradient`` if given),
     stroked ``widths (P,)`` wide (``None``: not)."""
-    shapes = [[run.paths[i][k] for i in members] for k in range(len(run.path_frames))]
-    lines = [straight_spans(run.paths[i]) if run.paths[i].ndim == 4 else np.zeros(0, dtype=bool) for i in members]
-    d_values = [path_data(s, tuple(run.closed[i] for i in members), lines) for s in shapes]
-    attributes = [f'd="{d_values[0]}"', f'fill-rule="{run.fill_rule}"']
-    inner = [animate("d", run.path_frames, d_values, total, timing, run.eases)]
+    shape, moves = _geometry(run.path_frames, [run.paths[i] for i in members], tuple(run.closed[i] for i in members),
+                             run.eases, total, timing)
+    paint, changes = _paint(run, members, filled, widths, total, timing, gradient)
+    return _element("path", shape + paint, moves + changes)
+
+
+def _pieces(run: VectorRun, widths: Array | None, total: int, timing: str, gradient: str | None) -> list[str] | None:
+    """The run's contours as one ``<path>`` per piece (:attr:`VectorRun.pieces`) in a group that holds the paint:
+    a piece of one contour moves by its own keyframes (:meth:`VectorRun.keys_of`), or as a still path under a
+    keyed translation and scale where it only grows, shrinks and moves (:meth:`VectorRun.move_of`), a piece of
+    several by the run's. None where the run has no two pieces."""
+    pieces = run.pieces
+    if pieces is None or len(pieces) < 2:
+        return None
+    paint, changes = _paint(run, list(range(len(run.paths))), True, widths, total, timing, gradient)
+    lines = ["<g " + " ".join(paint) + ">", *(line for line in changes if line)]  # the paths inherit the paint
+    for members in pieces:
+        closed = tuple(run.closed[i] for i in members)
+        if len(members) > 1:
+            shape, moves = _geometry(run.path_frames, [run.paths[i] for i in members], closed, run.eases, total, timing)
+        else:
+            frames, path, eases = run.keys_of(members[0])
+            shape, moves = _geometry(frames, [path], closed, eases, total, timing, run.move_of(members[0]))
+        lines += _element("path", shape, moves)
+    return [*lines, "</g>"]
+
+
+def _geometry(frames: tuple[int, ...], paths: list[Array], closed: tuple[bool, ...], eases: tuple,
+              total: int, timing: str, move: ContourMove | None = None) -> tuple[list[str], list[str]]:
+    """The ``d`` of the contours ``paths`` (keyed at clip ``frames`` through ``eases``, as :attr:`VectorRun.paths`)
+    and its animation; with a ``move``, the one still keyframe about the move's anchor and the ``transform`` that
+    places it (a translation to the centre, then the scale, keyed together)."""
+    if move is not None:
+        paths = [p - move.anchor for p in paths]
+    shapes = [[p[k] for p in paths] for k in range(len(frames))]
+    lines = [straight_spans(p) if p.ndim == 4 else np.zeros(0, dtype=bool) for p in paths]
+    d_values = [path_data(s, closed, lines) for s in shapes]
+    attributes, inner = [f'd="{d_values[0]}"'], [animate("d", frames, d_values, total, timing, eases)]
+    if move is not None:
+        centres = [f"{number(x, PIXEL_DIGITS)} {number(y, PIXEL_DIGITS)}" for x, y in move.centres.tolist()]
+        scales = [number(v, SCALE_DIGITS + 2) for v in move.scales.tolist()]
+        attributes.append(f'transform="translate({centres[0]}) scale({scales[0]})"')
+        inner += [animate("transform", move.frames, centres, total, timing, move.eases, transform="translate"),
+                  animate("transform", move.frames, scales, total, timing, move.eases, transform="scale",
+                          additive=True)]
+    return attributes, inner
+
+
+def _paint(run: VectorRun, members: list[int], filled: bool, widths: Array | None, total: int, timing: str,
+           gradient: str | None = None) -> tuple[list[str], list[str]]:
+    """The paint attributes of the contours ``members`` (as :func:`_path` draws them) and their animations."""
+    attributes, inner = [f'fill-rule="{run.fill_rule}"'], []
     if filled and run.rule_switch is not None:  # switched as the run's visibility is, a thousandth of a frame early
         at, rule = run.rule_switch
         inner.append(f'<animate attributeName="fill-rule" {timing} calcMode="discrete" '
@@ -139,10 +189,19 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
             attributes += [f'stroke-dasharray="{patterns[0]}"', f'stroke-dashoffset="{offsets[0]}"']
             inner += [animate("stroke-dasharray", run.paint_frames, patterns, total, timing),
                       animate("stroke-dashoffset", run.paint_frames, offsets, total, timing)]
+    return attributes, inner
+
+
+def _element(tag: str, attributes: list[str], inner: list[str]) -> list[str]:
+    """``<tag attributes…>`` holding the animations ``inner`` (those that are ``""`` left out), or empty."""
     inner = [line for line in inner if line]
     if not inner:
-        return ["<path " + " ".join(attributes) + "/>"]
-    return ["<path " + " ".join(attributes) + ">", *inner, "</path>"]
+        return [f"<{tag} " + " ".join(attributes) + "/>"]
+    return [f"<{tag} " + " ".join(attributes) + ">", *inner, f"</{tag}>"]
+
+
+def _length(lines: list[str]) -> int:
+    return sum(len(line) + 1 for line in lines)
 
 
 def _static_opacity(run: VectorRun) -> str:

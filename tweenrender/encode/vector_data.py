@@ -122,6 +122,9 @@ class VectorRun:
     placing its one still keyframe in :attr:`contour_keys` (a contour that only grows, shrinks and moves), or
     ``None`` (``None`` for all: no contour moves so). ``rule_switch``: the clip frame from which the fill rule
     is the one it names instead of ``fill_rule`` (a plain fill only; ``None``: ``fill_rule`` throughout).
+    ``pieces``: the contours grouped so that no contour of one group comes near, crosses or lies inside one of
+    another at any frame (:func:`..vector.pieces.apart_pieces`), so each group may be drawn as a path of its own,
+    keyed by its own keyframes (``None``: not looked for).
     """
 
     element: str
@@ -150,6 +153,7 @@ class VectorRun:
     dash: tuple[Array, ...] | None = None
     contour_moves: tuple[ContourMove | None, ...] | None = None
     rule_switch: tuple[int, str] | None = None
+    pieces: tuple[tuple[int, ...], ...] | None = None
 
     def move_of(self, index: int) -> ContourMove | None:
         """Contour ``index``'s place over time where its path (:meth:`keys_of`, then one still keyframe) only grows,

@@ -24,6 +24,7 @@ from numpy.typing import NDArray
 from .curves import Blend, RIDGE, STRAIGHT_RIDGE, distance_to_polyline, fit_curves, free_points, with_fixed_points
 from .dash_keys import contour_dashes, dash_rows
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
+from .pieces import apart_pieces
 from .runs import Span, runs_of, stacking_phases, stroked, style
 from .scaled_keys import scaled_contour
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
@@ -52,6 +53,10 @@ _SAME = 1e-6
 EXACT_SHARE = 0.95
 """The share of ``max_error`` the cubic fit of a contour that moves straight between two keys may take (its two
 keyframes play the fitted curves exactly, up to the files' rounding and the arithmetic's)."""
+
+APART = 1.0
+"""Pixels beyond the bound (and a stroke's reach) two contours stay apart at every frame to be drawn as paths of
+their own: the antialiasing of one never touches a pixel of the other."""
 
 _ON_FRAME = 1e-6  # a key time this close to a whole frame (in frames) is on it
 _ROUNDING = 0.5 * 10.0 ** -PIXEL_DIGITS * np.sqrt(2.0)
@@ -279,7 +284,18 @@ def _run(shape: Shape, shapes: list[ShapeAt], span: Span, viewport: Viewport,
                     contour_keys=contour_keys,
                     dash=None if dashes is None else tuple(d[pick] for d in dashes), rule_switch=span.switch)
     run = replace(run, gradient_paths=gradient_frame_paths(run, max_error, keyed_curves))
-    return _with_moves(run, samples, max_error)
+    return _with_pieces(_with_moves(run, samples, max_error), max_error)
+
+
+def _with_pieces(run: VectorRun, max_error: float) -> VectorRun:
+    """``run`` with its contours grouped into pieces apart by :data:`APART` pixels beyond the bound and the
+    stroke's reach at every frame (:func:`.pieces.apart_pieces`), where its contours have keyframes of their own
+    (a file that draws each piece as a path of its own keys it by them) and one dash pattern."""
+    if run.contour_keys is None or run.dash is not None or len(run.paths) < 2:
+        return run
+    reach = 0.0 if run.stroke is None else 0.5 * float(np.max(run.width, initial=0.0)) * max(run.miter_limit,
+                                                                                              np.sqrt(2.0))
+    return replace(run, pieces=apart_pieces(run.exact_contours(), max_error + APART + reach))
 
 
 def _with_moves(run: VectorRun, samples: list[Array], max_error: float) -> VectorRun:

@@ -1,0 +1,95 @@
+"""Contours that stay apart are drawn as paths of their own in the animated SVG: the pieces are checked against
+shapely's distances and containment on random moving polygons, and a real export is split where its contours come
+and go apart (Chromium plays it against the project's own frames in tests/encode/test_vector_players.py:
+mdi weather-night → bootstrap sun-fill)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+shapely = pytest.importorskip("shapely", reason="shapely (the test extra) measures the distances independently")
+from shapely.geometry import LinearRing, Polygon  # noqa: E402
+
+import tweenrender as tr  # noqa: E402
+from tests.helpers import DATA  # noqa: E402
+from tweenrender.encode.animated_svg import svg_document  # noqa: E402
+from tweenrender.pipeline.library import render_job  # noqa: E402
+from tweenrender.plan.options import RenderOptions  # noqa: E402
+from tweenrender.vector.export import vector_clip  # noqa: E402
+from tweenrender.vector.pieces import apart_pieces  # noqa: E402
+
+APART = 2.0
+
+
+def _moving_polygons(rng: np.random.Generator, count: int, frames: int) -> list[np.ndarray]:
+    """``count`` regular polygons, each moving and growing straight over ``frames``: ``(F, n, 2)`` each."""
+    out = []
+    for _ in range(count):
+        sides = int(rng.integers(3, 9))
+        angles = np.arange(sides) * 2 * np.pi / sides + rng.uniform(0, np.pi)
+        unit = np.stack([np.cos(angles), np.sin(angles)], axis=1)
+        start, end = rng.uniform(0, 200, 2), rng.uniform(0, 200, 2)
+        r0, r1 = rng.uniform(2, 40, 2)
+        s = np.linspace(0, 1, frames)[:, None, None]
+        out.append((1 - s) * start + s * end + ((1 - s) * r0 + s * r1) * unit[None])
+    return out
+
+
+def _meets(a: np.ndarray, b: np.ndarray, reach: float) -> bool:
+    """Whether two moving polygons come within ``reach`` or lie one inside the other at some frame (shapely)."""
+    for pa, pb in zip(a, b):
+        if LinearRing(pa).distance(LinearRing(pb)) <= reach or Polygon(pa).contains(Polygon(pb)) \
+                or Polygon(pb).contains(Polygon(pa)):
+            return True
+    return False
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_pieces_are_the_groups_of_contours_that_meet(seed: int) -> None:
+    """Two contours of different pieces are farther apart than ``apart`` at every frame and neither holds the
+    other; two of one piece are joined by a chain of contours that come within half a step more (the densified
+    edges' spacing) or hold one another at some frame."""
+    rng = np.random.default_rng(seed)
+    contours = _moving_polygons(rng, int(rng.integers(3, 9)), 6)
+    pieces = apart_pieces(contours, APART)
+    assert pieces is not None and sorted(i for p in pieces for i in p) == list(range(len(contours)))
+    piece_of = {i: k for k, p in enumerate(pieces) for i in p}
+    for i in range(len(contours)):
+        for j in range(i + 1, len(contours)):
+            if piece_of[i] != piece_of[j]:
+                assert not _meets(contours[i], contours[j], APART), (i, j)
+    linked = {(i, j) for i in range(len(contours)) for j in range(len(contours))
+              if i != j and _meets(contours[i], contours[j], 1.5 * APART + 1e-9)}
+    for members in pieces:
+        reached, todo = {members[0]}, [members[0]]
+        while todo:
+            i = todo.pop()
+            for j in members:
+                if j not in reached and (i, j) in linked:
+                    reached.add(j)
+                    todo.append(j)
+        assert reached == set(members), members
+
+
+def test_one_contour_and_non_finite_points() -> None:
+    square = np.array([[[0.0, 0.0], [1, 0], [1, 1], [0, 1]]])
+    assert apart_pieces([square], APART) == ((0,),)
+    assert apart_pieces([square, square + np.nan], APART) is None
+
+
+def test_a_morph_whose_pieces_come_and_go_apart_draws_each_as_a_path_of_its_own(tmp_path) -> None:
+    """The moon and stars of weather-night become the sun's disc and rays: rays that grow clear of everything are
+    paths of their own, each keyed by its own keyframes, and the file is shorter than one path keyed together."""
+    scene = tr.load_scene([DATA / "icons" / "mdi" / "weather-night.svg", DATA / "icons" / "bootstrap" / "sun-fill.svg"])
+    written = tr.write(scene, tmp_path / "night.svg")
+    text = written.read_text()
+    group = text[text.index("<g id="):text.rindex("</g>")]
+    assert len(re.findall(r"<path ", group)) >= 4
+    assert 'attributeName="transform"' in group  # a ray growing from a point: a still path, scaled
+    clip = vector_clip(render_job(scene, RenderOptions.create()))
+    together = replace(clip, runs=tuple(replace(run, pieces=None) for run in clip.runs))
+    assert len(svg_document(clip)) < len(svg_document(together))

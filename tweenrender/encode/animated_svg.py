@@ -118,15 +118,19 @@ def _pieces(run: VectorRun, widths: Array | None, total: int, timing: str, gradi
     """The run's contours as one ``<path>`` per piece (:attr:`VectorRun.pieces`) in a group that holds the paint:
     a piece of one contour moves by its own keyframes (:meth:`VectorRun.keys_of`), or as a still path under a
     keyed translation and scale where it only grows, shrinks and moves (:meth:`VectorRun.move_of`), a piece of
-    several by the run's. None where the run has no two pieces."""
+    several by its own (:attr:`VectorRun.piece_keys`). None where the run has no two pieces."""
     pieces = run.pieces
     if pieces is None or len(pieces) < 2:
         return None
     paint, changes = _paint(run, list(range(len(run.paths))), True, widths, total, timing, gradient)
     lines = ["<g " + " ".join(paint) + ">", *(line for line in changes if line)]  # the paths inherit the paint
-    for members in pieces:
+    for index, members in enumerate(pieces):
         closed = tuple(run.closed[i] for i in members)
-        if len(members) > 1:
+        own = None if run.piece_keys is None else run.piece_keys[index]
+        if own is not None:
+            frames, paths, eases = own
+            shape, moves = _geometry(frames, list(paths), closed, eases, total, timing)
+        elif len(members) > 1:
             shape, moves = _geometry(run.path_frames, [run.paths[i] for i in members], closed, run.eases, total, timing)
         else:
             frames, path, eases = run.keys_of(members[0])

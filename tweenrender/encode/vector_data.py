@@ -123,8 +123,10 @@ class VectorRun:
     ``None`` (``None`` for all: no contour moves so). ``rule_switch``: the clip frame from which the fill rule
     is the one it names instead of ``fill_rule`` (a plain fill only; ``None``: ``fill_rule`` throughout).
     ``pieces``: the contours grouped so that no contour of one group comes near, crosses or lies inside one of
-    another at any frame (:func:`..vector.pieces.apart_pieces`), so each group may be drawn as a path of its own,
-    keyed by its own keyframes (``None``: not looked for).
+    another at any frame (:func:`..vector.pieces.apart_pieces`), so each group may be drawn as a path of its own
+    (``None``: not looked for); ``piece_keys``, per piece, the keyframes of a piece of several contours, fitted
+    over them alone (``(frames, one path per member, eases)``), ``None`` for a piece of one (its own, with its
+    move: :meth:`keys_of`, :meth:`move_of`).
     """
 
     element: str
@@ -154,11 +156,27 @@ class VectorRun:
     contour_moves: tuple[ContourMove | None, ...] | None = None
     rule_switch: tuple[int, str] | None = None
     pieces: tuple[tuple[int, ...], ...] | None = None
+    piece_keys: tuple[tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None, ...] | None = None
 
     def move_of(self, index: int) -> ContourMove | None:
         """Contour ``index``'s place over time where its path (:meth:`keys_of`, then one still keyframe) only grows,
         shrinks and moves (:attr:`contour_moves`); ``None``: drawn where its path says."""
         return None if self.contour_moves is None else self.contour_moves[index]
+
+    def drawn_keys(self, index: int) -> tuple[tuple[int, ...], Array, tuple[Handles, ...], ContourMove | None]:
+        """Contour ``index``'s keyframes as the animated SVG draws it where it draws the run's pieces apart: its
+        piece's own (:attr:`piece_keys`), its own and its move for a piece of one contour, else the run's:
+        ``(frames, path, eases, move)``."""
+        pieces = self.pieces if self.pieces is not None and len(self.pieces) > 1 else None
+        for number, members in enumerate(pieces or ()):
+            if index not in members:
+                continue
+            own = None if self.piece_keys is None else self.piece_keys[number]
+            if own is not None:
+                return own[0], own[1][members.index(index)], own[2], None
+            if len(members) == 1:
+                return (*self.keys_of(index), self.move_of(index))
+        return self.path_frames, self.paths[index], self.eases, None
 
     def keys_of(self, index: int) -> tuple[tuple[int, ...], Array, tuple[Handles, ...]]:
         """Contour ``index``'s own keyframes where it has them (:attr:`contour_keys`), else the run's:

@@ -236,6 +236,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], span: Span, viewport: Viewport,
             exact = None
         else:
             paths = tuple(path for _, path, _ in exact_own.values())
+    fits: tuple[list[Array], list[NDArray[np.bool_]], list[float]] | None = None  # each contour's, keyed apart
     if exact is None or not every_pair:
         path_frames, paths, eases = (first,), (), ()
         if samples:
@@ -251,6 +252,7 @@ def _run(shape: Shape, shapes: list[ShapeAt], span: Span, viewport: Viewport,
                     own.append((tuple(first + k for k in alone.frames), with_fixed_points(alone.values, f),
                                 alone.handles()))
                 contour_keys = tuple(own)
+                fits = (curves, free, errors)
     scale = viewport.scale if shape.stroke_scales else 1.0
     paints = [at.paint for at in shapes]
     fill, stroke, width, opacity = _paint_arrays(paints, scale)
@@ -284,18 +286,36 @@ def _run(shape: Shape, shapes: list[ShapeAt], span: Span, viewport: Viewport,
                     contour_keys=contour_keys,
                     dash=None if dashes is None else tuple(d[pick] for d in dashes), rule_switch=span.switch)
     run = replace(run, gradient_paths=gradient_frame_paths(run, max_error, keyed_curves))
-    return _with_pieces(_with_moves(run, samples, max_error), max_error)
+    return _with_pieces(_with_moves(run, samples, max_error), samples, fits, max_error)
 
 
-def _with_pieces(run: VectorRun, max_error: float) -> VectorRun:
-    """``run`` with its contours grouped into pieces apart by :data:`APART` pixels beyond the bound and the
-    stroke's reach at every frame (:func:`.pieces.apart_pieces`), where its contours have keyframes of their own
-    (a file that draws each piece as a path of its own keys it by them) and one dash pattern."""
-    if run.contour_keys is None or run.dash is not None or len(run.paths) < 2:
+def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], list[NDArray[np.bool_]], list[float]]
+                 | None, max_error: float) -> VectorRun:
+    """``run`` with its contours (``samples (F, L_i, 2)``, fitted apart as ``fits``: each contour's curves at every
+    frame, their free points, the distance each fit reached) grouped into pieces apart by :data:`APART` pixels
+    beyond the bound and the stroke's reach at every frame (:func:`.pieces.apart_pieces`), each piece of several
+    contours keyed on its own (as :func:`keyed_curves` keys a run); where its contours have keyframes of their own
+    and one dash pattern."""
+    if fits is None or run.contour_keys is None or run.dash is not None or len(run.paths) < 2:
         return run
     reach = 0.0 if run.stroke is None else 0.5 * float(np.max(run.width, initial=0.0)) * max(run.miter_limit,
                                                                                               np.sqrt(2.0))
-    return replace(run, pieces=apart_pieces(run.exact_contours(), max_error + APART + reach))
+    pieces = apart_pieces(samples, max_error + APART + reach)  # the key closing the run too, if any
+    if pieces is None or len(pieces) < 2:
+        return run
+    curves, free, errors = fits
+    keys: list[tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None] = []
+    for members in pieces:
+        if len(members) == 1:
+            keys.append(None)  # its own keys (and move)
+            continue
+        keyed = fit_keyframes(np.concatenate([curves[i][:, free[i]] for i in members], axis=1),
+                              _key_tolerance(max_error, max(errors[i] for i in members)))
+        cuts = np.cumsum([int(free[i].sum()) for i in members])[:-1]
+        values = np.split(keyed.values, cuts, axis=1)
+        keys.append((tuple(run.first + k for k in keyed.frames),
+                     tuple(with_fixed_points(v, free[i]) for v, i in zip(values, members)), keyed.handles()))
+    return replace(run, pieces=pieces, piece_keys=tuple(keys))
 
 
 def _with_moves(run: VectorRun, samples: list[Array], max_error: float) -> VectorRun:

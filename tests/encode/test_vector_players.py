@@ -113,12 +113,18 @@ def _pair_name(pair: tuple[str, str]) -> str:
     return pair[0].split("/")[0] + "-" + Path(pair[0]).stem
 
 
+SVG_PIECES = {"cut-moon-heart": ("tabler/moon.svg", "mdi/heart.svg"),  # a hole shrinking inside its outline: a mask
+              "cut-alpha-python": ("mdi/alpha-b.svg", "simple-icons/python.svg"),  # the python's eyes growing
+              "apart-sun-heart": ("heroicons/sun.svg", "mdi/heart.svg")}  # rays shrinking apart from the rest
+"""Pairs whose animated SVG draws its pieces as paths of their own and cuts holes with masks (Chromium plays them)."""
+
 SceneMaker = Callable[[Path], tr.Scene]
 CASES: dict[str, tuple[SceneMaker, str | None]] = {
     **{f"scene-{p.stem}": ((lambda folder, p=p: tr.load_scene(p)), None) for p in SHIPPED},
     **{f"pair-{_pair_name(pair)}": ((lambda folder, pair=pair: _icons(*pair)), None) for pair in ICON_PAIRS},
     **{f"{kind}-{method}": ((lambda folder, pair=pair: _icons(*pair)), method)
        for kind, pair in (("holes", ICON_PAIRS[0]), ("strokes", ICON_PAIRS[2])) for method in METHODS},
+    **{f"svg-{name}": ((lambda folder, pair=pair: _icons(*pair)), None) for name, pair in SVG_PIECES.items()},
     "timed": ((lambda folder: _timed()), None),
     "paint": ((lambda folder: tr.load_scene(write_scene(folder, PAINT))), None),
     "rule-switch": ((lambda folder: tr.load_scene(overlapping_squares(folder))), None),
@@ -242,7 +248,8 @@ def test_curved_methods_timing_and_paint_in_lottie_web_every_frame(clip: Clip, b
     clip.check_lottie_web(browser=_lottie_web(browser))
 
 
-@_cases(SCENE_CASES + PAIR_CASES + ["paint", "timed", "holes-nonlinear", "holes-arap", "holes-intrinsic"])
+@_cases(SCENE_CASES + PAIR_CASES + ["paint", "timed", "holes-nonlinear", "holes-arap", "holes-intrinsic"]
+        + [f"svg-{name}" for name in SVG_PIECES])
 def test_svg_in_chromium_at_five_times(clip: Clip, browser: PlayerBrowser | None) -> None:
     """Every shipped scene, the icon pairs, the paint scene and curved methods on icons."""
     if browser is None:

@@ -93,3 +93,72 @@ def test_a_morph_whose_pieces_come_and_go_apart_draws_each_as_a_path_of_its_own(
     clip = vector_clip(render_job(scene, RenderOptions.create()))
     together = replace(clip, runs=tuple(replace(run, pieces=None) for run in clip.runs))
     assert len(svg_document(clip)) < len(svg_document(together))
+
+
+def _winding(point: np.ndarray, ring: np.ndarray) -> int:
+    """The winding number of the closed polygon ``ring (L, 2)`` about ``point``, by summing the angles it turns
+    through (an independent brute force: no crossing rule)."""
+    v = ring - point
+    w = np.roll(v, -1, axis=0)
+    angles = np.arctan2(v[:, 0] * w[:, 1] - v[:, 1] * w[:, 0], np.sum(v * w, axis=1))
+    return int(round(float(angles.sum()) / (2 * np.pi)))
+
+
+def _filled(point: np.ndarray, rings: list[np.ndarray], rule: str) -> bool:
+    total = sum(_winding(point, r) for r in rings)
+    return total % 2 == 1 if rule == "evenodd" else total != 0
+
+
+def _hole_everywhere(contours: list[np.ndarray], h: int, rule: str, apart: float = APART) -> bool:
+    """Whether contour ``h`` is, at every frame, more than ``apart`` from the others, holds none, and the fill
+    leaves its inside empty and the band just outside it filled (shapely and the brute-force winding number)."""
+    for f in range(len(contours[0])):
+        rings = [c[f] for c in contours]
+        hole = Polygon(rings[h])
+        if hole.area <= 1e-9:
+            continue
+        for j, ring in enumerate(rings):
+            if j != h and (LinearRing(rings[h]).distance(LinearRing(ring)) <= apart or hole.contains(Polygon(ring))):
+                return False
+        inner = np.array(hole.representative_point().coords[0])
+        band = hole.buffer(APART / 2).difference(hole)
+        outer = np.array(band.representative_point().coords[0])
+        if _filled(inner, rings, rule) or not _filled(outer, rings, rule):
+            return False
+    return True
+
+
+def _ring_with_holes(rng: np.random.Generator, frames: int) -> list[np.ndarray]:
+    """A square outline and two to four small polygons moving inside and about it, each wound either way."""
+    s = np.linspace(0, 1, frames)[:, None, None]
+    square = np.array([[0.0, 0.0], [200, 0], [200, 200], [0, 200]])
+    if rng.random() < 0.5:
+        square = square[::-1]
+    out = [np.broadcast_to(square, (frames, 4, 2)).copy()]
+    for _ in range(int(rng.integers(2, 5))):
+        sides = int(rng.integers(3, 7))
+        angles = np.arange(sides) * 2 * np.pi / sides
+        unit = np.stack([np.cos(angles), np.sin(angles)], axis=1)
+        if rng.random() < 0.5:
+            unit = unit[::-1]
+        start, end = rng.uniform(20, 180, 2), rng.uniform(-20, 220, 2)
+        r0, r1 = rng.uniform(3, 30, 2)
+        out.append((1 - s) * start + s * end + ((1 - s) * r0 + s * r1) * unit[None])
+    return out
+
+
+@pytest.mark.parametrize("seed", range(16))
+def test_the_holes_cut_out_are_exactly_those_the_fill_leaves_empty_apart_from_the_rest(seed: int) -> None:
+    """Against shapely's distances and containment and a brute-force winding number: every hole :func:`cut_holes`
+    names is one at every frame, and every contour it leaves is not one at some frame."""
+    from tweenrender.vector.pieces import cut_holes
+
+    rng = np.random.default_rng(seed)
+    contours = _ring_with_holes(rng, 5)
+    rule = "evenodd" if rng.random() < 0.5 else "nonzero"
+    named = set(cut_holes(contours, rule, APART))
+    for h in range(len(contours)):
+        if h in named:
+            assert _hole_everywhere(contours, h, rule), (h, rule)
+        else:  # cut_holes looks as far as ``APART`` and half a step (its edges' points ``APART`` apart)
+            assert not _hole_everywhere(contours, h, rule, 1.5 * APART + 1e-9), (h, rule)

@@ -49,7 +49,7 @@ def svg_document(clip: VectorClip, title: str = "tweenrender") -> str:
                      + (f' fill-opacity="{number(a / 255, 4)}"' if a < 255 else "") + "/>")
     prefix = own_prefix([_group_id(run) for run in clip.runs])
     for index, run in enumerate(clip.runs):
-        lines.extend(_run(run, f"{prefix}run{index}", clip.frames, timing))
+        lines.extend(_run(run, f"{prefix}run{index}", clip.frames, timing, clip.size))
     lines.append("</svg>")
     return "\n".join(lines) + "\n"
 
@@ -70,8 +70,9 @@ def _group_id(run: VectorRun) -> str:
     return f"{run.element}-{run.first}"
 
 
-def _run(run: VectorRun, ident: str, total: int, timing: str) -> list[str]:
-    """The run as a group; ``ident`` names its gradient (``ident-fill``) and clip paths (``ident-clip-0``, …).
+def _run(run: VectorRun, ident: str, total: int, timing: str, size: tuple[int, int]) -> list[str]:
+    """The run as a group in a view of ``size``; ``ident`` names its gradient (``ident-fill``), clip paths
+    (``ident-clip-0``, …) and masks (``ident-cut-0``, …).
     Its contours are one path, or one path per piece (:func:`_pieces`) where that is shorter."""
     lines = [f"<g id={quoteattr(_group_id(run))}"
              + (' visibility="hidden"' if run.first > 0 else "") + _static_opacity(run) + ">"]
@@ -94,7 +95,7 @@ def _run(run: VectorRun, ident: str, total: int, timing: str) -> list[str]:
     if len(groups) <= 1:
         widths = groups[0][1] if groups else None
         whole = _path(run, list(range(len(run.paths))), True, widths, total, timing, fill)
-        apart = _pieces(run, widths, total, timing, fill)
+        apart = _pieces(run, ident, size, widths, total, timing, fill)
         lines += whole if apart is None or _length(apart) >= _length(whole) else apart
     else:  # contours growing from a point stroke with their share of the width: the fill, then each stroke
         lines += _path(run, list(range(len(run.paths))), True, None, total, timing, fill)
@@ -114,29 +115,50 @@ def _path(run: VectorRun, members: list[int], filled: bool, widths: Array | None
     return _element("path", shape + paint, moves + changes)
 
 
-def _pieces(run: VectorRun, widths: Array | None, total: int, timing: str, gradient: str | None) -> list[str] | None:
+def _pieces(run: VectorRun, ident: str, size: tuple[int, int], widths: Array | None, total: int, timing: str,
+            gradient: str | None) -> list[str] | None:
     """The run's contours as one ``<path>`` per piece (:attr:`VectorRun.pieces`) in a group that holds the paint:
-    a piece of one contour moves by its own keyframes (:meth:`VectorRun.keys_of`), or as a still path under a
-    keyed translation and scale where it only grows, shrinks and moves (:meth:`VectorRun.move_of`), a piece of
-    several by its own (:attr:`VectorRun.piece_keys`). None where the run has no two pieces."""
+    a contour alone in its piece moves by its own keyframes (:meth:`VectorRun.keys_of`), or as a still path under
+    a keyed translation and scale where it only grows, shrinks and moves (:meth:`VectorRun.move_of`), several by
+    their piece's own (:attr:`VectorRun.piece_keys`). A piece's holes cut out (:attr:`VectorRun.piece_cuts`) are
+    black in a mask of its own (``ident-cut-K``, white over the ``size`` of the view), each by its own keys.
+    None where the run has neither two pieces nor a hole to cut."""
     pieces = run.pieces
-    if pieces is None or len(pieces) < 2:
+    if pieces is None or (len(pieces) < 2 and run.piece_cuts is None):
         return None
     paint, changes = _paint(run, list(range(len(run.paths))), True, widths, total, timing, gradient)
     lines = ["<g " + " ".join(paint) + ">", *(line for line in changes if line)]  # the paths inherit the paint
+    width, height = size
     for index, members in enumerate(pieces):
-        closed = tuple(run.closed[i] for i in members)
+        cut = run.cut_of(index)
+        drawn = [i for i in members if i not in cut]
         own = None if run.piece_keys is None else run.piece_keys[index]
         if own is not None:
             frames, paths, eases = own
-            shape, moves = _geometry(frames, list(paths), closed, eases, total, timing)
-        elif len(members) > 1:
-            shape, moves = _geometry(run.path_frames, [run.paths[i] for i in members], closed, run.eases, total, timing)
+            shape, moves = _geometry(frames, list(paths), tuple(run.closed[i] for i in drawn), eases, total, timing)
+        elif len(drawn) > 1:
+            shape, moves = _geometry(run.path_frames, [run.paths[i] for i in drawn], tuple(run.closed[i] for i in drawn),
+                                     run.eases, total, timing)
         else:
-            frames, path, eases = run.keys_of(members[0])
-            shape, moves = _geometry(frames, [path], closed, eases, total, timing, run.move_of(members[0]))
+            shape, moves = _own_geometry(run, drawn[0], total, timing)
+        if cut:
+            mask = f"{ident}-cut-{index}"
+            lines += [f'<mask id="{mask}" maskUnits="userSpaceOnUse" x="0" y="0" width="{width}" height="{height}" '
+                      'style="mask-type:luminance" color-interpolation="sRGB">',
+                      f'<rect width="{width}" height="{height}" fill="#ffffff"/>']
+            for i in cut:
+                hole, changes = _own_geometry(run, i, total, timing)
+                lines += _element("path", [*hole, 'fill="#000000"'], changes)
+            lines.append("</mask>")
+            shape = [*shape, f'mask="url(#{mask})"']
         lines += _element("path", shape, moves)
     return [*lines, "</g>"]
+
+
+def _own_geometry(run: VectorRun, index: int, total: int, timing: str) -> tuple[list[str], list[str]]:
+    """Contour ``index`` alone by its own keyframes and move (:func:`_geometry`)."""
+    frames, path, eases = run.keys_of(index)
+    return _geometry(frames, [path], (run.closed[index],), eases, total, timing, run.move_of(index))
 
 
 def _geometry(frames: tuple[int, ...], paths: list[Array], closed: tuple[bool, ...], eases: tuple,

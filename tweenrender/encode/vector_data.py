@@ -124,9 +124,11 @@ class VectorRun:
     is the one it names instead of ``fill_rule`` (a plain fill only; ``None``: ``fill_rule`` throughout).
     ``pieces``: the contours grouped so that no contour of one group comes near, crosses or lies inside one of
     another at any frame (:func:`..vector.pieces.apart_pieces`), so each group may be drawn as a path of its own
-    (``None``: not looked for); ``piece_keys``, per piece, the keyframes of a piece of several contours, fitted
-    over them alone (``(frames, one path per member, eases)``), ``None`` for a piece of one (its own, with its
-    move: :meth:`keys_of`, :meth:`move_of`).
+    (``None``: not looked for); ``piece_cuts``, per piece, the holes a mask cuts out of it (each stays apart from
+    the piece's other contours, holds none, and the fill leaves its inside empty: :func:`..vector.pieces.cut_holes`;
+    ``None``: none); ``piece_keys``, per piece, the keyframes of the piece's other contours where they are several,
+    fitted over them alone (``(frames, one path per contour, eases)``), ``None`` where one is left (its own, with
+    its move: :meth:`keys_of`, :meth:`move_of`), as are the holes cut out.
     """
 
     element: str
@@ -157,6 +159,7 @@ class VectorRun:
     rule_switch: tuple[int, str] | None = None
     pieces: tuple[tuple[int, ...], ...] | None = None
     piece_keys: tuple[tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None, ...] | None = None
+    piece_cuts: tuple[tuple[int, ...], ...] | None = None
 
     def move_of(self, index: int) -> ContourMove | None:
         """Contour ``index``'s place over time where its path (:meth:`keys_of`, then one still keyframe) only grows,
@@ -164,19 +167,24 @@ class VectorRun:
         return None if self.contour_moves is None else self.contour_moves[index]
 
     def drawn_keys(self, index: int) -> tuple[tuple[int, ...], Array, tuple[Handles, ...], ContourMove | None]:
-        """Contour ``index``'s keyframes as the animated SVG draws it where it draws the run's pieces apart: its
-        piece's own (:attr:`piece_keys`), its own and its move for a piece of one contour, else the run's:
-        ``(frames, path, eases, move)``."""
-        pieces = self.pieces if self.pieces is not None and len(self.pieces) > 1 else None
-        for number, members in enumerate(pieces or ()):
+        """Contour ``index``'s keyframes as the animated SVG draws it where it draws the run's pieces apart: a hole
+        cut out, or the one contour left of its piece, by its own and its move; another by its piece's own
+        (:attr:`piece_keys`), else the run's: ``(frames, path, eases, move)``."""
+        for number, members in enumerate(self.pieces or ()):
             if index not in members:
                 continue
+            cut = self.cut_of(number)
+            drawn = [i for i in members if i not in cut]
+            if index in cut or len(drawn) == 1:
+                return (*self.keys_of(index), self.move_of(index))
             own = None if self.piece_keys is None else self.piece_keys[number]
             if own is not None:
-                return own[0], own[1][members.index(index)], own[2], None
-            if len(members) == 1:
-                return (*self.keys_of(index), self.move_of(index))
+                return own[0], own[1][drawn.index(index)], own[2], None
         return self.path_frames, self.paths[index], self.eases, None
+
+    def cut_of(self, piece: int) -> tuple[int, ...]:
+        """The holes a mask cuts out of piece number ``piece`` (:attr:`piece_cuts`)."""
+        return () if self.piece_cuts is None else self.piece_cuts[piece]
 
     def keys_of(self, index: int) -> tuple[tuple[int, ...], Array, tuple[Handles, ...]]:
         """Contour ``index``'s own keyframes where it has them (:attr:`contour_keys`), else the run's:

@@ -24,7 +24,7 @@ from numpy.typing import NDArray
 from .curves import Blend, RIDGE, STRAIGHT_RIDGE, distance_to_polyline, fit_curves, free_points, with_fixed_points
 from .dash_keys import contour_dashes, dash_rows
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
-from .pieces import apart_pieces
+from .pieces import apart_pieces, cut_holes
 from .runs import Span, runs_of, stacking_phases, stroked, style
 from .scaled_keys import scaled_contour
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
@@ -293,29 +293,36 @@ def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], 
                  | None, max_error: float) -> VectorRun:
     """``run`` with its contours (``samples (F, L_i, 2)``, fitted apart as ``fits``: each contour's curves at every
     frame, their free points, the distance each fit reached) grouped into pieces apart by :data:`APART` pixels
-    beyond the bound and the stroke's reach at every frame (:func:`.pieces.apart_pieces`), each piece of several
-    contours keyed on its own (as :func:`keyed_curves` keys a run); where its contours have keyframes of their own
-    and one dash pattern."""
+    beyond the bound and the stroke's reach at every frame (:func:`.pieces.apart_pieces`), where its contours
+    have keyframes of their own and one dash pattern. In a plain fill (no stroke, one fill rule) a piece's holes
+    that stay as far from its other contours are cut out of it (:func:`.pieces.cut_holes`); the rest of a piece
+    of several contours is keyed on its own (as :func:`keyed_curves` keys a run)."""
     if fits is None or run.contour_keys is None or run.dash is not None or len(run.paths) < 2:
         return run
     reach = 0.0 if run.stroke is None else 0.5 * float(np.max(run.width, initial=0.0)) * max(run.miter_limit,
                                                                                               np.sqrt(2.0))
-    pieces = apart_pieces(samples, max_error + APART + reach)  # the key closing the run too, if any
-    if pieces is None or len(pieces) < 2:
+    apart = max_error + APART + reach
+    pieces = apart_pieces(samples, apart)  # the key closing the run too, if any
+    if pieces is None:
+        return run
+    cutting = run.stroke is None and run.rule_switch is None and (run.fill is not None or run.gradient is not None)
+    cuts = tuple(tuple(members[k] for k in cut_holes([samples[i] for i in members], run.fill_rule, apart))
+                 if cutting and len(members) > 1 else () for members in pieces)
+    if len(pieces) < 2 and not any(cuts):
         return run
     curves, free, errors = fits
     keys: list[tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]] | None] = []
-    for members in pieces:
-        if len(members) == 1:
+    for members, cut in zip(pieces, cuts):
+        drawn = [i for i in members if i not in cut]
+        if len(drawn) == 1:
             keys.append(None)  # its own keys (and move)
             continue
-        keyed = fit_keyframes(np.concatenate([curves[i][:, free[i]] for i in members], axis=1),
-                              _key_tolerance(max_error, max(errors[i] for i in members)))
-        cuts = np.cumsum([int(free[i].sum()) for i in members])[:-1]
-        values = np.split(keyed.values, cuts, axis=1)
+        keyed = fit_keyframes(np.concatenate([curves[i][:, free[i]] for i in drawn], axis=1),
+                              _key_tolerance(max_error, max(errors[i] for i in drawn)))
+        values = np.split(keyed.values, np.cumsum([int(free[i].sum()) for i in drawn])[:-1], axis=1)
         keys.append((tuple(run.first + k for k in keyed.frames),
-                     tuple(with_fixed_points(v, free[i]) for v, i in zip(values, members)), keyed.handles()))
-    return replace(run, pieces=pieces, piece_keys=tuple(keys))
+                     tuple(with_fixed_points(v, free[i]) for v, i in zip(values, drawn)), keyed.handles()))
+    return replace(run, pieces=pieces, piece_keys=tuple(keys), piece_cuts=cuts if any(cuts) else None)
 
 
 def _with_moves(run: VectorRun, samples: list[Array], max_error: float) -> VectorRun:

@@ -14,7 +14,7 @@ from numpy.typing import NDArray
 from ..core.contours import inside
 from .curves import distance_to_polyline
 
-__all__ = ["apart_pieces", "MOST_CONTOURS"]
+__all__ = ["apart_pieces", "cut_holes", "MOST_CONTOURS"]
 
 Array = NDArray[np.float64]
 
@@ -32,14 +32,7 @@ def apart_pieces(contours: list[Array], apart: float) -> tuple[tuple[int, ...], 
     count = len(contours)
     if count == 0 or count > MOST_CONTOURS or not all(c.size and np.all(np.isfinite(c)) for c in contours):
         return None
-    frames = len(contours[0])
-    step = apart  # points of each edge this far apart at most: a crossing passes within half a step of one
-    reach = apart + 0.5 * step
-    low = np.stack([c.min(axis=1) for c in contours], axis=1) - reach  # (F, C, 2)
-    high = np.stack([c.max(axis=1) for c in contours], axis=1) + reach
-    near = np.zeros((frames, count, count), dtype=bool)  # boxes that meet, frame by frame
-    for f in range(frames):
-        near[f] = np.all((low[f][:, None] <= high[f][None]) & (low[f][None] <= high[f][:, None]), axis=-1)
+    space = _Space(contours, apart)
     group = list(range(count))
 
     def root(i: int) -> int:
@@ -48,14 +41,9 @@ def apart_pieces(contours: list[Array], apart: float) -> tuple[tuple[int, ...], 
             i = group[i]
         return i
 
-    rings = [np.concatenate([c, c[:, :1]], axis=1) for c in contours]
-    dense: dict[int, Array | None] = {}
-    for i, j in zip(*np.nonzero(np.triu(near.any(axis=0), 1))):
+    for i, j in zip(*np.nonzero(np.triu(space.boxes.any(axis=0), 1))):
         i, j = int(i), int(j)
-        if root(i) == root(j):
-            continue
-        at = np.flatnonzero(near[:, i, j])
-        if _meet(rings, dense, i, j, at, step, reach):
+        if root(i) != root(j) and (space.close(i, j) or space.nested(i, j)):
             a, b = root(i), root(j)
             group[max(a, b)] = min(a, b)
     pieces: dict[int, list[int]] = {}
@@ -64,35 +52,93 @@ def apart_pieces(contours: list[Array], apart: float) -> tuple[tuple[int, ...], 
     return tuple(tuple(members) for members in pieces.values())
 
 
-def _meet(rings: list[Array], dense: dict[int, Array | None], i: int, j: int, at: NDArray[np.intp], step: float,
-          reach: float) -> bool:
-    """Whether closed contours ``i`` and ``j`` (``rings``, first point repeated at the end) come within ``reach``
-    of each other, or one lies inside the other, at one of the frames ``at``."""
-    a, b = rings[i][at], rings[j][at]
-    # where the two come within ``apart`` (or cross), a point of ``i``'s edges lies within ``reach`` of ``j``'s
-    points = _densified(rings, dense, i, step)
-    if points is None or float(distance_to_polyline(points[at], b).min()) <= reach:
-        return True  # too long to look at closely: taken as meeting
-    for f in range(len(at)):
-        if len(b[f]) > 3 and bool(inside(a[f, :1], b[f, :-1])[0]):
-            return True
-        if len(a[f]) > 3 and bool(inside(b[f, :1], a[f, :-1])[0]):
-            return True
-    return False
+def cut_holes(contours: list[Array], rule: str, apart: float) -> tuple[int, ...]:
+    """Which of the closed contours ``(F, L_i, 2)`` of one piece are holes a mask can cut out of the others: at
+    every frame each stays more than ``apart`` from every other contour, holds none of them, and the fill
+    ``rule`` (``nonzero`` or ``evenodd``) leaves its inside empty and the outside next to it filled (where it has
+    no area, it draws nothing). The other contours, filled without it, then fill its inside too; cut out, it is
+    empty again, and nothing else changes."""
+    count = len(contours)
+    if count < 2 or count > MOST_CONTOURS or not all(c.size and np.all(np.isfinite(c)) for c in contours):
+        return ()
+    space = _Space(contours, apart)
+    areas = np.stack([_signed_areas(c) for c in contours], axis=1)  # (F, C)
+    least = 1e-9 * max(float(np.abs(np.concatenate([c.reshape(-1, 2) for c in contours])).max()), 1.0) ** 2
+    out = []
+    for h in range(count):
+        others = [j for j in range(count) if j != h]
+        if any(space.close(h, j) for j in others):
+            continue
+        for f in range(len(areas)):
+            if abs(areas[f, h]) <= least:
+                continue
+            if any(space.holds(h, j, f) for j in others):
+                break
+            around = [j for j in others if space.holds(j, h, f)]
+            if rule == "evenodd":
+                if len(around) % 2 != 1:
+                    break
+            else:
+                outside = int(sum(np.sign(areas[f, j]) for j in around))
+                if outside == 0 or outside + int(np.sign(areas[f, h])) != 0:
+                    break
+        else:
+            out.append(h)
+    return tuple(out)
 
 
-def _densified(rings: list[Array], dense: dict[int, Array | None], index: int, step: float) -> Array | None:
-    """The points of ring ``index`` ``(F, L + 1, 2)`` with each edge cut into pieces no longer than ``step`` at
-    any frame: ``(F, P, 2)`` (kept in ``dense``); None where they would be more than :data:`_MOST_POINTS`."""
-    if index in dense:
-        return dense[index]
-    ring = rings[index]
-    edges = np.diff(ring, axis=1)  # (F, L, 2)
-    cuts = np.maximum(1, np.ceil(np.linalg.norm(edges, axis=-1).max(axis=0) / step)).astype(np.intp)  # (L,)
-    found = None
-    if int(cuts.sum()) * len(ring) <= _MOST_POINTS:
-        share = np.concatenate([np.arange(n) / n for n in cuts.tolist()])  # (P,)
-        start = np.repeat(np.arange(len(cuts)), cuts)
-        found = ring[:, start] + share[None, :, None] * edges[:, start]
-    dense[index] = found
-    return found
+class _Space:
+    """Closed contours ``(F, L_i, 2)`` and whether two come within ``apart`` (:meth:`close`) or nest (:meth:`holds`)
+    at a frame; their boxes, grown by the reach, ``boxes (F, C, C)``: whether two meet, frame by frame."""
+
+    def __init__(self, contours: list[Array], apart: float) -> None:
+        self.step = apart  # points of each edge this far apart at most: a crossing passes within half a step of one
+        self.reach = apart + 0.5 * self.step
+        low = np.stack([c.min(axis=1) for c in contours], axis=1) - self.reach  # (F, C, 2)
+        high = np.stack([c.max(axis=1) for c in contours], axis=1) + self.reach
+        self.boxes = np.stack([np.all((lo[:, None] <= hi[None]) & (lo[None] <= hi[:, None]), axis=-1)
+                               for lo, hi in zip(low, high)])
+        self.rings = [np.concatenate([c, c[:, :1]], axis=1) for c in contours]
+        self._dense: dict[int, Array | None] = {}
+
+    def close(self, i: int, j: int) -> bool:
+        """Whether contours ``i`` and ``j`` come within ``apart`` of each other (or cross) at some frame: then a
+        point of ``i``'s edges, cut into steps, lies within the reach of ``j``'s edges (a contour too long to look
+        at so closely counts as coming near)."""
+        at = np.flatnonzero(self.boxes[:, i, j])
+        if not len(at):
+            return False
+        points = self._densified(i)
+        return points is None or float(distance_to_polyline(points[at], self.rings[j][at]).min()) <= self.reach
+
+    def holds(self, outer: int, inner: int, f: int) -> bool:
+        """Whether contour ``inner``'s first point lies inside contour ``outer`` at frame ``f`` (even-odd)."""
+        ring = self.rings[outer][f, :-1]
+        return bool(self.boxes[f, outer, inner]) and len(ring) >= 3 and \
+            bool(inside(self.rings[inner][f, :1], ring)[0])
+
+    def nested(self, i: int, j: int) -> bool:
+        """Whether ``i`` lies inside ``j`` or ``j`` inside ``i`` at some frame."""
+        return any(self.holds(i, j, f) or self.holds(j, i, f) for f in np.flatnonzero(self.boxes[:, i, j]).tolist())
+
+    def _densified(self, index: int) -> Array | None:
+        """The points of ring ``index`` with each edge cut into pieces no longer than the step at any frame:
+        ``(F, P, 2)`` (kept); None where they would be more than :data:`_MOST_POINTS`."""
+        if index in self._dense:
+            return self._dense[index]
+        ring = self.rings[index]
+        edges = np.diff(ring, axis=1)  # (F, L, 2)
+        cuts = np.maximum(1, np.ceil(np.linalg.norm(edges, axis=-1).max(axis=0) / self.step)).astype(np.intp)
+        found = None
+        if int(cuts.sum()) * len(ring) <= _MOST_POINTS:
+            share = np.concatenate([np.arange(n) / n for n in cuts.tolist()])  # (P,)
+            start = np.repeat(np.arange(len(cuts)), cuts)
+            found = ring[:, start] + share[None, :, None] * edges[:, start]
+        self._dense[index] = found
+        return found
+
+
+def _signed_areas(contour: Array) -> Array:
+    """The shoelace area of a closed contour ``(F, L, 2)`` at each frame: ``(F,)``, its sign its winding."""
+    x, y = contour[..., 0], contour[..., 1]
+    return 0.5 * np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1)

@@ -162,3 +162,16 @@ def test_the_holes_cut_out_are_exactly_those_the_fill_leaves_empty_apart_from_th
             assert _hole_everywhere(contours, h, rule), (h, rule)
         else:  # cut_holes looks as far as ``APART`` and half a step (its edges' points ``APART`` apart)
             assert not _hole_everywhere(contours, h, rule, 1.5 * APART + 1e-9), (h, rule)
+
+
+def test_a_hole_is_cut_only_where_each_frame_s_own_rule_leaves_it_empty() -> None:
+    """A square and a square inside it wound the same way: even-odd leaves the inner one empty, nonzero fills it.
+    Cut out while the rule is even-odd throughout; not where it switches to nonzero at some frame."""
+    from tweenrender.vector.pieces import cut_holes
+
+    outer = np.broadcast_to(np.array([[0.0, 0.0], [100, 0], [100, 100], [0, 100]]), (4, 4, 2))
+    inner = np.broadcast_to(np.array([[40.0, 40.0], [60, 40], [60, 60], [40, 60]]), (4, 4, 2))
+    assert cut_holes([outer, inner], "evenodd", APART) == (1,)
+    assert cut_holes([outer, inner], "nonzero", APART) == ()
+    assert cut_holes([outer, inner], ["evenodd", "evenodd", "nonzero", "nonzero"], APART) == ()
+    assert cut_holes([outer, inner[:, ::-1]], ["evenodd", "evenodd", "nonzero", "nonzero"], APART) == (1,)

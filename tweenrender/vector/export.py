@@ -294,7 +294,7 @@ def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], 
     """``run`` with its contours (``samples (F, L_i, 2)``, fitted apart as ``fits``: each contour's curves at every
     frame, their free points, the distance each fit reached) grouped into pieces apart by :data:`APART` pixels
     beyond the bound and the stroke's reach at every frame (:func:`.pieces.apart_pieces`), where its contours
-    have keyframes of their own and one dash pattern. In a plain fill (no stroke, one fill rule) a piece's holes
+    have keyframes of their own and one dash pattern. In a plain fill (no stroke) a piece's holes
     that stay as far from its other contours are cut out of it (:func:`.pieces.cut_holes`); the rest of a piece
     of several contours is keyed on its own (as :func:`keyed_curves` keys a run)."""
     if fits is None or run.contour_keys is None or run.dash is not None or len(run.paths) < 2:
@@ -305,8 +305,10 @@ def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], 
     pieces = apart_pieces(samples, apart)  # the key closing the run too, if any
     if pieces is None:
         return run
-    cutting = run.stroke is None and run.rule_switch is None and (run.fill is not None or run.gradient is not None)
-    cuts = tuple(tuple(members[k] for k in cut_holes([samples[i] for i in members], run.fill_rule, apart))
+    cutting = run.stroke is None and (run.fill is not None or run.gradient is not None)
+    rules = [run.fill_rule if run.rule_switch is None or run.first + f < run.rule_switch[0] else run.rule_switch[1]
+             for f in range(len(samples[0]))]  # the rule at each frame sampled, the run's closing key too
+    cuts = tuple(tuple(members[k] for k in cut_holes([samples[i] for i in members], rules, apart))
                  if cutting and len(members) > 1 else () for members in pieces)
     if len(pieces) < 2 and not any(cuts):
         return run

@@ -8,6 +8,8 @@ each path then covers pixels no other covers, however it is filled, stroked or a
 
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -52,17 +54,18 @@ def apart_pieces(contours: list[Array], apart: float) -> tuple[tuple[int, ...], 
     return tuple(tuple(members) for members in pieces.values())
 
 
-def cut_holes(contours: list[Array], rule: str, apart: float) -> tuple[int, ...]:
+def cut_holes(contours: list[Array], rules: str | Sequence[str], apart: float) -> tuple[int, ...]:
     """Which of the closed contours ``(F, L_i, 2)`` of one piece are holes a mask can cut out of the others: at
-    every frame each stays more than ``apart`` from every other contour, holds none of them, and the fill
-    ``rule`` (``nonzero`` or ``evenodd``) leaves its inside empty and the outside next to it filled (where it has
-    no area, it draws nothing). The other contours, filled without it, then fill its inside too; cut out, it is
-    empty again, and nothing else changes."""
+    every frame each stays more than ``apart`` from every other contour, holds none of them, and the fill rule
+    (``nonzero`` or ``evenodd``; ``rules``: one for every frame, or one per frame) leaves its inside empty and the
+    outside next to it filled (where it has no area, it draws nothing). The other contours, filled without it,
+    then fill its inside too; cut out, it is empty again, and nothing else changes."""
     count = len(contours)
     if count < 2 or count > MOST_CONTOURS or not all(c.size and np.all(np.isfinite(c)) for c in contours):
         return ()
     space = _Space(contours, apart)
     areas = np.stack([_signed_areas(c) for c in contours], axis=1)  # (F, C)
+    rule_at = [rules] * len(areas) if isinstance(rules, str) else list(rules)
     least = 1e-9 * max(float(np.abs(np.concatenate([c.reshape(-1, 2) for c in contours])).max()), 1.0) ** 2
     out = []
     for h in range(count):
@@ -75,7 +78,7 @@ def cut_holes(contours: list[Array], rule: str, apart: float) -> tuple[int, ...]
             if any(space.holds(h, j, f) for j in others):
                 break
             around = [j for j in others if space.holds(j, h, f)]
-            if rule == "evenodd":
+            if rule_at[f] == "evenodd":
                 if len(around) % 2 != 1:
                     break
             else:

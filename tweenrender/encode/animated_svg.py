@@ -147,8 +147,8 @@ def _pieces(run: VectorRun, ident: str, size: tuple[int, int], widths: Array | N
                       'style="mask-type:luminance" color-interpolation="sRGB">',
                       f'<rect width="{width}" height="{height}" fill="#ffffff"/>']
             for i in cut:
-                hole, changes = _own_geometry(run, i, total, timing)
-                lines += _element("path", [*hole, 'fill="#000000"'], changes)
+                hole, hole_moves = _own_geometry(run, i, total, timing)
+                lines += _element("path", [*hole, 'fill="#000000"'], hole_moves)
             lines.append("</mask>")
             shape = [*shape, f'mask="url(#{mask})"']
         lines += _element("path", shape, moves)

@@ -319,11 +319,9 @@ def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], 
         if len(drawn) == 1:
             keys.append(None)  # its own keys (and move)
             continue
-        keyed = fit_keyframes(np.concatenate([curves[i][:, free[i]] for i in drawn], axis=1),
-                              _key_tolerance(max_error, max(errors[i] for i in drawn)))
-        values = np.split(keyed.values, np.cumsum([int(free[i].sum()) for i in drawn])[:-1], axis=1)
-        keys.append((tuple(run.first + k for k in keyed.frames),
-                     tuple(with_fixed_points(v, free[i]) for v, i in zip(values, drawn)), keyed.handles()))
+        frames, paths, handles = _keyed_together([curves[i] for i in drawn], [free[i] for i in drawn],
+                                                 [errors[i] for i in drawn], max_error)
+        keys.append((tuple(run.first + k for k in frames), paths, handles))
     return replace(run, pieces=pieces, piece_keys=tuple(keys), piece_cuts=cuts if any(cuts) else None)
 
 
@@ -359,11 +357,20 @@ def keyed_curves(samples: list[Array], closed: tuple[bool, ...], max_error: floa
     curves = [c for _, c, _ in fitted_curves]
     errors = [e for _, _, e in fitted_curves]
     free = [free_points(c) for c in curves]  # only these are keyframed; the rest sit on their vertex
+    frames, paths, handles = _keyed_together(curves, free, errors, max_error)
+    return frames, paths, handles, (curves, free, errors)
+
+
+def _keyed_together(curves: list[Array], free: list[NDArray[np.bool_]], errors: list[float], max_error: float
+                    ) -> tuple[tuple[int, ...], tuple[Array, ...], tuple[Handles, ...]]:
+    """Contours fitted at every frame (``curves (F, M_i, 3, 2)``, their ``free (M_i, 3)`` points, each fit ``errors``
+    pixels from its in-between) keyed together within ``max_error``: the keyframes' frames (from 0), the paths
+    ``(K, M_i, 3, 2)`` and each span's timing."""
     keyed = fit_keyframes(np.concatenate([c[:, f] for c, f in zip(curves, free)], axis=1),
                           _key_tolerance(max_error, max(errors)))
     cuts = np.cumsum([int(f.sum()) for f in free])[:-1]
     paths = tuple(with_fixed_points(v, f) for v, f in zip(np.split(keyed.values, cuts, axis=1), free))
-    return keyed.frames, paths, keyed.handles(), (curves, free, errors)
+    return keyed.frames, paths, keyed.handles()
 
 
 def _fewest_cubics(samples: Array, closed: bool, tolerance: float,

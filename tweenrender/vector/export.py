@@ -24,7 +24,7 @@ from numpy.typing import NDArray
 from .curves import Blend, RIDGE, STRAIGHT_RIDGE, distance_to_polyline, fit_curves, free_points, with_fixed_points
 from .dash_keys import contour_dashes, dash_rows
 from .keyframes import fit_keyframes, greedy_keyframes, paint_channels
-from .pieces import apart_pieces, cut_holes
+from .pieces import pieces_and_holes
 from .runs import Span, runs_of, stacking_phases, stroked, style
 from .scaled_keys import scaled_contour
 from ..core.timing.timeline import Segment, ShapeAt, Track, evaluate_segment, pair_paths, segment_method
@@ -88,13 +88,16 @@ def write_vector(job: RenderJob, fmt: str, target: Path, max_error: float | None
     ``loop``: the file says it plays over and over."""
     if not is_vector(fmt):
         raise OptionError(f"expected a vector format, {listing(names(vector=True), 'or')}, found {fmt!r}", "format")
-    clip = replace(vector_clip(job, DEFAULT_MAX_ERROR if max_error is None else max_error), loop=loop)
+    clip = replace(vector_clip(job, DEFAULT_MAX_ERROR if max_error is None else max_error, pieces=fmt == "svg"),
+                   loop=loop)
     written: Path = writer(fmt)(clip, target)
     return written
 
 
-def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorClip:
-    """Sample ``job`` (one panel) at every frame of its range and reduce each run to keyframes."""
+def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR, pieces: bool = True) -> VectorClip:
+    """Sample ``job`` (one panel) at every frame of its range and reduce each run to keyframes; with ``pieces``,
+    each run's contours grouped into pieces that an animated SVG may draw apart (:attr:`VectorRun.pieces`: work
+    that only the SVG writer uses)."""
     if isinstance(max_error, bool) or not (isinstance(max_error, (int, float)) and np.isfinite(max_error)
                                            and max_error > 0):
         raise OptionError(f"expected a positive number of output pixels, found {max_error!r}", "max_error")
@@ -119,7 +122,7 @@ def vector_clip(job: RenderJob, max_error: float = DEFAULT_MAX_ERROR) -> VectorC
             ending = _ending(track, int(segments[first]), method, stop, job.rate, offset, count) \
                 if exact is None and whole else None
             run = _run(shape, shapes[first:stop], span, viewport, exact, method, max_error, times[first:stop],
-                       ending)
+                       ending, pieces)
             placed.append((int(phases[first]), orders[int(phases[first])].index(index), run))
         drawn[index] = []  # its samples are keyframed: let them go
     runs = tuple(run for _, _, run in sorted(placed, key=lambda item: item[:2]))
@@ -187,8 +190,9 @@ def _ending(track: Track, segment: int, method: str, stop: int, fps: float, offs
 
 def _run(shape: Shape, shapes: list[ShapeAt], span: Span, viewport: Viewport,
          exact: tuple[int, int, Segment] | None, method: str, max_error: float, run_times: Array,
-         ending: tuple[ShapeAt, list[Array]] | None = None) -> VectorRun:
-    """The run ``span`` of ``shape``, drawn as ``shapes`` at its frames, as keyframes."""
+         ending: tuple[ShapeAt, list[Array]] | None = None, pieces: bool = True) -> VectorRun:
+    """The run ``span`` of ``shape``, drawn as ``shapes`` at its frames, as keyframes (with ``pieces``, its
+    contours grouped into pieces: :func:`_with_pieces`)."""
     first, stop = span.first, span.stop
     keep = [i for i, c in enumerate(shapes[0].contours) if len(c) >= 2]
     flips = span.reversed or (False,) * len(shapes[0].contours)
@@ -286,7 +290,8 @@ def _run(shape: Shape, shapes: list[ShapeAt], span: Span, viewport: Viewport,
                     contour_keys=contour_keys,
                     dash=None if dashes is None else tuple(d[pick] for d in dashes), rule_switch=span.switch)
     run = replace(run, gradient_paths=gradient_frame_paths(run, max_error, keyed_curves))
-    return _with_pieces(_with_moves(run, samples, max_error), samples, fits, max_error)
+    run = _with_moves(run, samples, max_error)
+    return _with_pieces(run, samples, fits, max_error) if pieces else run
 
 
 def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], list[NDArray[np.bool_]], list[float]]
@@ -302,14 +307,13 @@ def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], 
     reach = 0.0 if run.stroke is None else 0.5 * float(np.max(run.width, initial=0.0)) * max(run.miter_limit,
                                                                                               np.sqrt(2.0))
     apart = max_error + APART + reach
-    pieces = apart_pieces(samples, apart)  # the key closing the run too, if any
-    if pieces is None:
-        return run
     cutting = run.stroke is None and (run.fill is not None or run.gradient is not None)
     rules = [run.fill_rule if run.rule_switch is None or run.first + f < run.rule_switch[0] else run.rule_switch[1]
              for f in range(len(samples[0]))]  # the rule at each frame sampled, the run's closing key too
-    cuts = tuple(tuple(members[k] for k in cut_holes([samples[i] for i in members], rules, apart))
-                 if cutting and len(members) > 1 else () for members in pieces)
+    found = pieces_and_holes(samples, rules, apart, cutting)  # the key closing the run too, if any
+    if found is None:
+        return run
+    pieces, cuts = found
     if len(pieces) < 2 and not any(cuts):
         return run
     curves, free, errors = fits

@@ -16,13 +16,14 @@ from numpy.typing import NDArray
 from ..core.contours import inside
 from .curves import distance_to_polyline
 
-__all__ = ["apart_pieces", "cut_holes", "MOST_CONTOURS"]
+__all__ = ["apart_pieces", "cut_holes", "pieces_and_holes", "MOST_CONTOURS"]
 
 Array = NDArray[np.float64]
 
 MOST_CONTOURS = 400
 """Contours a run may have for its pieces to be looked for (the boxes of every two are compared at every frame)."""
 _MOST_POINTS = 2_000_000  # points of one contour's edges, over every frame, that are looked at closely
+_SPREAD = 8  # frames measured at once when two contours are looked at closely
 
 
 def apart_pieces(contours: list[Array], apart: float) -> tuple[tuple[int, ...], ...] | None:
@@ -31,10 +32,31 @@ def apart_pieces(contours: list[Array], apart: float) -> tuple[tuple[int, ...], 
     another piece at every frame, and outside it: the contours that come that near, or lie inside one another,
     at some frame are in one piece (and so, in turn, are their own such neighbours). Pieces in the order of their
     first contour; None where there are more than :data:`MOST_CONTOURS` contours or a point is not finite."""
-    count = len(contours)
-    if count == 0 or count > MOST_CONTOURS or not all(c.size and np.all(np.isfinite(c)) for c in contours):
+    if not _usable(contours):
+        return None
+    return _pieces(_Space(contours, apart))
+
+
+def pieces_and_holes(contours: list[Array], rules: str | Sequence[str], apart: float, cutting: bool = True
+                     ) -> tuple[tuple[tuple[int, ...], ...], tuple[tuple[int, ...], ...]] | None:
+    """:func:`apart_pieces` of the contours and, with ``cutting``, each piece's holes (:func:`cut_holes` of its
+    contours, as indices of ``contours``), the distances between contours measured once for both; None as
+    :func:`apart_pieces`."""
+    if not _usable(contours):
         return None
     space = _Space(contours, apart)
+    pieces = _pieces(space)
+    holes = tuple(_holes(space, list(members), rules) if cutting and len(members) > 1 else () for members in pieces)
+    return pieces, holes
+
+
+def _usable(contours: list[Array]) -> bool:
+    return 0 < len(contours) <= MOST_CONTOURS and all(c.size and np.all(np.isfinite(c)) for c in contours)
+
+
+def _pieces(space: "_Space") -> tuple[tuple[int, ...], ...]:
+    """The pieces of :func:`apart_pieces`, by the contours' distances and nesting in ``space``."""
+    count = len(space.rings)
     group = list(range(count))
 
     def root(i: int) -> int:
@@ -60,30 +82,34 @@ def cut_holes(contours: list[Array], rules: str | Sequence[str], apart: float) -
     (``nonzero`` or ``evenodd``; ``rules``: one for every frame, or one per frame) leaves its inside empty and the
     outside next to it filled (where it has no area, it draws nothing). The other contours, filled without it,
     then fill its inside too; cut out, it is empty again, and nothing else changes."""
-    count = len(contours)
-    if count < 2 or count > MOST_CONTOURS or not all(c.size and np.all(np.isfinite(c)) for c in contours):
+    if len(contours) < 2 or not _usable(contours):
         return ()
-    space = _Space(contours, apart)
-    areas = np.stack([_signed_areas(c) for c in contours], axis=1)  # (F, C)
+    return _holes(_Space(contours, apart), list(range(len(contours))), rules)
+
+
+def _holes(space: "_Space", members: list[int], rules: str | Sequence[str]) -> tuple[int, ...]:
+    """The holes of :func:`cut_holes` among the contours ``members`` of ``space`` (their indices there)."""
+    areas = np.stack([_signed_areas(space.rings[i][:, :-1]) for i in members], axis=1)  # (F, M)
+    every = np.concatenate([space.rings[i].reshape(-1, 2) for i in members])
+    least = 1e-9 * max(float(np.abs(every).max()), 1.0) ** 2
     rule_at = [rules] * len(areas) if isinstance(rules, str) else list(rules)
-    least = 1e-9 * max(float(np.abs(np.concatenate([c.reshape(-1, 2) for c in contours])).max()), 1.0) ** 2
     out = []
-    for h in range(count):
-        others = [j for j in range(count) if j != h]
-        if any(space.close(h, j) for j in others):
+    for k, h in enumerate(members):
+        others = [(n, j) for n, j in enumerate(members) if j != h]
+        if any(space.close(h, j) for _, j in others):
             continue
         for f in range(len(areas)):
-            if abs(areas[f, h]) <= least:
+            if abs(areas[f, k]) <= least:
                 continue
-            if any(space.holds(h, j, f) for j in others):
+            if any(space.holds(h, j, f) for _, j in others):
                 break
-            around = [j for j in others if space.holds(j, h, f)]
+            around = [n for n, j in others if space.holds(j, h, f)]
             if rule_at[f] == "evenodd":
                 if len(around) % 2 != 1:
                     break
             else:
-                outside = int(sum(np.sign(areas[f, j]) for j in around))
-                if outside == 0 or outside + int(np.sign(areas[f, h])) != 0:
+                outside = int(sum(np.sign(areas[f, n]) for n in around))
+                if outside == 0 or outside + int(np.sign(areas[f, k])) != 0:
                     break
         else:
             out.append(h)
@@ -103,16 +129,33 @@ class _Space:
                                for lo, hi in zip(low, high)])
         self.rings = [np.concatenate([c, c[:, :1]], axis=1) for c in contours]
         self._dense: dict[int, Array | None] = {}
+        self._close: dict[tuple[int, int], bool] = {}
 
     def close(self, i: int, j: int) -> bool:
         """Whether contours ``i`` and ``j`` come within ``apart`` of each other (or cross) at some frame: then a
         point of ``i``'s edges, cut into steps, lies within the reach of ``j``'s edges (a contour too long to look
-        at so closely counts as coming near)."""
+        at so closely counts as coming near). Measured once a pair, a few frames at a time, spread over the clip
+        first: the first frame where they meet settles it."""
+        pair = (min(i, j), max(i, j))
+        found = self._close.get(pair)
+        if found is None:
+            found = self._measure(*pair)
+            self._close[pair] = found
+        return found
+
+    def _measure(self, i: int, j: int) -> bool:
         at = np.flatnonzero(self.boxes[:, i, j])
         if not len(at):
             return False
         points = self._densified(i)
-        return points is None or float(distance_to_polyline(points[at], self.rings[j][at]).min()) <= self.reach
+        if points is None:
+            return True
+        order = np.concatenate([at[k::_SPREAD] for k in range(_SPREAD)])  # every _SPREAD-th frame first
+        for start in range(0, len(order), _SPREAD):
+            frames = order[start:start + _SPREAD]
+            if float(distance_to_polyline(points[frames], self.rings[j][frames]).min()) <= self.reach:
+                return True
+        return False
 
     def holds(self, outer: int, inner: int, f: int) -> bool:
         """Whether contour ``inner``'s first point lies inside contour ``outer`` at frame ``f`` (even-odd)."""

@@ -175,3 +175,23 @@ def test_a_hole_is_cut_only_where_each_frame_s_own_rule_leaves_it_empty() -> Non
     assert cut_holes([outer, inner], "nonzero", APART) == ()
     assert cut_holes([outer, inner], ["evenodd", "evenodd", "nonzero", "nonzero"], APART) == ()
     assert cut_holes([outer, inner[:, ::-1]], ["evenodd", "evenodd", "nonzero", "nonzero"], APART) == (1,)
+
+
+def test_pieces_are_looked_for_only_for_an_animated_svg(tmp_path, monkeypatch) -> None:
+    """Counted work: writing a Lottie or dotLottie file measures no distances between contours; an SVG does."""
+    from tweenrender.vector import export
+
+    calls: list[int] = []
+    real = export.pieces_and_holes
+
+    def counted(*args, **kwargs):  # type: ignore[no-untyped-def]
+        calls.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(export, "pieces_and_holes", counted)
+    scene = tr.load_scene([DATA / "icons" / "mdi" / "weather-night.svg", DATA / "icons" / "bootstrap" / "sun-fill.svg"])
+    tr.write(scene, tmp_path / "night.json")
+    tr.write(scene, tmp_path / "night.lottie")
+    assert calls == []
+    tr.write(scene, tmp_path / "night.svg")
+    assert calls

@@ -390,3 +390,17 @@ def earlier_frames(folder: Path, data: bytes = b"old frame") -> None:
     info = frame.stat()
     listing = {"frame_0000.png": {"bytes": info.st_size, "mtime_ns": info.st_mtime_ns}}
     (folder / MANIFEST).write_text(json.dumps({"written_by": "tweenrender", "files": listing}))
+
+
+def count_calls(monkeypatch: Any, owner: Any, name: str) -> list[int]:
+    """Replace ``owner.name`` (a module's function) for the test with a wrapper that calls it and appends 1 to
+    the list returned, so a test asserts counted work."""
+    calls: list[int] = []
+    real = getattr(owner, name)
+
+    def counted(*args: Any, **kwargs: Any) -> Any:
+        calls.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(owner, name, counted)
+    return calls

@@ -14,7 +14,7 @@ from shapely.geometry import Polygon  # noqa: E402
 from shapely.ops import unary_union  # noqa: E402
 
 import tweenrender as tr  # noqa: E402
-from tests.helpers import DATA  # noqa: E402
+from tests.helpers import DATA, count_calls  # noqa: E402
 from tweenrender.core.methods.bounded_distortion import ShapeKeepingSolve  # noqa: E402
 from tweenrender.core.methods.injective import injective_mesh  # noqa: E402
 
@@ -147,14 +147,7 @@ def test_the_descent_keeps_within_its_work_bound(monkeypatch: pytest.MonkeyPatch
     from tweenrender.core.methods import bounded_distortion as bd
     from tweenrender.core.methods import mesh_distortion as md
 
-    rounds: list[int] = []
-    step = md._slim_goal
-
-    def counted(*args, **kwargs):  # type: ignore[no-untyped-def]
-        rounds.append(1)
-        return step(*args, **kwargs)
-
-    monkeypatch.setattr(md, "_slim_goal", counted)
+    rounds = count_calls(monkeypatch, md, "_slim_goal")
     solve, mesh = _solve_for("lucide/moon", "lucide/star")
     triangles = len(mesh.triangles)
     for s in T:

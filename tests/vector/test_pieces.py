@@ -15,7 +15,7 @@ shapely = pytest.importorskip("shapely", reason="shapely (the test extra) measur
 from shapely.geometry import LinearRing, Polygon  # noqa: E402
 
 import tweenrender as tr  # noqa: E402
-from tests.helpers import DATA  # noqa: E402
+from tests.helpers import DATA, count_calls  # noqa: E402
 from tweenrender.encode.animated_svg import svg_document  # noqa: E402
 from tweenrender.pipeline.library import render_job  # noqa: E402
 from tweenrender.plan.options import RenderOptions  # noqa: E402
@@ -181,14 +181,7 @@ def test_pieces_are_looked_for_only_for_an_animated_svg(tmp_path, monkeypatch) -
     """Counted work: writing a Lottie or dotLottie file measures no distances between contours; an SVG does."""
     from tweenrender.vector import export
 
-    calls: list[int] = []
-    real = export.pieces_and_holes
-
-    def counted(*args, **kwargs):  # type: ignore[no-untyped-def]
-        calls.append(1)
-        return real(*args, **kwargs)
-
-    monkeypatch.setattr(export, "pieces_and_holes", counted)
+    calls = count_calls(monkeypatch, export, "pieces_and_holes")
     scene = tr.load_scene([DATA / "icons" / "mdi" / "weather-night.svg", DATA / "icons" / "bootstrap" / "sun-fill.svg"])
     tr.write(scene, tmp_path / "night.json")
     tr.write(scene, tmp_path / "night.lottie")

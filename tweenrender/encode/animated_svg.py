@@ -132,14 +132,11 @@ def _pieces(run: VectorRun, ident: str, size: tuple[int, int], widths: Array | N
     for index, members in enumerate(pieces):
         cut = run.cut_of(index)
         drawn = [i for i in members if i not in cut]
-        own = None if run.piece_keys is None else run.piece_keys[index]
+        own = run.piece_keys[index] if run.piece_keys is not None else None
         if own is not None:
             frames, paths, eases = own
             shape, moves = _geometry(frames, list(paths), tuple(run.closed[i] for i in drawn), eases, total, timing)
-        elif len(drawn) > 1:
-            shape, moves = _geometry(run.path_frames, [run.paths[i] for i in drawn], tuple(run.closed[i] for i in drawn),
-                                     run.eases, total, timing)
-        else:
+        else:  # one contour left in the piece
             shape, moves = _own_geometry(run, drawn[0], total, timing)
         if cut:
             mask = f"{ident}-cut-{index}"

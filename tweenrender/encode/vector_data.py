@@ -128,7 +128,7 @@ class VectorRun:
     the piece's other contours, holds none, and the fill leaves its inside empty: :func:`..vector.pieces.cut_holes`;
     ``None``: none); ``piece_keys``, per piece, the keyframes of the piece's other contours where they are several,
     fitted over them alone (``(frames, one path per contour, eases)``), ``None`` where one is left (its own, with
-    its move: :meth:`keys_of`, :meth:`move_of`), as are the holes cut out.
+    its move: :meth:`keys_of`, :meth:`move_of`), as are the holes cut out; set whenever ``pieces`` is.
     """
 
     element: str

@@ -302,7 +302,7 @@ def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], 
     have keyframes of their own and one dash pattern. In a plain fill (no stroke) a piece's holes
     that stay as far from its other contours are cut out of it (:func:`.pieces.cut_holes`); the rest of a piece
     of several contours is keyed on its own (as :func:`keyed_curves` keys a run)."""
-    if fits is None or run.contour_keys is None or run.dash is not None or len(run.paths) < 2:
+    if fits is None or run.dash is not None or len(run.paths) < 2:  # fits: its contours keyed apart
         return run
     reach = 0.0 if run.stroke is None else 0.5 * float(np.max(run.width, initial=0.0)) * max(run.miter_limit,
                                                                                               np.sqrt(2.0))

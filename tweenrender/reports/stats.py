@@ -14,7 +14,7 @@ from ..core.methods.intrinsic import closure_tweak
 from ..core.methods.qcurves import AutoChoice, auto_choice
 from ..core.methods.registry import REGISTRY, measured_methods
 from ..core.pops import changes, frames_digest, pops
-from ..core.stray import STRAY_REACH, Area, stray_shares
+from ..core.stray import STRAY_REACH, Area, stray_shares, stroke_stray_shares
 from ..core.tangles import contact_times
 from ..core.timing.timeline import (ShapeAt, Track, evaluate_segment, injective_fallback_of, segment_choice,
                                     tracks_of)
@@ -71,14 +71,17 @@ def stats_dict(scene: Scene, t: Sequence[float], methods: Sequence[str] | None =
             "auto": _auto_of(choice, scene, entry.shape),
             "methods": measured,
         })
-    others = [_other_entry(entry, scene, methods, every, quality, paths) for entry in other_entries(scene)]
+    others = [_other_entry(entry, scene, methods, every, quality, paths, filled_in) for entry in other_entries(scene)]
     # the view is worked out last: some methods keep what they worked out for the next call, so the
     # measures above see the calls in the order they always did
     tracks = tracks_of(scene)
     view = scene_view(scene, tracks, (None,))
     reach = STRAY_REACH * max(view[2] - view[0], view[3] - view[1])
     for measures, found in filled_in:
-        measures["stray_max"] = found.stray_max(reach)
+        if found.areas:
+            measures["stray_max"] = found.stray_max(reach)
+        if found.lines and found.lines[0]:
+            measures["stroke_stray_max"] = found.stroke_stray_max(reach)
     out: dict[str, Any] = {"scene": str(scene.path) if scene.path else None, "shapes": shapes, "others": others}
     if not shapes:
         out["note"] = _OTHERS_ONLY if others else nothing_measured(scene)
@@ -92,11 +95,13 @@ _OTHERS_ONLY = ("no closed contour is in both keys of a segment: the thesis's me
 
 
 def _other_entry(entry: Entry, scene: Scene, methods: Sequence[str] | None, every: dict[str, None],
-                 quality: dict[tuple[int, int, str], "_Quality"], paths: SegmentPaths) -> dict[str, Any]:
+                 quality: dict[tuple[int, int, str], "_Quality"], paths: SegmentPaths,
+                 filled_in: list[tuple[dict[str, Any], "_Quality"]]) -> dict[str, Any]:
     """A segment with no closed contour in both keys (``others`` in ``stats --json``): its open strokes and
     its contours growing or shrinking, what auto draws (None where no contour is in both keys), and per
     method where the element tangles and its strokes cross (and why ``injective`` drew rigid paths). No
-    stray: it is measured on the area closed outlines in both keys enclose."""
+    ``stray_max`` (no outline in both keys encloses an area); its strokes' stray is filled in later, with
+    the view (``filled_in``)."""
     segment = entry.segment
     names = tuple(methods) if methods is not None else measured_methods(jointed=bool(segment.joints))
     every.update(dict.fromkeys(names))
@@ -105,6 +110,7 @@ def _other_entry(entry: Entry, scene: Scene, methods: Sequence[str] | None, ever
     for method in names:
         found = _quality(entry, method, quality, paths, areas=False)
         measured[method] = {"crossings": list(found.crossings), "stroke_crossings": list(found.strokes)}
+        filled_in.append((measured[method], found))
         if method == "injective":
             measured[method]["fallback"] = injective_fallback_of(segment)
     head = entry.head()
@@ -124,12 +130,16 @@ def _auto_of(choice: AutoChoice, scene: Scene, shape: Shape) -> dict[str, Any]:
 @dataclass(slots=True)
 class _Quality:
     """One shape's quality in one segment under one method: its tangled t over :data:`SWEEP`, and its
-    drawn areas over :data:`STRAY_SWEEP`, whose stray waits for the view."""
+    drawn areas and open strokes (``lines``, ``(L_i, 2)`` each) over :data:`STRAY_SWEEP`, whose stray waits for
+    the view, with every contour of both keys (``keys``: points, closed) the strokes' stray is measured from."""
 
     crossings: list[float]
     strokes: list[float]
     areas: list[Area]
+    lines: list[list[Array]]
+    keys: list[tuple[Array, bool]]
     stray: float | None = None
+    stroke_stray: float | None = None
 
     def stray_max(self, reach: float) -> float:
         """The largest :func:`~tweenrender.core.stray.stray_shares` of the areas (``reach`` in scene units,
@@ -137,6 +147,15 @@ class _Quality:
         if self.stray is None:
             self.stray = float(stray_shares(self.areas, self.areas[0], self.areas[-1], reach).max())
         return self.stray
+
+    def stroke_stray_max(self, reach: float) -> float:
+        """The largest share of the open strokes' length farther than ``reach`` from both keys, their areas and
+        their contours (:func:`~tweenrender.core.stray.stroke_stray_shares`: what a viewer sees of a stroke
+        swinging out, which encloses no area)."""
+        if self.stroke_stray is None:
+            areas = (self.areas[0], self.areas[-1]) if self.areas else (([], "nonzero"), ([], "nonzero"))
+            self.stroke_stray = float(stroke_stray_shares(self.lines, *areas, self.keys, reach).max(initial=0.0))
+        return self.stroke_stray
 
 
 def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Quality],
@@ -157,7 +176,10 @@ def _quality(entry: Entry, method: str, done: dict[tuple[int, int, str], _Qualit
                                            [frames[k][-1] for k in drawn_through])
         few = [f[_STRAY_ROWS] for f in frames]
         drawn = [_area(at, entry.shape) for at in evaluate_segment(segment, STRAY_SWEEP, method, few)] if areas else []
-        done[key] = _Quality(crossings, strokes, drawn)
+        stroked = [k for k in drawn_through if not segment.pairs[k].closed]
+        lines = [[frames[k][row] for k in stroked] for row in _STRAY_ROWS]
+        keys = [(frames[k][end], segment.pairs[k].closed) for k in drawn_through for end in (0, -1)]
+        done[key] = _Quality(crossings, strokes, drawn, lines, keys)
     return done[key]
 
 
@@ -269,6 +291,8 @@ def _quality_words(r: dict[str, Any]) -> list[str]:
         lines.append(f"Its strokes cross at t = {runs(r['stroke_crossings'])}")
     if "stray_max" in r:
         lines.append(f"At most {100 * r['stray_max']:.1f} % of an inbetween strays from both keys")
+    if "stroke_stray_max" in r:
+        lines.append(f"At most {100 * r['stroke_stray_max']:.1f} % of its strokes' length strays from both keys")
     return lines
 
 

@@ -327,7 +327,7 @@ def candidate_paths(method: str, k0s: Sequence[Array], k1s: Sequence[Array], clo
 def candidate_quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
                       view: float = 0.0) -> tuple[int, float]:
     """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included) and the largest
-    stray, the reach 12 % of the view's larger side ``view`` (:func:`stray_reach`)."""
+    stray (of the filled area or of the strokes' length, :func:`_stray`), the reach 12 % of the view's larger side ``view`` (:func:`stray_reach`)."""
     return _tangled(frames, k0s, k1s, closed), _stray(frames, k0s, k1s, closed, view)
 
 
@@ -370,7 +370,15 @@ def _tangled(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array]
 
 def _stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
            view: float = 0.0) -> float:
-    """The largest stray of ``frames`` at :data:`QUALITY_T`, within :func:`stray_reach` of ``view``."""
+    """The largest stray of ``frames`` at :data:`QUALITY_T`, within :func:`stray_reach` of ``view``: of the area the
+    closed contours fill, or of the open strokes' length (:func:`stroke_stray`), whichever strays more (a stroke
+    encloses no area, yet a viewer sees it swing out)."""
+    return max(_area_stray(frames, k0s, k1s, closed, view), stroke_stray(frames, k0s, k1s, closed, view))
+
+
+def _area_stray(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
+                view: float = 0.0) -> float:
+    """The largest stray of the area the closed contours of ``frames`` fill at :data:`QUALITY_T`."""
     filled = [len(k) >= 3 and shut for k, shut in zip(k0s, closed)]
     reach = stray_reach(k0s, k1s, view)
     if not any(filled) or not reach > 0:

@@ -216,7 +216,8 @@ def test_an_element_of_open_strokes_alone_is_measured_for_crossings(tmp_path) ->
     strokes can still cross: an upright stroke slides from x = 10 to 30 through a short level one at
     x = 18.5 … 21.5. They are apart in both keys, and on the straight paths meet from t = 0.425 to 0.575.
     `stats` reports the element under ``others``, with what auto draws and, per method, the t at which
-    shapely finds the drawn strokes crossing; no stray, which is measured on closed outlines' area."""
+    shapely finds the drawn strokes crossing; no ``stray_max``, which is measured on closed outlines' area
+    (the strokes stray by their length)."""
     import shapely
 
     scene = tr.load_scene([_two_strokes(tmp_path, 10), _two_strokes(tmp_path, 30)], step=1.0)
@@ -235,6 +236,32 @@ def test_an_element_of_open_strokes_alone_is_measured_for_crossings(tmp_path) ->
     words = stats_text(stats)
     assert "OTHERS strokes, segment 0 (0 s to 1 s): 2 open strokes" in words
     assert "Its strokes cross at t = 0.43 to 0.57" in words and "the thesis's measures need closed outlines" in words
+
+
+def test_an_open_stroke_strays_by_its_length_the_closed_form(tmp_path) -> None:
+    """``stroke_stray_max``: the largest share of the strokes' length (t = k/20) farther than 12 % of the view
+    (4.8 of 40) from both keys' contours. Sliding at x = 10 + 20 t, the upright stroke (y = 10 … 30) is near the
+    keys' uprights while within 4.8 of x = 10 or 30, and elsewhere only where within 4.8 of the level stroke
+    (x = 18.5 … 21.5, y = 20, near in every frame): |y − 20| ≤ √(4.8² − dx²), dx its gap to the level stroke
+    in x. Of both strokes' 23 units, the far share peaks at t = 0.25 and 0.75: (20 − 2√(4.8² − 3.5²)) / 23."""
+    import math
+
+    scene = tr.load_scene([_two_strokes(tmp_path, 10), _two_strokes(tmp_path, 30)], step=1.0)
+    entry = stats_dict(scene, [0.5], ["linear"])["others"][0]
+
+    def far_share(t: float) -> float:
+        x = 10.0 + 20.0 * t
+        if min(x - 10.0, 30.0 - x) <= 4.8:
+            return 0.0
+        dx = max(0.0, 18.5 - x, x - 21.5)
+        near = 2.0 * math.sqrt(4.8 ** 2 - dx ** 2) if dx < 4.8 else 0.0
+        return (20.0 - near) / 23.0
+
+    exact = max(far_share(k / 20) for k in range(21))
+    assert exact == pytest.approx((20 - 2 * math.sqrt(4.8 ** 2 - 3.5 ** 2)) / 23)
+    assert entry["methods"]["linear"]["stroke_stray_max"] == pytest.approx(exact, abs=0.01)
+    assert f"At most {100 * entry['methods']['linear']['stroke_stray_max']:.1f} % of its strokes' length" in (
+        stats_text(stats_dict(scene, [0.5], ["linear"])))
 
 
 def test_an_element_whose_contours_all_grow_or_shrink_is_measured_for_tangles(tmp_path) -> None:

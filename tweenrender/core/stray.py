@@ -24,7 +24,7 @@ from typing import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from .coverage import Grid, band, by_rule, dilate, filled, winding
+from .coverage import Grid, by_rule, dilate, filled, winding
 
 __all__ = ["Area", "STRAY_REACH", "stray_shares", "stroke_stray_shares"]
 
@@ -65,25 +65,35 @@ def stroke_stray_shares(strokes: Sequence[Sequence[Array]], key0: Area, key1: Ar
     """The share of the length of each in-between's open strokes ``strokes[k]`` (``(L_i, 2)`` each) lying
     farther than ``reach`` from both keys: from their areas ``key0``, ``key1`` and their contours ``lines``
     (``(points (N, 2), closed)``, both keys'): ``(T,)`` in [0, 1] (0 for an in-between of no stroke length,
-    or a reach of 0). On the grid of :func:`stray_shares`; each edge is read at the middles of pieces at
-    most a cell long; the contours are drawn a few cells wide before they are grown by the reach, so a
-    piece within a cell and a half past the reach of one may count as near."""
+    or a reach of 0). Each edge is read at the middles of pieces at most a cell of the grid of
+    :func:`stray_shares` long; a middle is near where its cell is near the areas, else where its exact
+    distance to the contours' edges is within the reach."""
     out = np.zeros(len(strokes))
     grid = _grid([c for frame in strokes for c in frame] + [c for area in (key0, key1) for c in area[0]]
                  + [c for c, _ in lines], reach)
     if grid is None:
         return out
     near = _near(grid, key0, reach) | _near(grid, key1, reach)
-    drawn = [(np.asarray(c, dtype=np.float64).reshape(-1, 2), shut) for c, shut in lines if len(c) >= 1]
-    if drawn:
-        near |= dilate(band(grid, [c for c, _ in drawn], [s for _, s in drawn], 3.0 * grid.cell), reach / grid.cell)
+    drawn = [np.asarray(c, dtype=np.float64).reshape(-1, 2) for c, _ in lines]
+    ends = [(c, np.roll(c, -1, axis=0) if shut and len(c) >= 3 else np.vstack([c[1:], c[-1:]]))
+            for c, (_, shut) in zip(drawn, lines) if len(c) >= 1]
+    a = np.concatenate([e[0] for e in ends]) if ends else np.zeros((0, 2))
+    b = np.concatenate([e[1] for e in ends]) if ends else np.zeros((0, 2))
     for k, frame in enumerate(strokes):
         middles, lengths = _pieces_of([np.asarray(c, dtype=np.float64).reshape(-1, 2) for c in frame], grid.cell)
         total = float(lengths.sum())
-        if total > 0:
-            column = np.clip(((middles[:, 0] - grid.x0) / grid.cell).astype(np.int64), 0, grid.nx - 1)
-            row = np.clip(((middles[:, 1] - grid.y0) / grid.cell).astype(np.int64), 0, grid.ny - 1)
-            out[k] = float(lengths[~near[row, column]].sum()) / total
+        if not total > 0:
+            continue
+        column = np.clip(((middles[:, 0] - grid.x0) / grid.cell).astype(np.int64), 0, grid.nx - 1)
+        row = np.clip(((middles[:, 1] - grid.y0) / grid.cell).astype(np.int64), 0, grid.ny - 1)
+        close = near[row, column]
+        if len(a):
+            rest = np.flatnonzero(~close)
+            step = max(1, _CHUNK // len(a))
+            for start in range(0, len(rest), step):
+                picked = rest[start:start + step]
+                close[picked] = _distance(middles[picked], a, b) <= reach
+        out[k] = float(lengths[~close].sum()) / total
     return out
 
 

@@ -327,7 +327,8 @@ def candidate_paths(method: str, k0s: Sequence[Array], k1s: Sequence[Array], clo
 def candidate_quality(frames: Sequence[Array], k0s: Sequence[Array], k1s: Sequence[Array], closed: Sequence[bool],
                       view: float = 0.0) -> tuple[int, float]:
     """How many of :data:`QUALITY_T` tangle (crossings over the whole shape, strokes' included) and the largest
-    stray (of the filled area or of the strokes' length, :func:`_stray`), the reach 12 % of the view's larger side ``view`` (:func:`stray_reach`)."""
+    stray (of the filled area or of the strokes' length, :func:`_stray`), the reach 12 % of the view's larger
+    side ``view`` (:func:`stray_reach`)."""
     return _tangled(frames, k0s, k1s, closed), _stray(frames, k0s, k1s, closed, view)
 
 

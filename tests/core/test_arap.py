@@ -110,9 +110,9 @@ def test_copies_keep_the_drawn_outline_near_the_first_key() -> None:
 
 
 def test_a_pair_of_keys_is_factored_once(monkeypatch: pytest.MonkeyPatch) -> None:
-    built = []
-    original = arap_module.arap_paths
-    monkeypatch.setattr(arap_module, "arap_paths", lambda *a, **k: built.append(1) or original(*a, **k))
+    from tests.helpers import count_calls
+
+    built = count_calls(monkeypatch, arap_module, "arap_paths")
     k1 = SHAPE * [1.2, 0.9] + [0.5, 3.0]
     first = arap(SHAPE, k1, T[:10])
     second = arap(SHAPE, k1, T[10:])

@@ -42,6 +42,48 @@ def test_a_shape_grown_from_a_moving_point_is_found_with_its_scales() -> None:
     np.testing.assert_allclose(centres, points, atol=1e-9)
 
 
+def _replayed(move: object, count: int) -> np.ndarray:
+    """Where a :class:`ContourMove` puts its centre and scale at frames ``0 .. count - 1`` as a player does: held
+    before the first keyframe and after the last, between them through each span's CSS cubic-bezier found by
+    bisection (tests/vector_players.py): ``(count, 3)``."""
+    from tests.vector_players import bezier_timing
+
+    frames = np.asarray(move.frames)  # type: ignore[attr-defined]
+    values = np.concatenate([move.centres, move.scales[:, None]], axis=1)  # type: ignore[attr-defined]
+    out = np.empty((count, 3))
+    for f in range(count):
+        k = int(np.clip(np.searchsorted(frames, f, side="right") - 1, 0, len(frames) - 1))
+        if k == len(frames) - 1 or f <= frames[0]:
+            out[f] = values[k]
+            continue
+        x = (f - frames[k]) / (frames[k + 1] - frames[k])
+        y = bezier_timing(np.array([x]), move.eases[k])[0]  # type: ignore[attr-defined]
+        out[f] = values[k] + y * (values[k + 1] - values[k])
+    return out
+
+
+def test_a_shape_growing_with_its_area_linear_in_t_takes_one_span_of_its_own_timing() -> None:
+    """Its scale is √t. A timing whose handles sit a third and two thirds of the way in time is a cubic in t, which
+    cannot follow √t's upright start within the bound in one span (the keys took four); a CSS cubic-bezier free in
+    both handles can (x1 = 0 leaves the first keyframe upright). Replayed by bisection at every frame: each point of
+    the path within the bound of the exact frame, in two keyframes."""
+    from tweenrender.vector.scaled_keys import scaled_contour
+
+    star = _star()
+    t = np.linspace(0.0, 1.0, 25)
+    frames = star.mean(axis=0) + np.sqrt(t)[:, None, None] * (star - star.mean(axis=0))  # (25, 10, 2)
+    found = scaled_contour(frames, True, 0.05, lambda fitted: 0.25 - fitted, 6)
+    assert found is not None
+    move = found.move
+    assert len(move.frames) == 2, move.frames
+    played = _replayed(move, len(t))
+    path = found.curve[0, :, 1]  # the still path's vertices, (M, 2)
+    for f in range(len(t)):
+        at = played[f, :2] + played[f, 2] * (path - move.anchor)
+        exact = star.mean(axis=0) + np.sqrt(t[f]) * (path - star.mean(axis=0))
+        assert float(np.linalg.norm(at - exact, axis=1).max()) <= 0.25, f
+
+
 def test_a_turn_a_stretch_or_a_still_shape_is_not_a_homothety() -> None:
     star = _star()
     centred = star - star.mean(axis=0)

@@ -7,7 +7,9 @@ holding every vertex (the scale is √t, not straight in t); keyed as its larges
 under a transform whose position and scale are keyed, it holds its vertices once. Both ways a player moves
 the drawn points straight between keyframes (a point's image is linear in ``(c, s)``), so the keyframes of
 ``(c_x, c_y, s·R)`` within ``e/√2`` play every point within ``R`` of ``a`` within ``e`` (Cauchy–Schwarz:
-``|Δc + Δs·(x - a)| ≤ √2·|(Δc, Δs·R)|``).
+``|Δc + Δs·(x - a)| ≤ √2·|(Δc, Δs·R)|``). Where ``(c, s·R)`` keeps to one straight line (a scale about a fixed
+point), one span on a timing free in both handles often follows √t where even timings need several
+(:mod:`.free_timing`).
 """
 
 from __future__ import annotations
@@ -19,8 +21,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .curves import fit_curves
+from .free_timing import free_span
 from .keyframes import fit_keyframes
-from ..encode.vector_data import SCALE_DIGITS, ContourMove, Handles
+from ..encode.vector_data import SCALE_DIGITS, ContourMove
 
 __all__ = ["ScaledContour", "homothety", "scaled_contour", "HOMOTHETY_SLACK"]
 
@@ -82,12 +85,16 @@ def scaled_contour(samples: Array, closed: bool, curve_tolerance: float, key_tol
     tolerance = key_tolerance(error) - HOMOTHETY_SLACK - reach * 0.5 * 10.0 ** -(SCALE_DIGITS + 2)
     if reach <= 0.0 or tolerance <= 0.0:
         return None
-    values = np.concatenate([centres, scales[:, None] * reach], axis=1)[:, None]  # (F, 1, 3)
-    keys = fit_keyframes(values, tolerance / np.sqrt(2.0))
+    values = np.concatenate([centres, scales[:, None] * reach], axis=1)  # (F, 3)
+    keys = fit_keyframes(values[:, None], tolerance / np.sqrt(2.0))
+    frames, keyed, handles = keys.frames, keys.values[:, 0], keys.handles()
+    if len(frames) > 2:  # one span on a timing of its own, where the centre moves with the scale
+        span = free_span(values, tolerance / np.sqrt(2.0))
+        if span is not None and len(span.frames) < len(frames):
+            frames, keyed, handles = span.frames, span.values, span.eases
     vertices = curve.shape[1]
-    moved_chars = _GROUP_CHARS + len(keys.frames) * _MOVE_CHARS + vertices * _VERTEX_CHARS
+    moved_chars = _GROUP_CHARS + len(frames) * _MOVE_CHARS + vertices * _VERTEX_CHARS
     if moved_chars >= own_keyframes * (vertices * _VERTEX_CHARS + _KEY_CHARS):
         return None
-    handles: tuple[Handles, ...] = keys.handles()
-    move = ContourMove(keys.frames, keys.values[:, 0, :2], keys.values[:, 0, 2] / reach, handles, anchor)
+    move = ContourMove(frames, keyed[:, :2], keyed[:, 2] / reach, handles, anchor)
     return ScaledContour(curve, move, error)

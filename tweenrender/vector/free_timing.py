@@ -16,9 +16,10 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from ..core.timing.easing import CubicBezier
 from ..encode.vector_data import HANDLE_DIGITS, STRAIGHT, Handles
 
-__all__ = ["FreeSpan", "free_span", "progress_at"]
+__all__ = ["FreeSpan", "free_span"]
 
 Array = NDArray[np.float64]
 
@@ -26,7 +27,6 @@ _GROWING: Handles = (0.0, 0.436054, 0.573517, 0.785867)
 """A CSS cubic-bezier within 1.2e-4 of √x on [0, 1] (a shape grown with its area linear in time)."""
 _SHRINKING: Handles = (1.0 - _GROWING[2], 1.0 - _GROWING[3], 1.0 - _GROWING[0], 1.0 - _GROWING[1])
 """Its mirror, 1 − √(1 − x) (a shape shrunk so)."""
-_SOLVE_STEPS = 40  # bisection halvings finding the curve's parameter at a time (2^-40 of the span)
 _SEARCH_EVALUATIONS = 800  # timings the search for a span's handles measures, at most
 _TABLE = 513  # points of the curve the search reads each timing's progress off (checked exactly after)
 
@@ -39,21 +39,6 @@ class FreeSpan:
     frames: tuple[int, ...]
     values: Array
     eases: tuple[Handles, ...]
-
-
-def progress_at(x: Array, handles: Handles) -> Array:
-    """CSS ``cubic-bezier(x1, y1, x2, y2)`` at times ``x (T,)`` in [0, 1]: the progress y where the curve's x is x,
-    its parameter found by bisection (x1, x2 in [0, 1] make x monotone): ``(T,)``."""
-    x1, y1, x2, y2 = handles
-    low, high = np.zeros_like(x), np.ones_like(x)
-    for _ in range(_SOLVE_STEPS):
-        u = 0.5 * (low + high)
-        v = 1.0 - u
-        below = 3.0 * v * v * u * x1 + 3.0 * v * u * u * x2 + u * u * u < x
-        low, high = np.where(below, u, low), np.where(below, high, u)
-    u = 0.5 * (low + high)
-    v = 1.0 - u
-    return 3.0 * v * v * u * y1 + 3.0 * v * u * u * y2 + u * u * u
 
 
 def free_span(values: Array, tolerance: float) -> FreeSpan | None:
@@ -86,8 +71,8 @@ def free_span(values: Array, tolerance: float) -> FreeSpan | None:
 
 def _fitted(inside: Array, tolerance: float) -> Handles | None:
     """The handles of one span from the first of ``inside (n, D)`` to the last that plays every frame within
-    ``tolerance`` (replayed by bisection), or None: the values leave the straight line between them, or no timing
-    found does."""
+    ``tolerance`` (replayed as CSS's cubic-bezier, :class:`~tweenrender.core.timing.easing.CubicBezier`), or None:
+    the values leave the straight line between them, or no timing found does."""
     start, end = inside[0], inside[-1]
     chord = end - start
     length = float(np.linalg.norm(chord))
@@ -96,8 +81,8 @@ def _fitted(inside: Array, tolerance: float) -> Handles | None:
     progress = (inside - start) @ chord / (length * length)  # (n,)
     x = np.arange(len(inside)) / (len(inside) - 1)
 
-    def miss(handles: Handles) -> float:
-        played = start + progress_at(x, handles)[:, None] * chord
+    def miss(handles: Handles) -> float:  # as a player plays the span (the curve solved at each frame's time)
+        played = start + CubicBezier(*handles)(x)[:, None] * chord
         return float(np.linalg.norm(played - inside, axis=1).max())
 
     if float(np.linalg.norm(inside - (start + progress[:, None] * chord), axis=1).max()) > tolerance:

@@ -89,10 +89,7 @@ def stroke_stray_shares(strokes: Sequence[Sequence[Array]], key0: Area, key1: Ar
         close = near[row, column]
         if len(a):
             rest = np.flatnonzero(~close)
-            step = max(1, _CHUNK // len(a))
-            for start in range(0, len(rest), step):
-                picked = rest[start:start + step]
-                close[picked] = _distance(middles[picked], a, b) <= reach
+            close[rest] = _within(middles[rest], a, b, reach)
         out[k] = float(lengths[~close].sum()) / total
     return out
 
@@ -145,11 +142,18 @@ def _near(grid: Grid, area: Area, reach: float) -> NDArray[np.bool_]:
     a = np.concatenate(shut)
     b = np.concatenate([np.roll(c, -1, axis=0) for c in shut])
     centres = np.stack([grid.x0 + (columns + 0.5) * grid.cell, grid.y0 + (rows + 0.5) * grid.cell], axis=1)
-    step = max(1, _CHUNK // len(a))
-    for start in range(0, len(centres), step):
-        p = centres[start:start + step]
-        near[rows[start:start + step], columns[start:start + step]] = _distance(p, a, b) <= reach
+    near[rows, columns] = _within(centres, a, b, reach)
     return near
+
+
+def _within(points: Array, a: Array, b: Array, reach: float) -> NDArray[np.bool_]:
+    """Whether each of ``points (P, 2)`` lies within ``reach`` of one of the segments ``a → b`` (``(E, 2)`` each,
+    E ≥ 1): ``(P,)``, :data:`_CHUNK` point-segment distances at a time."""
+    out = np.zeros(len(points), dtype=bool)
+    step = max(1, _CHUNK // len(a))
+    for start in range(0, len(points), step):
+        out[start:start + step] = _distance(points[start:start + step], a, b) <= reach
+    return out
 
 
 def _distance(points: Array, a: Array, b: Array) -> Array:

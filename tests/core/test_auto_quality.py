@@ -321,3 +321,57 @@ def test_auto_never_carries_a_stroke_further_from_its_keys_than_straight_paths(t
                 assert worst("auto") <= worst("linear") + 0.02 + 1e-3, track.name
                 strokes += 1
     assert strokes == 3
+
+
+BOXED_MARK = ('<svg xmlns="http://www.w3.org/2000/svg" width="24" height="24" viewBox="0 0 24 24">'
+              '<path fill-rule="evenodd" d="M3 3H21V21H3Z M5 5V19H19V5Z M8 8H16L12 16Z"/></svg>')
+RING_AS_ONE = ('<svg xmlns="http://www.w3.org/2000/svg" width="24" height="24" viewBox="0 0 24 24">'
+               '<path d="M0 0H24V24H0V1H1V23H23V1H2Z"/></svg>')  # out round, in through a notch, back round
+
+
+def test_an_outline_becomes_a_ring_drawn_as_one_contour_without_the_mark_inside_crossing_it(tmp_path: Path) -> None:
+    """A box (an outline and its hole) with a mark inside becomes a ring drawn as one contour, as some icon
+    sets draw outlines. The box is the ring's partner and the mark shrinks away inside it: checked with
+    shapely, no two contours apart in both keys meet at any t of the quality sweep. Paired by ink alone,
+    the mark became the ring and grew out through the box shrinking inside it (the box, its hole and the mark
+    apart in both keys, meeting at every t); as partners, the hole and the mark morph in the box's mesh."""
+    import tweenrender as tr
+
+    (tmp_path / "a.svg").write_text(BOXED_MARK)
+    (tmp_path / "b.svg").write_text(RING_AS_ONE)
+    scene = tr.load_scene([tmp_path / "a.svg", tmp_path / "b.svg"], step=1.0)
+
+    def shapes(t: float) -> list[object]:
+        drawn = tr.contours(scene, t, points=True)
+        return [Polygon(c.points) if len(np.unique(c.points, axis=0)) >= 3 else None for c in drawn]
+
+    first, last = shapes(0.0), shapes(1.0)
+    apart = [(i, j) for i in range(len(first)) for j in range(i + 1, len(first))
+             if (first[i] is None or first[j] is None or not first[i].exterior.intersects(first[j].exterior))
+             and (last[i] is None or last[j] is None or not last[i].exterior.intersects(last[j].exterior))]
+    for t in QUALITY_T:
+        now = shapes(float(t))
+        met = [(i, j) for i, j in apart if now[i] is not None and now[j] is not None
+               and now[i].exterior.intersects(now[j].exterior)]
+        assert not met, (float(t), met)
+
+
+def test_a_book_outline_drawn_as_one_contour_becomes_the_inbox_outline_not_its_arrow() -> None:
+    """lucide's book-search becoming mdi's inbox (``tests/data/pairs``): the book's outline is one contour, a band of
+    ink out round and back (85 units² of ink within an 18 × 19.5 outline); the inbox has its outline (18 × 18,
+    with three holes) and a small arrow (8 × 7). By ink alone the book was as large as the arrow and became it, the
+    inbox's outline growing from a point; the outline the book draws is the inbox's. Read from what render draws:
+    the contour that ends as the inbox's outline (its box at t → 1) starts as the book's (its box at t → 0)."""
+    import tweenrender as tr
+
+    folder = Path(__file__).resolve().parents[1] / "data" / "pairs"
+    scene = tr.load_scene([folder / "lucide-book-search.svg", folder / "mdi-inbox-arrow-up-outline.svg"], step=1.0)
+    start, end = (tr.contours(scene, t, points=True) for t in (1e-6, 1 - 1e-6))
+
+    def box(points: np.ndarray) -> np.ndarray:
+        return np.r_[points.min(axis=0), points.max(axis=0)]
+
+    outline = [k for k, c in enumerate(end) if np.ptp(c.points, axis=0).min() > 17.5]
+    assert len(outline) == 1
+    first = box(start[outline[0]].points)
+    assert np.ptp(first.reshape(2, 2), axis=0).min() > 17.5, first  # the book's outline, 18 × 19.5

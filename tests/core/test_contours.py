@@ -52,6 +52,20 @@ def test_holes_pair_with_holes_and_the_rest_has_no_partner() -> None:
     assert pair_contours(b, [True] * 2, a, [True] * 3) == [(0, 0), (1, 2), (None, 1)]
 
 
+def test_a_ring_drawn_as_one_contour_pairs_with_the_outline_it_is_drawn_like() -> None:
+    """A square outline drawn as an outer and its hole, a small square in the middle; the other key draws a
+    thin ring as one contour (out round the outside, in through a notch, back round the inside, as some
+    icon sets draw outlines). The ring's own area (24² − 22², about 92) is that of a square of side 9.6,
+    close to the small square's 8; to the eye it is nearer its 24 × 24 hull (the geometric mean of the two
+    areas, a square of side 15.2), and the outline of side 18 is its partner: paired the other way, the small
+    square grows out through the outline it sits in."""
+    a = [square(3, 3, 18), square(5, 5, 14, clockwise=True), square(8, 8, 8)]
+    ring = np.array([[0, 0], [24, 0], [24, 24], [0, 24], [0, 1], [1, 1], [1, 23], [23, 23], [23, 1], [2, 1]],
+                    dtype=float)
+    assert roles(a, [True] * 3) == ["outer", "hole", "outer"] and roles([ring], [True]) == ["outer"]
+    assert pair_contours(a, [True] * 3, [ring], [True]) == [(0, 0), (1, None), (2, None)]
+
+
 def test_anchor_is_the_centre_inside_the_partner_else_its_nearest_outline_point() -> None:
     partner = [square(0, 0, 10)]
     inside = square(4, 4, 1)

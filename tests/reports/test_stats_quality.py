@@ -296,11 +296,11 @@ def test_an_element_whose_contours_all_grow_or_shrink_is_measured_for_tangles(tm
 
 
 def test_auto_says_when_contours_without_a_partner_tangle_and_no_mesh_holds_them() -> None:
-    """lucide's book-search becoming mdi's inbox (``tests/data/pairs``): the tray has no partner and grows where the
-    book's outline still passes, and no mesh can hold it. What render draws tangles, as shapely sees it, and auto's
-    reason says so, with the count of t, rather than only the moving contours' count ("injective: tangled at 0")."""
+    """mdi's moped becoming its docker whale (``tests/data/pairs``): the containers have no partner, a wheel passes
+    through the body on its way to one, and no mesh can hold them. What render draws tangles, as shapely sees it, and
+    auto's reason says so, with the count of t, rather than only the moving contours' count."""
     folder = DATA / "pairs"
-    scene = tr.load_scene([folder / "lucide-book-search.svg", folder / "mdi-inbox-arrow-up-outline.svg"], step=1.0)
+    scene = tr.load_scene([folder / "mdi-moped-outline.svg", folder / "mdi-docker.svg"], step=1.0)
     seen = _shapely_crossings(scene, scene.method_of(scene.shapes[0]))
     assert seen, "shapely finds the drawn in-betweens tangled"
     shapes = stats_dict(scene, [0.5], ["auto"])["shapes"]

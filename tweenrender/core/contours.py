@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .correspondence.assignment import min_cost_assignment
-from .geometry import bounding_boxes, boxes_holding, signed_area
+from .geometry import bounding_boxes, boxes_holding, hull_area, signed_area
 from .tangles import _relation, proper_crossings
 
 __all__ = ["ROLES", "inside", "roles", "pair_contours", "keep_nesting", "nearest_point", "anchor",
@@ -77,11 +77,13 @@ def _probe(points: Array) -> Array:
 
 
 def contour_size(points: Array, closed: bool) -> float:
-    """A length that measures the contour: √|area| for a closed one, its length for an open one,
-    at least its bounding box's diagonal / 100 so that flat contours still compare."""
+    """A length that measures how large a contour looks: for a closed one the geometric mean of √ its
+    area and √ its convex hull's area (a ring drawn as one contour, out round the outside and back round
+    the inside, is larger to the eye than its thin band of ink; a crescent smaller than its hull), for an
+    open one its length; at least its bounding box's diagonal / 100 so that flat contours still compare."""
     diag = float(np.hypot(*np.ptp(points, axis=0))) if len(points) else 0.0
     if closed and len(points) >= 3:
-        measure = float(np.sqrt(abs(signed_area(points))))
+        measure = float((abs(signed_area(points)) * hull_area(points)) ** 0.25)
     else:
         measure = float(np.linalg.norm(np.diff(points, axis=0), axis=1).sum())
     return max(measure, diag / 100.0, 1e-300)

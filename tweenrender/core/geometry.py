@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 __all__ = ["bounding_boxes", "boxes_holding", 
     "centroid", "edges", "edge_lengths", "perimeter", "signed_area", "area",
-    "best_fit_rotation", "spoke_rotation", "rotate", "cross", "outline_length",
+    "best_fit_rotation", "spoke_rotation", "rotate", "cross", "outline_length", "hull_area",
 ]
 
 Array = NDArray[np.float64]
@@ -58,6 +58,28 @@ def signed_area(points: Array) -> Array:
 
 def area(points: Array) -> Array:
     return np.abs(signed_area(points))
+
+
+def hull_area(points: Array) -> float:
+    """The area of the convex hull of ``points (N, 2)`` (quickhull, each split one numpy pass): the
+    triangle from a chord to the farthest point beyond it, then the same on the two new chords."""
+    pts = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+    if len(pts) < 3:
+        return 0.0
+    a, b = pts[np.argmin(pts[:, 0])], pts[np.argmax(pts[:, 0])]
+    total = 0.0
+    chords = [(a, b, pts), (b, a, pts)]
+    while chords:
+        p, q, near = chords.pop()
+        height = cross(q - p, near - p)  # twice the triangle (p, q, x) for each x: > 0 beyond the chord
+        beyond = near[height > 0.0]
+        if not len(beyond):
+            continue
+        k = int(np.argmax(height[height > 0.0]))
+        far = beyond[k]
+        total += 0.5 * float(height[height > 0.0][k])
+        chords += [(p, far, beyond), (far, q, beyond)]
+    return total
 
 
 def best_fit_rotation(a: Array, b: Array) -> Array:

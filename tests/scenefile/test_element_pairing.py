@@ -176,6 +176,21 @@ def test_a_ring_drawn_as_an_outline_with_a_hole_pairs_by_the_area_it_encloses() 
     assert (0, 0) in match_elements([page], [ring, bar], float(np.hypot(36, 36)))
 
 
+def test_a_ring_drawn_as_one_contour_pairs_by_the_area_it_looks_to_cover() -> None:
+    """The same page becoming the same thin ring, here drawn as one contour as some icon sets draw outlines
+    (out round the outside, back round the inside through a notch), beside a bar: the ring's own area
+    (about 46) is less than the bar's (60), but it looks to cover the disc it rings; the page becomes the ring."""
+    page = Element(None, "rect", 1, (Contour(np.array([[4, 2], [32, 2], [32, 34], [4, 34]], float)),),
+                   Paint(fill=(0, 0, 0, 255)), "nonzero", "butt", "miter", 4.0)
+    turn = np.linspace(0.02, 2.0 * np.pi - 0.02, 64)
+    band = np.vstack([np.c_[18 + 15 * np.cos(turn), 18 + 15 * np.sin(turn)],
+                      np.c_[18 + 14.5 * np.cos(turn[::-1]), 18 + 14.5 * np.sin(turn[::-1])]])
+    ring = Element(None, "path", 1, (Contour(band),), Paint(fill=(0, 0, 0, 255)), "nonzero", "butt", "miter", 4.0)
+    bar = Element(None, "rect", 2, (Contour(np.array([[8, 16.5], [28, 16.5], [28, 19.5], [8, 19.5]], float)),),
+                  Paint(fill=(0, 0, 0, 255)), "nonzero", "butt", "miter", 4.0)
+    assert (0, 0) in match_elements([page], [ring, bar], float(np.hypot(36, 36)))
+
+
 def test_bootstraps_heart_becomes_twemojis_sun_disc_not_a_ray() -> None:
     """The real pair behind the test above: twemoji's 2600 draws its rays as one path of eight pieces and its
     disc as ``<circle r="10">`` in a 36-unit view; fitted into the heart's 16-unit view the disc's radius is

@@ -23,7 +23,7 @@ from .geometry import bounding_boxes, boxes_holding, hull_area, signed_area
 from .tangles import _relation, proper_crossings
 
 __all__ = ["ROLES", "inside", "roles", "pair_contours", "keep_nesting", "nearest_point", "anchor",
-           "anchors", "centre_of_area", "contour_size"]
+           "anchors", "centre_of_area", "contour_size", "apparent_area"]
 
 Array = NDArray[np.float64]
 ROLES = ("outer", "hole", "open")
@@ -76,14 +76,20 @@ def _probe(points: Array) -> Array:
     return mid + step
 
 
+def apparent_area(points: Array) -> float:
+    """How much area a closed contour ``(N, 2)`` looks to cover: the geometric mean of its own area and its
+    convex hull's. A ring drawn as one contour (out round the outside, back round the inside) covers more
+    to the eye than its thin band of ink, a crescent less than its hull; a convex contour, its area."""
+    return float(np.sqrt(abs(float(signed_area(points))) * hull_area(points)))
+
+
 def contour_size(points: Array, closed: bool) -> float:
-    """A length that measures how large a contour looks: for a closed one the geometric mean of √ its
-    area and √ its convex hull's area (a ring drawn as one contour, out round the outside and back round
-    the inside, is larger to the eye than its thin band of ink; a crescent smaller than its hull), for an
-    open one its length; at least its bounding box's diagonal / 100 so that flat contours still compare."""
+    """A length that measures how large a contour looks: √ of its :func:`apparent_area` for a closed one,
+    its length for an open one; at least its bounding box's diagonal / 100 so that flat contours still
+    compare."""
     diag = float(np.hypot(*np.ptp(points, axis=0))) if len(points) else 0.0
     if closed and len(points) >= 3:
-        measure = float((abs(signed_area(points)) * hull_area(points)) ** 0.25)
+        measure = float(np.sqrt(apparent_area(points)))
     else:
         measure = float(np.linalg.norm(np.diff(points, axis=0), axis=1).sum())
     return max(measure, diag / 100.0, 1e-300)

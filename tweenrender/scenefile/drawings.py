@@ -23,8 +23,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from ..core.contours import centre_of_area, roles
-from ..core.geometry import signed_area
+from ..core.contours import apparent_area, centre_of_area, roles
 from ..core.correspondence.assignment import min_cost_assignment
 from ..core.timing.easing import Easing
 from ..errors import SceneError
@@ -284,15 +283,16 @@ def _looped(element: Element, size: float) -> bool:
 
 
 def _enclosed_size(element: Element, extent: float) -> float:
-    """The element's size for pairing: for a filled element, √(2 × the area its outer contours enclose), holes
-    not taken away (a square's is its diagonal); else, or where that area is nil, its ``extent``
-    (:func:`_size`). Pieces spread over a box are as small as their area (a sun's rays are not its disc),
-    and a ring drawn as an outline with a hole is as big as the disc it rings."""
+    """The element's size for pairing: for a filled element, √(2 × the area its outer contours look to cover,
+    :func:`..core.contours.apparent_area`), holes not taken away (a square's is its diagonal); else, or where
+    that area is nil, its ``extent`` (:func:`_size`). Pieces spread over a box are as small as their area (a
+    sun's rays are not its disc), and a ring, drawn as an outline with a hole or as one contour out round
+    and back, is nearly as big as the disc it rings."""
     if element.paint.fill is None:
         return extent
     points = [c.points for c in element.contours]
     kinds = roles(points, [c.closed and len(p) >= 3 for c, p in zip(element.contours, points)])
-    enclosed = sum(abs(float(signed_area(p))) for p, kind in zip(points, kinds) if kind == "outer")
+    enclosed = sum(apparent_area(p) for p, kind in zip(points, kinds) if kind == "outer")
     return float(np.sqrt(2.0 * enclosed)) if enclosed > 1e-6 * extent * extent else extent
 
 

@@ -965,8 +965,9 @@ JoinMeasures = tuple[int, float, float]
 over the median, how far the area balloons."""
 JOIN_CHECKS = np.concatenate([[1e-6], np.linspace(0.0, 1.0, 13)[1:-1], [1.0 - 1e-6]])
 """The parameters at which a segment's in-betweens with contours joined (:mod:`.bridges`) are measured
-against those without: the keys as the first and last are approached (a contour growing from a point
-on an outline is apart from it there), and 11 between."""
+against those without: the keys as the first and last are approached, and 11 between. Which contours are
+apart is read from the keys themselves, where a contour that is one point is drawn nowhere (as ``stats``
+reads them): a speck shrinking inside an outline near the last key would be nested there and never counted."""
 
 
 def _probe(pairs: tuple[Pair, ...], first: Key, last: Key, stagger: float, view: float = 0.0) -> Segment:
@@ -994,8 +995,8 @@ def _join_measures(pairs: tuple[Pair, ...], first: Key, last: Key, method: str, 
         when = np.flatnonzero((there == pattern).all(axis=1))
         which = np.flatnonzero(pattern)
         crossed, stroked = contact_times([frames[i][inner][when] for i in which], [pairs[i].closed for i in which],
-                                         JOIN_CHECKS[inner][when], [frames[i][0] for i in which],
-                                         [frames[i][-1] for i in which])
+                                         JOIN_CHECKS[inner][when], [pairs[i].k0 for i in which],
+                                         [pairs[i].k1 for i in which])
         tangled |= set(crossed) | set(stroked)
     closed = [i for i, p in enumerate(pairs) if p.closed]
     signed = [_signed_areas(frames[i]) for i in closed]  # (T,) each

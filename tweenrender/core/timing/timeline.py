@@ -273,7 +273,9 @@ def _held_choice(segment: Segment, hold: bool, choice: AutoChoice) -> AutoChoice
 
 def _with_alone(segment: Segment, choice: AutoChoice) -> AutoChoice:
     """``choice`` (made over the moving contours) measured again with the contours without a partner, as
-    drawn (maths §5.16): where they tangle with the moving ones, the injective paths holding them in one
+    drawn (maths §5.16): where they tangle with the moving ones, the other way of straight and injective
+    paths, measured with them too (placed clear of its own paths), is taken when it tangles at fewer t and
+    strays and swells no further; where they still tangle, the injective paths holding them in one
     mesh (:func:`_meshed_alone`) are taken instead when they tangle at fewer t, stray at most
     :data:`.qcurves.STRAY_LIMIT` more, by area and by the open strokes' length (a mesh that holds
     everything may carry a piece far: a tangle for a sweep is no gain) and change the area evenly (no
@@ -282,7 +284,8 @@ def _with_alone(segment: Segment, choice: AutoChoice) -> AutoChoice:
 
 
 def _alone_measures(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
-    """:func:`_with_alone`'s choice, and how holding measured (tangled t, stray) where it was measured."""
+    """:func:`_with_alone`'s choice, and how what it draws measured with the contours without a partner (tangled t,
+    stray), where they were measured."""
     if segment.joints or choice.method == "jointed" or not _holdable(segment):
         return choice, None
     return _alone_choices.get(_digest(segment, "choice") + repr(choice).encode(),
@@ -292,14 +295,16 @@ def _alone_measures(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
 _alone_choices: Remembered[tuple[AutoChoice, tuple[int, float] | None]] = Remembered(256)
 
 
-def _clean_hold(segment: Segment) -> bool:
-    """Whether ``auto`` holds the segment's contours without a partner in an injective mesh whose in-betweens
-    tangle at no t and stray at most :data:`.qcurves.STRAY_LIMIT` (measured by :func:`_with_alone`)."""
+def _clean_unjoined(segment: Segment) -> bool:
+    """Whether ``auto``, measuring the segment's contours without a partner with the moving ones (:func:`_with_alone`),
+    takes another way than over the moving ones alone — their injective mesh, or the other paths — whose
+    in-betweens tangle at no t and stray at most :data:`.qcurves.STRAY_LIMIT`."""
     base = segment_choice(segment, hold=False)
     if base is None:
         return False
     choice, found = _alone_measures(segment, base)
-    return choice.holds and found is not None and found[0] == 0 and found[1] <= STRAY_LIMIT
+    return (choice.holds or choice.method != base.method) and found is not None and found[0] == 0 \
+        and found[1] <= STRAY_LIMIT
 
 
 def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, tuple[int, float] | None]:
@@ -307,22 +312,38 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     moving = [i for i, p in enumerate(pairs) if p.moving]
     k0s, k1s = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving]
     shut = [pairs[i].closed for i in moving]
-    own = candidate_paths(choice.method if choice.method in ("linear", "nonlinear", "injective") else "linear",
-                          k0s, k1s, shut, QUALITY_T)
-    growths = growths_of(segment, "auto", hold=False)  # as auto draws them without a mesh (and as joins weigh them)
-    alone = _alone(segment)
-    grown = [scaled(growths[i].point, pairs[i].k1 if growths[i].grows else pairs[i].k0,  # type: ignore[union-attr]
-                    growth_scale(growths[i], QUALITY_T)) for i in alone]  # type: ignore[arg-type]
-    as_grown = (own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
-                shut + [pairs[i].closed for i in alone])
+    as_grown = _grown_with(segment, choice)
     first = candidate_quality(*as_grown, view=segment.view)
     swell = balloon(*as_grown, grown=True)
+    if first[0]:
+        # the choice was made over the moving contours alone: where it tangles with those without a partner, the
+        # other ways are measured with them too (each placed clear of its own paths), and the least tangled kept
+        # that strays, by area and by the strokes' length, and swells no further
+        stroked = stroke_stray(*as_grown, view=segment.view)
+        ways, switched = [], False
+        for other in ("linear", "injective"):
+            if other == choice.method:
+                continue
+            way = AutoChoice(other, choice.why, (other,))
+            grown_way = _grown_with(segment, way)
+            found = candidate_quality(*grown_way, view=segment.view)
+            ways.append(f"{other} with them tangled at {found[0]}, stray {found[1]:.3f}")
+            if found[0] < first[0] and found[1] <= first[1] + STRAY_LIMIT \
+                    and stroke_stray(*grown_way, view=segment.view) <= stroked + STRAY_LIMIT \
+                    and balloon(*grown_way, grown=True) <= max(swell, BALLOON):
+                taken = f"{choice.method} with them tangled at {first[0]} of {len(QUALITY_T)} t, stray {first[1]:.3f}"
+                choice = replace(way, why=f"{choice.why}; {taken}; {ways[-1]}: {other} the less tangled")
+                as_grown, first, switched = grown_way, found, True
+                swell = balloon(*as_grown, grown=True)
+                stroked = stroke_stray(*as_grown, view=segment.view)
+        if not switched and ways:
+            choice = replace(choice, why=f"{choice.why}; {'; '.join(ways)}")
     # the mesh only where they tangle as they grow, or grow and shrink when the area they leave swells the shape
     held = _meshed_alone(segment) if first[0] or swell > BALLOON else []
     grown_words = (f"with the contours without a partner: {choice.method} tangled at {first[0]} of {len(QUALITY_T)} t, "
                    f"stray {first[1]:.3f}" + (f", area {swell:.3f} off the keys' blend" if swell > BALLOON else ""))
     if not held:  # where they tangle as drawn and no mesh holds them, say so
-        return (replace(choice, why=f"{choice.why}; {grown_words}; no mesh holds them") if first[0] else choice), None
+        return (replace(choice, why=f"{choice.why}; {grown_words}; no mesh holds them") if first[0] else choice), first
     from ..methods.injective import injective_contours
 
     every0 = k0s + [k0 for _, k0, _ in held]
@@ -346,7 +367,25 @@ def _alone_measured(segment: Segment, choice: AutoChoice) -> tuple[AutoChoice, t
     better = second[0] < first[0] or (second[0] == first[0] and swell > BALLOON and held_swell < swell - BALLOON)
     if better and second[1] <= first[1] + STRAY_LIMIT and uneven <= EVEN and strokes[1] <= strokes[0] + STRAY_LIMIT:
         return AutoChoice("injective", f"{choice.why}; {measures}", ("injective",), holds=True), second
-    return replace(choice, why=f"{choice.why}; {measures}"), second
+    return replace(choice, why=f"{choice.why}; {measures}"), first
+
+
+def _grown_with(segment: Segment, choice: AutoChoice) -> tuple[list[Array], list[Array], list[Array], list[bool]]:
+    """The moving contours' paths at :data:`QUALITY_T` under auto's ``choice`` (``(T, L_i, 2)`` each) followed by
+    those without a partner grown and shrunk clear of them, as auto draws them without a mesh (and as joins weigh
+    them), with their keys (``(L_i, 2)`` each) and whether each is closed."""
+    pairs = segment.pairs
+    moving = [i for i, p in enumerate(pairs) if p.moving]
+    k0s, k1s = [pairs[i].k0 for i in moving], [pairs[i].k1 for i in moving]
+    shut = [pairs[i].closed for i in moving]
+    own = candidate_paths(choice.method if choice.method in ("linear", "nonlinear", "injective") else "linear",
+                          k0s, k1s, shut, QUALITY_T)
+    growths = growths_of(segment, "auto", hold=False, choice=choice)
+    alone = _alone(segment)
+    grown = [scaled(growths[i].point, pairs[i].k1 if growths[i].grows else pairs[i].k0,  # type: ignore[union-attr]
+                    growth_scale(growths[i], QUALITY_T)) for i in alone]  # type: ignore[arg-type]
+    return (own + grown, k0s + [pairs[i].k0 for i in alone], k1s + [pairs[i].k1 for i in alone],
+            shut + [pairs[i].closed for i in alone])
 
 
 def segment_method(segment: Segment, method: str, hold: bool = True) -> str:
@@ -441,12 +480,14 @@ def injective_fallback_of(segment: Segment) -> str | None:
     return reason
 
 
-def growths_of(segment: Segment, method: str, hold: bool = True) -> list[Growth | None]:
+def growths_of(segment: Segment, method: str, hold: bool = True, choice: AutoChoice | None = None
+               ) -> list[Growth | None]:
     """How each pair without a partner comes or goes under ``method`` (None for the others, and for those
     its injective mesh holds, :func:`held_in_mesh`): placed clear of the other pairs
     (:func:`.clearance.place`) when there are others and no stagger, else about its anchor over the whole
     segment; in an element drawn by its stroke alone (:func:`_filled`), only closed contours keep clear
-    of the closed ones. Without ``hold``, as if the mesh held none."""
+    of the closed ones. Without ``hold``, as if the mesh held none. With ``choice``, clear of the paths
+    ``auto`` draws for it (a choice measured before it is taken); else, under ``auto``, of those it takes."""
     pairs = segment.pairs
     held = held_in_mesh(segment, method) if hold else frozenset()
     alone = [i for i in _alone(segment) if i not in held]
@@ -464,7 +505,7 @@ def growths_of(segment: Segment, method: str, hold: bool = True) -> list[Growth 
         return out
 
     def search() -> list[Growth]:
-        frames = _moving_paths(segment, GRID, method, hold)
+        frames = _moving_paths(segment, GRID, method, hold, choice)
         # the moving ones, and those a mesh holds
         around = [i for i, f in enumerate(frames) if f is not None and (filled or pairs[i].closed)]
         shapes = [pairs[i].k1 if pairs[i].source[0] is None else pairs[i].k0 for i in alone]
@@ -472,7 +513,9 @@ def growths_of(segment: Segment, method: str, hold: bool = True) -> list[Growth 
                      [out[i].point for i in alone],  # type: ignore[union-attr]
                      [frames[i] for i in around], [pairs[i].closed for i in around])
 
-    for i, growth in zip(alone, cached(_digest(segment, f"{method}{sorted(held)}{filled}"), search)):
+    drawn = choice if choice is not None or method != "auto" else segment_choice(segment, hold)
+    taken = "" if drawn is None else f"{drawn.method}{drawn.holds}"  # what auto draws the moving pairs by
+    for i, growth in zip(alone, cached(_digest(segment, f"{method}{sorted(held)}{filled}{taken}"), search)):
         out[i] = growth
     return out
 
@@ -497,9 +540,11 @@ def _digest(segment: Segment, method: str) -> bytes:
     return h.digest()
 
 
-def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True) -> list[Array | None]:
+def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True, choice: AutoChoice | None = None
+                  ) -> list[Array | None]:
     """The moving pairs' inbetweens at ``t (T,)`` (``(T, L_i, 2)`` each), and those of the pairs without a
-    partner that an injective mesh holds (:func:`held_in_mesh`; none without ``hold``); None for the others."""
+    partner that an injective mesh holds (:func:`held_in_mesh`; none without ``hold``); None for the others.
+    ``choice``: under ``auto``, draw that choice (one measured before it is taken, holding nothing)."""
     pairs = segment.pairs
     frames: list[Array | None] = [None] * len(pairs)
     moving = [i for i, p in enumerate(pairs) if p.moving]
@@ -509,7 +554,10 @@ def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True) ->
     k1 = np.concatenate([pairs[i].k1 for i in moving])
     cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
     single = len(moving) == 1 and pairs[moving[0]].closed
-    chosen = segment_method(segment, method, hold)
+    if choice is None:
+        chosen = segment_method(segment, method, hold)
+    else:  # as segment_method gives it for this choice: one outline keeps auto, which draws the choice
+        chosen = "auto" if single and not segment.joints else choice.method
     if per_outline(method) and not single:
         # these methods need one closed outline: each contour takes them on its own (open ones the
         # rigid paths), and its centre follows the rigid paths of the whole shape
@@ -544,7 +592,7 @@ def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True) ->
             frames[i] = path
     elif chosen == "auto" and single and not segment.joints:
         # one outline: auto's choice for it, measured within the drawing's view (not its own size)
-        choice = segment_choice(segment, hold)
+        choice = choice if choice is not None else segment_choice(segment, hold)
         assert choice is not None
         path = drawn_choice(choice, k0, k1, t)
         path[t == 0.0], path[t == 1.0] = k0, k1
@@ -619,7 +667,7 @@ def _stand_ins_held(segment: Segment) -> list[tuple[int, Array, Array]]:
     grows = [pairs[i].source[0] is None for i in alone]
     drawn = [pairs[i].k1 if g else pairs[i].k0 for i, g in zip(alone, grows)]
     found = stand_ins(list(zip(k0s, k1s)), shut, drawn, [pairs[i].closed for i in alone], grows,
-                      lambda points, key: carried_points(k0s, k1s, shut, points, key, build=False))
+                      lambda points, key: carried_points(k0s, k1s, shut, points, key, build=True))
     if found is None:
         return []
     held = [(i, s if g else d, d if g else s) for i, g, d, s in zip(alone, grows, drawn, found)]
@@ -903,11 +951,11 @@ def build_track(shape: Shape, matching: Matching, *, unmatched: str = "grow", ba
             role = _roles_of(first, last)
             holes = frozenset(c for c, kind in role.items() if kind == "hole")
             best = None if held else _best_join(_join_choices(crowded, role), plain, method, joining, measures, holes)
-            # auto keeps them unjoined where its mesh holds them without a tangle or a stray and no join
-            # is as clean (a mesh that holds everything may carry shapes far: elsewhere joins are weighed
-            # against growing clear of the moving contours, as if none were held)
-            if (best is None or best[0][0] > 0) and method == "auto" and held_in_mesh(probe, method) \
-                    and _clean_hold(probe):
+            # auto keeps them unjoined where, measured with them, it draws them without a tangle or a stray (its
+            # mesh holding them, or the other paths) and no join is as clean (a mesh that holds everything may
+            # carry shapes far: elsewhere joins are weighed against growing clear of the moving contours, as if
+            # none were held)
+            if (best is None or best[0][0] > 0) and method == "auto" and _clean_unjoined(probe):
                 best = None
             if best is not None:
                 pairs = best[1]

@@ -51,7 +51,7 @@ def test_a_scene_files_pixel_stroke_width_in_scene_units(tmp_path: Path) -> None
 
 def test_the_second_key_of_a_reversed_partner_is_flagged() -> None:
     # at the last key, a contour whose balanced points run against its own SVG contour says so
-    scene = tr.load_scene([ICONS / "mdi" / "alpha-a.svg", ICONS / "mdi" / "alpha-o-box.svg"])
+    scene = tr.load_scene([ICONS / "mdi" / "check-circle-outline.svg", ICONS / "mdi" / "alpha-o-box.svg"])
     last = contours(scene, scene.duration)
     assert sum(c.hole for c in last) == 1 and len(last) == 3
     from tweenrender.core.geometry import signed_area

@@ -116,7 +116,8 @@ def _pair_name(pair: tuple[str, str]) -> str:
 SVG_PIECES = {"cut-moon-heart": ("tabler/moon.svg", "mdi/heart.svg"),  # a hole shrinking inside its outline: a mask
               "cut-alpha-python": ("mdi/alpha-b.svg", "simple-icons/python.svg"),  # the python's eyes growing
               "apart-sun-heart": ("heroicons/sun.svg", "mdi/heart.svg"),  # rays shrinking apart from the rest
-              "cut-rule-switch": ("bootstrap/heart-fill.svg", "lucide/moon.svg")}  # a hole cut as the rule switches
+              "cut-rule-switch": ("bootstrap/heart-fill.svg", "lucide/moon.svg"),  # a hole cut as the rule switches
+              "move-check-apple": ("feather/check.svg", "simple-icons/apple.svg")}  # a leaf growing over the check
 """Pairs whose animated SVG draws its pieces as paths of their own and cuts holes with masks (Chromium plays them)."""
 
 SceneMaker = Callable[[Path], tr.Scene]

@@ -32,6 +32,7 @@ from ..encode.formats import is_vector, listing, names, writer
 from ..encode.vector_data import PIXEL_DIGITS, STRAIGHT, ContourMove, Handles, VectorClip, VectorRun
 from ..errors import OptionError
 from ..model import Color, Paint, Shape
+from ..core.geometry import signed_area
 from ..core.view import Viewport
 from ..plan.job import RenderJob, scene_view, tracks_of
 from ..plan.options import RenderOptions
@@ -313,7 +314,7 @@ def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], 
     found = pieces_and_holes(samples, rules, apart, cutting)  # the key closing the run too, if any
     if found is None:
         return run
-    pieces, cuts = found
+    pieces, cuts = _moves_apart(run, samples, rules, *found)
     if len(pieces) < 2 and not any(cuts):
         return run
     curves, free, errors = fits
@@ -327,6 +328,43 @@ def _with_pieces(run: VectorRun, samples: list[Array], fits: tuple[list[Array], 
                                                  [errors[i] for i in drawn], max_error)
         keys.append((tuple(run.first + k for k in frames), paths, handles))
     return replace(run, pieces=pieces, piece_keys=tuple(keys), piece_cuts=cuts if any(cuts) else None)
+
+
+def _moves_apart(run: VectorRun, samples: list[Array], rules: list[str], pieces: tuple[tuple[int, ...], ...],
+                 cuts: tuple[tuple[int, ...], ...]) -> tuple[tuple[tuple[int, ...], ...], tuple[tuple[int, ...], ...]]:
+    """``pieces`` and their ``cuts`` with each contour that only grows, shrinks and moves (:attr:`VectorRun.contour_moves`)
+    made a piece of its own even where it comes near or over the others of its piece, so that it keeps one still
+    path under its move instead of its piece keying every contour at every frame. Paths painted one over another
+    cover what one path of them all fills where the fill is one opaque colour under the nonzero rule, nothing is
+    stroked and every contour of the piece winds one way at every frame (``samples (F, L_i, 2)``): overlaps add to
+    the winding and never cancel it. Not in a piece with holes cut out."""
+    moves = run.contour_moves
+    if moves is None or run.stroke is not None or run.fill is None or run.gradient is not None \
+            or run.clip_paths is not None or any(rule != "nonzero" for rule in rules) \
+            or float(np.min(run.fill[:, 3])) < 1.0:
+        return pieces, cuts
+    out_pieces: list[tuple[int, ...]] = []
+    out_cuts: list[tuple[int, ...]] = []
+    for members, cut in zip(pieces, cuts):
+        moving = [i for i in members if moves[i] is not None]
+        if cut or len(members) < 2 or not moving or not _one_winding([samples[i] for i in members]):
+            out_pieces.append(members)
+            out_cuts.append(cut)
+            continue
+        rest = tuple(i for i in members if moves[i] is None)
+        if rest:
+            out_pieces.append(rest)
+            out_cuts.append(())
+        out_pieces += [(i,) for i in moving]
+        out_cuts += [() for _ in moving]
+    return tuple(out_pieces), tuple(out_cuts)
+
+
+def _one_winding(contours: list[Array]) -> bool:
+    """Whether every contour ``(F, L_i, 2)`` that has an area winds the same way at every frame."""
+    signs = np.concatenate([np.sign(signed_area(c)) for c in contours])  # (F,) each
+    signs = signs[signs != 0]
+    return bool(len(signs) == 0 or np.all(signs == signs[0]))
 
 
 def _with_moves(run: VectorRun, samples: list[Array], max_error: float) -> VectorRun:

@@ -57,3 +57,22 @@ def test_values_off_one_straight_line_are_not_one_span() -> None:
 def test_a_timing_no_cubic_bezier_follows_is_not_one_span() -> None:
     wave = 0.5 - 0.5 * np.cos(3 * np.pi * T)  # there and back and there: not monotone
     assert free_span(_scaled(wave), 0.1) is None
+
+
+def test_contours_growing_on_one_timing_search_their_handles_once(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """Contours that grow on one timing have the same progress but for rounding (a clip's pieces, a face's eyes): the
+    handles are searched once for them all, and each span is still checked at every frame as a player plays it."""
+    import scipy.optimize
+
+    from tests.helpers import count_calls
+    from tweenrender.vector import free_timing
+
+    free_timing._searched.clear()
+    searches = count_calls(monkeypatch, scipy.optimize, "minimize")
+    eased = np.sqrt(T * T * (3.0 - 2.0 * T))  # the area on a smoothstep: not √t, so the handles are searched
+    spans = [free_span(_scaled(eased) + shift, 0.2) for shift in (0.0, 1e-11, 250.0)]
+    assert len(searches) == 1
+    for found, shift in zip(spans, (0.0, 1e-11, 250.0)):
+        assert found is not None
+        played = _played(found.frames, found.values, found.eases, len(T))
+        assert np.linalg.norm(played - (_scaled(eased) + shift), axis=1).max() <= 0.2

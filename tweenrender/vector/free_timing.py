@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from ..core.memo import Remembered
 from ..core.timing.easing import CubicBezier
 from ..encode.vector_data import HANDLE_DIGITS, STRAIGHT, Handles
 
@@ -29,6 +30,10 @@ _SHRINKING: Handles = (1.0 - _GROWING[2], 1.0 - _GROWING[3], 1.0 - _GROWING[0], 
 """Its mirror, 1 − √(1 − x) (a shape shrunk so)."""
 _SEARCH_EVALUATIONS = 800  # timings the search for a span's handles measures, at most
 _TABLE = 513  # points of the curve the search reads each timing's progress off (checked exactly after)
+_SAME_PROGRESS = 9  # decimals to which two spans' progress agree for one search to serve both
+_searched: Remembered[Handles] = Remembered(64)
+"""The handles found for each progress searched lately: contours growing on one timing (a clip's pieces, a face's
+eyes) have one progress but for rounding, and each span found is still checked at every frame."""
 
 
 @dataclass(frozen=True)
@@ -93,7 +98,13 @@ def _fitted(inside: Array, tolerance: float) -> Handles | None:
 
 def _search(x: Array, progress: Array) -> Handles:
     """The handles, to :data:`HANDLE_DIGITS` decimals, that miss the frames by least: from √t's (or its mirror's,
-    for a progress that starts slowly), refined by Nelder and Mead's search within a bounded number of timings."""
+    for a progress that starts slowly), refined by Nelder and Mead's search within a bounded number of timings;
+    searched once for a progress that agrees with one searched lately to :data:`_SAME_PROGRESS` decimals."""
+    key = np.round(progress, _SAME_PROGRESS).tobytes()  # x is the frames' times: fixed by the progress's length
+    return _searched.get(key, lambda: _searched_handles(x, progress))
+
+
+def _searched_handles(x: Array, progress: Array) -> Handles:
     from scipy.optimize import minimize
 
     growing = float(np.mean(progress - x)) >= 0.0

@@ -72,12 +72,12 @@ def hull_area(points: Array) -> float:
     while chords:
         p, q, near = chords.pop()
         height = cross(q - p, near - p)  # twice the triangle (p, q, x) for each x: > 0 beyond the chord
-        beyond = near[height > 0.0]
-        if not len(beyond):
+        out = height > 0.0
+        if not out.any():
             continue
-        k = int(np.argmax(height[height > 0.0]))
-        far = beyond[k]
-        total += 0.5 * float(height[height > 0.0][k])
+        beyond, k = near[out], int(np.argmax(height))
+        far = near[k]
+        total += 0.5 * float(height[k])
         chords += [(p, far, beyond), (far, q, beyond)]
     return total
 

@@ -392,16 +392,23 @@ def segment_method(segment: Segment, method: str, hold: bool = True) -> str:
     """The method a segment's moving pairs take for ``method``: ``auto`` chosen over all its contours
     (:func:`segment_choice`) when it has several or one open stroke that auto draws straight or
     injective; a one-outline segment keeps ``auto``, which decides per body."""
+    if method != "auto" or not any(p.moving for p in segment.pairs):
+        return method
+    return _choice_method(segment, segment_choice(segment, hold))
+
+
+def _choice_method(segment: Segment, choice: AutoChoice | None) -> str:
+    """The method ``auto``'s ``choice`` draws the segment's moving pairs by (:func:`segment_method`): ``"auto"``
+    where one outline moves (auto decides per body, unless it holds contours without a partner) or one open
+    stroke that auto draws neither straight nor injective, else the choice's."""
     moving = [p for p in segment.pairs if p.moving]
-    if method != "auto" or not moving:
-        return method
-    if len(moving) == 1 and moving[0].closed:  # auto decides per body, unless it holds contours without a partner
-        held = segment_choice(segment, hold)
-        return "injective" if held is not None and held.holds else method
-    choice = segment_choice(segment, hold)
-    if len(moving) == 1 and choice is not None and choice.method not in ("linear", "injective"):
-        return method
-    return choice.method if choice is not None else method
+    if choice is None:
+        return "auto"
+    if len(moving) == 1 and moving[0].closed:
+        return "injective" if choice.holds else "auto"
+    if len(moving) == 1 and choice.method not in ("linear", "injective"):
+        return "auto"
+    return choice.method
 
 
 def pair_paths(segment: Segment, t: Array, method: str) -> list[Array]:
@@ -513,7 +520,7 @@ def growths_of(segment: Segment, method: str, hold: bool = True, choice: AutoCho
                      [out[i].point for i in alone],  # type: ignore[union-attr]
                      [frames[i] for i in around], [pairs[i].closed for i in around])
 
-    drawn = choice if choice is not None or method != "auto" else segment_choice(segment, hold)
+    drawn = choice if choice is not None else segment_choice(segment, hold) if method == "auto" else None
     taken = "" if drawn is None else f"{drawn.method}{drawn.holds}"  # what auto draws the moving pairs by
     for i, growth in zip(alone, cached(_digest(segment, f"{method}{sorted(held)}{filled}{taken}"), search)):
         out[i] = growth
@@ -554,10 +561,7 @@ def _moving_paths(segment: Segment, t: Array, method: str, hold: bool = True, ch
     k1 = np.concatenate([pairs[i].k1 for i in moving])
     cuts = np.cumsum([len(pairs[i].k0) for i in moving])[:-1]
     single = len(moving) == 1 and pairs[moving[0]].closed
-    if choice is None:
-        chosen = segment_method(segment, method, hold)
-    else:  # as segment_method gives it for this choice: one outline keeps auto, which draws the choice
-        chosen = "auto" if single and not segment.joints else choice.method
+    chosen = segment_method(segment, method, hold) if choice is None else _choice_method(segment, choice)
     if per_outline(method) and not single:
         # these methods need one closed outline: each contour takes them on its own (open ones the
         # rigid paths), and its centre follows the rigid paths of the whole shape
